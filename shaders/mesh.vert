@@ -1,0 +1,18 @@
+// Every mesh: world-space position and normal for per-fragment lighting.
+// (#version and precision are prepended by ShaderProgram.)
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+
+uniform mat4 u_viewProjection;
+uniform mat4 u_model;
+uniform mat3 u_normalMatrix;  // inverse-transpose of u_model's upper 3x3
+
+out vec3 v_worldPosition;
+out vec3 v_worldNormal;
+
+void main() {
+  vec4 world = u_model * vec4(a_position, 1.0);
+  v_worldPosition = world.xyz;
+  v_worldNormal = u_normalMatrix * a_normal;
+  gl_Position = u_viewProjection * world;
+}

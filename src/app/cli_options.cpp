@@ -1,0 +1,102 @@
+#include "app/cli_options.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace reflect {
+namespace {
+
+bool parseNumber(const std::string& text, double* out) {
+  char* end = nullptr;
+  double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value)) return false;
+  *out = value;
+  return true;
+}
+
+bool parseInt(const std::string& text, int lo, int hi, int* out) {
+  double value = 0;
+  if (!parseNumber(text, &value) || value != std::floor(value) || value < lo || value > hi) {
+    return false;
+  }
+  *out = static_cast<int>(value);
+  return true;
+}
+
+bool parseSize(const std::string& text, int* w, int* h) {
+  size_t x = text.find('x');
+  return x != std::string::npos && parseInt(text.substr(0, x), 1, 16384, w) &&
+         parseInt(text.substr(x + 1), 1, 16384, h);
+}
+
+}  // namespace
+
+const char* cliHelp() {
+  return "reflect - dynamic cube-map reflection (the course's Ex12-2), rendered headless\n"
+         "\n"
+         "usage: reflect <command> [options]\n"
+         "\n"
+         "commands:\n"
+         "  render   render one frame to a PNG\n"
+         "  bench    render frames of the default scene and print frame and capture ms\n"
+         "  help     show this text (also --help)\n"
+         "\n"
+         "options:\n"
+         "  --size WxH       frame size in pixels (default 800x800)\n"
+         "  --time T         scene time in seconds (default 0); the figures orbit 27 deg/s\n"
+         "  --out FILE       PNG to write (render; default frame.png)\n"
+         "  --assets DIR     take the models from DIR by the course's file names\n"
+         "                   (mario.obj sonic.obj sphere.obj quad.obj)\n"
+         "  --cube N         cube-map face size (default 256)\n"
+         "  --yaw D          camera yaw in degrees (default 0)\n"
+         "  --pitch D        camera pitch in degrees, clamped to +/-89 (default 0)\n"
+         "  --frames N       bench: frames to time (default 120)\n"
+         "  --warmup N       bench: frames before timing (default 10)\n";
+}
+
+Result<CliOptions> parseCli(const std::vector<std::string>& args) {
+  using Out = Result<CliOptions>;
+  CliOptions o;
+  if (args.empty()) return Out::failure("no command given (try: reflect --help)");
+  o.command = args[0];
+  if (o.command == "--help" || o.command == "-h") o.command = "help";
+  if (o.command != "render" && o.command != "bench" && o.command != "help") {
+    return Out::failure("unknown command '" + o.command + "' (try: reflect --help)");
+  }
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    if (flag == "--help" || flag == "-h") {
+      o.command = "help";
+      continue;
+    }
+    if (i + 1 >= args.size()) return Out::failure(flag + ": missing value");
+    const std::string& value = args[++i];
+    double number = 0;
+    bool ok = true;
+    if (flag == "--size") {
+      ok = parseSize(value, &o.width, &o.height);
+    } else if (flag == "--time") {
+      ok = parseNumber(value, &o.time);
+    } else if (flag == "--out") {
+      o.out = value;
+    } else if (flag == "--assets") {
+      o.assets = value;
+    } else if (flag == "--frames") {
+      ok = parseInt(value, 1, 1000000, &o.frames);
+    } else if (flag == "--warmup") {
+      ok = parseInt(value, 0, 1000000, &o.warmup);
+    } else if (flag == "--cube") {
+      ok = parseInt(value, 1, 16384, &o.cubeSize);
+    } else if (flag == "--yaw" || flag == "--pitch") {
+      ok = parseNumber(value, &number);
+      (flag == "--yaw" ? o.yawDeg : o.pitchDeg) = static_cast<float>(number);
+    } else {
+      return Out::failure("unknown option '" + flag + "' (try: reflect --help)");
+    }
+    if (!ok) return Out::failure(flag + ": invalid value '" + value + "'");
+  }
+  return o;
+}
+
+}  // namespace reflect

@@ -1,0 +1,28 @@
+// The `reflect` command line, parsed into plain values (no GL, so it is unit-tested).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+
+namespace reflect {
+
+struct CliOptions {
+  std::string command;  // "render", "bench" or "help"
+  int width = 800;
+  int height = 800;
+  double time = 0.0;
+  std::string out = "frame.png";
+  std::string assets;     // a folder with the course's models, by their file names
+  int frames = 120;       // bench: frames to time
+  int warmup = 10;        // bench: frames not timed
+  int cubeSize = 256;
+  float yawDeg = 0.0f;
+  float pitchDeg = 0.0f;
+};
+
+Result<CliOptions> parseCli(const std::vector<std::string>& args);
+const char* cliHelp();
+
+}  // namespace reflect

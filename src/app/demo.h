@@ -1,0 +1,64 @@
+// The demo's state, independent of platform: the scene, its meshes (kept on the CPU so a lost GL
+// context can be rebuilt), the camera, the clock, the renderer and the last frame's stats.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "app/frame_stats.h"
+#include "core/animation_clock.h"
+#include "core/camera.h"
+#include "core/mesh_data.h"
+#include "core/scene.h"
+#include "gfx/scene_renderer.h"
+
+namespace reflect {
+
+class Demo {
+ public:
+  explicit Demo(Scene scene);
+
+  // Loads the OBJ at `path` as the scene's mesh `name`. On failure returns the message (naming
+  // the file) and keeps the mesh it had; on success returns "".
+  std::string loadMesh(const std::string& name, const std::string& path);
+  // The same for OBJ text already in memory (the page fetches files); `source` names it in messages.
+  std::string loadMeshText(const std::string& name, const std::string& text,
+                           const std::string& source);
+  // Every scene mesh from `directory`, by file name. Returns "" or the first failure's message.
+  std::string loadMeshesFrom(const std::string& directory);
+  bool hasAllMeshes() const;
+
+  // Creates the GL resources from the CPU-side data. Call once a context is current, and again
+  // after a lost context is restored. Returns "" or a message.
+  std::string initGraphics();
+  // The context is gone: forget GL names without calling GL.
+  void loseGraphics();
+  bool graphicsReady() const { return renderer_ != nullptr; }
+
+  // Advances the clock by dt seconds and renders one complete frame (capture, then main pass)
+  // into `framebuffer` (0 = the canvas). With `waitForGpu`, timings include a glFinish.
+  const FrameStats& frame(double dtSeconds, unsigned framebuffer, int width, int height,
+                          bool waitForGpu);
+
+  LookCamera& camera() { return camera_; }
+  AnimationClock& clock() { return clock_; }
+  const Scene& scene() const { return scene_; }
+  const FrameStats& lastStats() const { return stats_; }
+  // The live cube map (0 before initGraphics), for tests that sample it.
+  unsigned environmentTexture() const { return renderer_ ? renderer_->environmentTexture() : 0; }
+  // Applies to the next initGraphics (the capture target is rebuilt).
+  void setCubeFaceSize(int size) { scene_.capture.faceSize = size; }
+
+ private:
+  std::string adopt(const std::string& name, Result<MeshData> mesh);
+
+  Scene scene_;
+  std::map<std::string, MeshData> meshes_;
+  LookCamera camera_;
+  AnimationClock clock_;
+  std::unique_ptr<SceneRenderer> renderer_;
+  FrameStats stats_;
+};
+
+}  // namespace reflect

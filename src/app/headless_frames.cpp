@@ -1,0 +1,44 @@
+#include "app/headless_frames.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gfx/offscreen_target.h"
+
+namespace reflect {
+
+Result<RgbaImage> renderFrameAt(Demo& demo, double seconds, int width, int height) {
+  Result<OffscreenTarget> target = OffscreenTarget::create(width, height);
+  if (!target) return Result<RgbaImage>::failure(target.error());
+  demo.clock().set(seconds);
+  demo.frame(0.0, target.value().framebuffer(), width, height, true);
+  return target.value().readPixels();
+}
+
+Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, int frames) {
+  Result<OffscreenTarget> target = OffscreenTarget::create(width, height);
+  if (!target) return Result<BenchResult>::failure(target.error());
+  BenchResult result;
+  for (int i = 0; i < warmup + frames; ++i) {
+    const FrameStats& s = demo.frame(1.0 / 60.0, target.value().framebuffer(), width, height, true);
+    if (i < warmup) continue;
+    result.frameMs.push_back(s.frameMs);
+    result.captureMs.push_back(s.captureMs);
+    result.trianglesPerFrame = s.triangles;
+    result.drawCallsPerFrame = s.drawCalls;
+  }
+  return result;
+}
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const double rank = std::clamp(p, 0.0, 1.0) * static_cast<double>(values.size() - 1);
+  const size_t lo = static_cast<size_t>(std::floor(rank));
+  const size_t hi = std::min(lo + 1, values.size() - 1);
+  return values[lo] + (values[hi] - values[lo]) * (rank - static_cast<double>(lo));
+}
+
+double median(std::vector<double> values) { return percentile(std::move(values), 0.5); }
+
+}  // namespace reflect

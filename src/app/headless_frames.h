@@ -1,0 +1,28 @@
+// Frames rendered off screen and read back: what `reflect render` writes, what the GL tests
+// compare with golden PNGs, and what `reflect bench` times.
+#pragma once
+
+#include <vector>
+
+#include "app/demo.h"
+#include "core/image.h"
+#include "core/result.h"
+
+namespace reflect {
+
+// Renders the frame at scene time `seconds` (capture included) and returns its pixels.
+Result<RgbaImage> renderFrameAt(Demo& demo, double seconds, int width, int height);
+
+struct BenchResult {
+  std::vector<double> frameMs;
+  std::vector<double> captureMs;
+  size_t trianglesPerFrame = 0;
+  int drawCallsPerFrame = 0;
+};
+// Renders warmup + frames frames at 60 Hz scene time steps, waiting for the GPU after each.
+Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, int frames);
+
+double median(std::vector<double> values);
+double percentile(std::vector<double> values, double p);
+
+}  // namespace reflect

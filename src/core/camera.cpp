@@ -1,0 +1,52 @@
+#include "core/camera.h"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace reflect {
+
+LookCamera::LookCamera(const CameraSettings& settings) : settings_(settings), eye_(settings.eye) {}
+
+void LookCamera::drag(float dx, float dy, float canvasHeight) {
+  if (!(canvasHeight > 0.0f) || !std::isfinite(dx) || !std::isfinite(dy)) return;
+  setAngles(yawDeg_ + dx * kDegreesPerCanvasHeight / canvasHeight,
+            pitchDeg_ + dy * kDegreesPerCanvasHeight / canvasHeight);
+}
+
+void LookCamera::setAngles(float yawDeg, float pitchDeg) {
+  if (!std::isfinite(yawDeg) || !std::isfinite(pitchDeg)) return;
+  // Keep yaw small so float precision does not erode after long drags.
+  yawDeg_ = std::remainder(yawDeg, 360.0f);
+  pitchDeg_ = glm::clamp(pitchDeg, -kMaxPitchDeg, kMaxPitchDeg);
+}
+
+void LookCamera::move(float steps) {
+  if (!std::isfinite(steps)) return;
+  eye_ += viewDirection() * (steps * kMoveStep);
+}
+
+void LookCamera::reset() {
+  eye_ = settings_.eye;
+  yawDeg_ = 0.0f;
+  pitchDeg_ = 0.0f;
+}
+
+glm::vec3 LookCamera::viewDirection() const {
+  // The course computes Rx(pitch) * Ry(yaw) * (0,0,-1); at yaw 90 degrees that pitch turns about
+  // the view axis and does nothing. Yaw after pitch, Ry(yaw) * Rx(pitch) * (0,0,-1), agrees with it
+  // at yaw 0 and keeps pitch meaning "look up" in every direction.
+  const float yaw = glm::radians(yawDeg_);
+  const float pitch = glm::radians(pitchDeg_);
+  return {-std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch)};
+}
+
+glm::mat4 LookCamera::view() const {
+  return glm::lookAt(eye_, eye_ + viewDirection(), glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
+glm::mat4 LookCamera::projection(float aspect) const {
+  if (!std::isfinite(aspect) || !(aspect > 0.0f)) aspect = 1.0f;
+  return glm::perspective(glm::radians(settings_.fovYDeg), aspect, settings_.near, settings_.far);
+}
+
+}  // namespace reflect

@@ -1,0 +1,48 @@
+// The main camera: an eye that looks around by yaw and pitch, as the course's mouse drag does.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace reflect {
+
+struct CameraSettings {
+  glm::vec3 eye{0.0f, 1.0f, 7.0f};
+  float fovYDeg = 70.0f;
+  float near = 1.0f;
+  float far = 100.0f;
+};
+
+class LookCamera {
+ public:
+  // Pitch stops this far short of straight up/down, so the view never becomes parallel to up.
+  static constexpr float kMaxPitchDeg = 89.0f;
+  // The original turns 100 degrees per canvas height of drag.
+  static constexpr float kDegreesPerCanvasHeight = 100.0f;
+  // W/S move the eye this far along the view direction per key press.
+  static constexpr float kMoveStep = 0.1f;
+
+  explicit LookCamera(const CameraSettings& settings = {});
+
+  // Pointer drag in the same units as canvasHeight (CSS pixels on the page).
+  void drag(float dx, float dy, float canvasHeight);
+  // Moves along the view direction by steps * kMoveStep (negative steps move back).
+  void move(float steps);
+  void reset();
+
+  glm::vec3 eye() const { return eye_; }
+  float yawDeg() const { return yawDeg_; }
+  float pitchDeg() const { return pitchDeg_; }
+  void setAngles(float yawDeg, float pitchDeg);
+  glm::vec3 viewDirection() const;
+  glm::mat4 view() const;
+  // aspect = width / height of the target; a non-finite or non-positive aspect falls back to 1.
+  glm::mat4 projection(float aspect) const;
+
+ private:
+  CameraSettings settings_;
+  glm::vec3 eye_;
+  float yawDeg_ = 0.0f;
+  float pitchDeg_ = 0.0f;
+};
+
+}  // namespace reflect

@@ -1,0 +1,35 @@
+// CPU-side triangle mesh: what the renderer uploads and what the OBJ loader produces.
+// Only position and normal per vertex: the scene's shaders need nothing else.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace reflect {
+
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+};
+
+struct Bounds {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+  glm::vec3 centre() const { return (min + max) * 0.5f; }
+};
+
+struct MeshData {
+  std::string name;  // for messages: the file it came from
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;  // triangles, counter-clockwise
+  Bounds bounds;
+
+  size_t triangleCount() const { return indices.size() / 3; }
+};
+
+Bounds computeBounds(const std::vector<Vertex>& vertices);
+
+}  // namespace reflect

@@ -1,0 +1,112 @@
+#include "core/obj_loader.h"
+
+#include <tiny_obj_loader.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include "core/obj_validation.h"
+
+namespace reflect {
+namespace {
+
+glm::vec3 readVec3(const std::vector<tinyobj::real_t>& data, int index) {
+  const size_t i = static_cast<size_t>(index) * 3;
+  return {data[i], data[i + 1], data[i + 2]};
+}
+
+// Area-weighted smooth normals per position, for corners whose file gave none (or a zero one).
+std::vector<glm::vec3> smoothNormalsPerPosition(const tinyobj::attrib_t& attrib,
+                                                const std::vector<tinyobj::shape_t>& shapes) {
+  std::vector<glm::vec3> sums(attrib.vertices.size() / 3, glm::vec3(0.0f));
+  for (const tinyobj::shape_t& shape : shapes) {
+    const auto& idx = shape.mesh.indices;
+    for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+      glm::vec3 a = readVec3(attrib.vertices, idx[t].vertex_index);
+      glm::vec3 b = readVec3(attrib.vertices, idx[t + 1].vertex_index);
+      glm::vec3 c = readVec3(attrib.vertices, idx[t + 2].vertex_index);
+      glm::vec3 areaNormal = glm::cross(b - a, c - a);  // length = 2 x area
+      for (size_t k = 0; k < 3; ++k) sums[static_cast<size_t>(idx[t + k].vertex_index)] += areaNormal;
+    }
+  }
+  return sums;
+}
+
+glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
+  float len = glm::length(v);
+  return (len > 1e-20f && std::isfinite(len)) ? v / len : fallback;
+}
+
+}  // namespace
+
+Result<MeshData> parseObj(const std::string& text, const std::string& name,
+                          const ObjLimits& limits) {
+  Result<ObjCounts> counts = validateObjText(text, limits);
+  if (!counts) return Result<MeshData>::failure(name + ": " + counts.error());
+
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  // ParseFromString ignores mtllib lines: a material file that is not there cannot fail the load,
+  // and the scene sets colours itself.
+  if (!reader.ParseFromString(text, std::string(), config)) {
+    return Result<MeshData>::failure(name + ": " + reader.Error());
+  }
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  const std::vector<tinyobj::shape_t>& shapes = reader.GetShapes();
+
+  std::vector<glm::vec3> computedNormals;  // filled only if some corner needs it
+  auto computedNormal = [&](int positionIndex) {
+    if (computedNormals.empty()) computedNormals = smoothNormalsPerPosition(attrib, shapes);
+    return normalizedOr(computedNormals[static_cast<size_t>(positionIndex)], {0.0f, 1.0f, 0.0f});
+  };
+
+  MeshData mesh;
+  mesh.name = name;
+  mesh.indices.reserve(counts.value().triangles * 3);
+  // A vertex is a (position, normal) pair: the same pair in two faces is one vertex.
+  std::unordered_map<uint64_t, uint32_t> vertexOfPair;
+  vertexOfPair.reserve(counts.value().positions * 2);
+  for (const tinyobj::shape_t& shape : shapes) {
+    for (const tinyobj::index_t& corner : shape.mesh.indices) {
+      const uint64_t key = (static_cast<uint64_t>(static_cast<uint32_t>(corner.vertex_index)) << 32) |
+                           static_cast<uint32_t>(corner.normal_index);
+      auto [it, inserted] = vertexOfPair.try_emplace(key, static_cast<uint32_t>(mesh.vertices.size()));
+      if (inserted) {
+        Vertex v;
+        v.position = readVec3(attrib.vertices, corner.vertex_index);
+        v.normal = corner.normal_index >= 0
+                       ? normalizedOr(readVec3(attrib.normals, corner.normal_index), glm::vec3(0.0f))
+                       : glm::vec3(0.0f);
+        if (v.normal == glm::vec3(0.0f)) v.normal = computedNormal(corner.vertex_index);
+        mesh.vertices.push_back(v);
+      }
+      mesh.indices.push_back(it->second);
+    }
+  }
+  if (mesh.indices.empty()) {
+    return Result<MeshData>::failure(name + ": no triangles after parsing");
+  }
+  mesh.bounds = computeBounds(mesh.vertices);
+  return mesh;
+}
+
+Result<MeshData> loadObjFile(const std::string& path, const ObjLimits& limits) {
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  if (!file) return Result<MeshData>::failure(path + ": cannot open file");
+  const std::streamoff size = file.tellg();
+  if (size < 0) return Result<MeshData>::failure(path + ": cannot read file");
+  if (static_cast<size_t>(size) > limits.maxBytes) {
+    return Result<MeshData>::failure(path + ": file is " + std::to_string(size) +
+                                     " bytes, over the limit of " + std::to_string(limits.maxBytes));
+  }
+  std::string text(static_cast<size_t>(size), '\0');
+  file.seekg(0);
+  if (!file.read(text.data(), size)) return Result<MeshData>::failure(path + ": cannot read file");
+  return parseObj(text, path, limits);
+}
+
+}  // namespace reflect

@@ -1,0 +1,133 @@
+#include "core/obj_validation.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <string_view>
+#include <vector>
+
+namespace reflect {
+namespace {
+
+std::vector<std::string_view> splitWhitespace(std::string_view line) {
+  std::vector<std::string_view> tokens;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    if (i > start) tokens.push_back(line.substr(start, i - start));
+  }
+  return tokens;
+}
+
+bool parseFiniteFloat(std::string_view token, float* out) {
+  std::string copy(token);  // strtof needs a terminated string
+  char* end = nullptr;
+  float value = std::strtof(copy.c_str(), &end);
+  if (end != copy.c_str() + copy.size() || !std::isfinite(value)) return false;
+  *out = value;
+  return true;
+}
+
+bool parseIndex(std::string_view token, long* out) {
+  if (token.empty()) return false;
+  std::string copy(token);
+  char* end = nullptr;
+  long value = std::strtol(copy.c_str(), &end, 10);
+  if (end != copy.c_str() + copy.size()) return false;
+  *out = value;
+  return true;
+}
+
+std::string lineError(size_t lineNumber, const std::string& what) {
+  return "line " + std::to_string(lineNumber) + ": " + what;
+}
+
+// One face corner: "v", "v/t", "v//n" or "v/t/n". Returns an empty string when valid.
+std::string checkCorner(std::string_view corner, const ObjCounts& counts) {
+  const size_t available[3] = {counts.positions, counts.texcoords, counts.normals};
+  const char* kinds[3] = {"vertex", "texture coordinate", "normal"};
+  size_t field = 0;
+  size_t start = 0;
+  while (start <= corner.size() && field < 3) {
+    size_t slash = corner.find('/', start);
+    std::string_view part =
+        corner.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+    if (!part.empty() || field == 0) {
+      long index = 0;
+      if (!parseIndex(part, &index)) return "'" + std::string(corner) + "' is not a face index";
+      long count = static_cast<long>(available[field]);
+      if (index == 0 || index > count || index < -count) {
+        return std::string(kinds[field]) + " index " + std::to_string(index) +
+               " is out of range (" + std::to_string(count) + " defined so far)";
+      }
+    }
+    if (slash == std::string_view::npos) return {};
+    start = slash + 1;
+    ++field;
+  }
+  return "'" + std::string(corner) + "' has too many '/' fields";
+}
+
+}  // namespace
+
+Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limits) {
+  if (text.size() > limits.maxBytes) {
+    return Result<ObjCounts>::failure("file is " + std::to_string(text.size()) +
+                                      " bytes, over the limit of " +
+                                      std::to_string(limits.maxBytes));
+  }
+  ObjCounts counts;
+  size_t lineNumber = 0;
+  size_t pos = 0;
+  while (pos < text.size()) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + pos, end - pos);
+    pos = end + 1;
+    ++lineNumber;
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
+      line.remove_suffix(1);  // CR CR LF endings, as in the course's sphere.obj
+    std::vector<std::string_view> tokens = splitWhitespace(line);
+    if (tokens.empty() || tokens[0][0] == '#') continue;
+    const std::string_view keyword = tokens[0];
+
+    if (keyword == "v" || keyword == "vn") {
+      if (tokens.size() < 4) {
+        return Result<ObjCounts>::failure(
+            lineError(lineNumber, "'" + std::string(keyword) + "' needs three numbers"));
+      }
+      for (size_t i = 1; i <= 3; ++i) {
+        float value = 0;
+        if (!parseFiniteFloat(tokens[i], &value)) {
+          return Result<ObjCounts>::failure(lineError(
+              lineNumber, "'" + std::string(tokens[i]) + "' is not a finite number"));
+        }
+      }
+      ++(keyword == "v" ? counts.positions : counts.normals);
+    } else if (keyword == "vt") {
+      ++counts.texcoords;
+    } else if (keyword == "f") {
+      if (tokens.size() < 4) {
+        return Result<ObjCounts>::failure(
+            lineError(lineNumber, "a face needs at least 3 vertices, this one has " +
+                                      std::to_string(tokens.size() - 1)));
+      }
+      for (size_t i = 1; i < tokens.size(); ++i) {
+        std::string problem = checkCorner(tokens[i], counts);
+        if (!problem.empty()) return Result<ObjCounts>::failure(lineError(lineNumber, problem));
+      }
+      counts.triangles += tokens.size() - 3;
+      if (counts.triangles > limits.maxTriangles) {
+        return Result<ObjCounts>::failure(lineError(
+            lineNumber, "more than " + std::to_string(limits.maxTriangles) + " triangles"));
+      }
+    }
+  }
+  if (counts.triangles == 0) {
+    return Result<ObjCounts>::failure("no faces found: not an OBJ model, or an empty one");
+  }
+  return counts;
+}
+
+}  // namespace reflect

@@ -1,0 +1,22 @@
+// A line-by-line check of OBJ text before tinyobjloader sees it. tinyobjloader reads "nan" as 0,
+// skips faces with bad indices with only a warning, and trusts counts; this pass turns each of
+// those into an error with a line number, and bounds the work before any big allocation.
+#pragma once
+
+#include <string>
+
+#include "core/obj_loader.h"
+
+namespace reflect {
+
+struct ObjCounts {
+  size_t positions = 0;
+  size_t normals = 0;
+  size_t texcoords = 0;
+  size_t triangles = 0;  // after fan triangulation of every face
+};
+
+// Returns the counts, or an error "line N: ..." (without the file name; the caller adds it).
+Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limits);
+
+}  // namespace reflect

@@ -1,0 +1,27 @@
+// One mesh on the GPU: a vertex array with interleaved position + normal and 32-bit indices.
+#pragma once
+
+#include "core/mesh_data.h"
+#include "gfx/gl_handle.h"
+
+namespace reflect {
+
+class MeshBuffer {
+ public:
+  explicit MeshBuffer(const MeshData& mesh);
+
+  void draw() const;
+  GLsizei indexCount() const { return indexCount_; }
+  size_t triangleCount() const { return static_cast<size_t>(indexCount_) / 3; }
+  const Bounds& bounds() const { return bounds_; }
+  void abandon();
+
+ private:
+  VertexArrayHandle vao_;
+  BufferHandle vertices_;
+  BufferHandle indices_;
+  GLsizei indexCount_ = 0;
+  Bounds bounds_;
+};
+
+}  // namespace reflect

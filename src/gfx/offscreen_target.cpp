@@ -1,0 +1,50 @@
+#include "gfx/offscreen_target.h"
+
+#include <string>
+
+namespace reflect {
+
+Result<OffscreenTarget> OffscreenTarget::create(int width, int height) {
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
+  if (width < 1 || height < 1 || width > maxSize || height > maxSize) {
+    return Result<OffscreenTarget>::failure("frame size " + std::to_string(width) + "x" +
+                                            std::to_string(height) + " is outside 1.." +
+                                            std::to_string(maxSize));
+  }
+  OffscreenTarget t;
+  t.width_ = width;
+  t.height_ = height;
+  t.colour_ = RenderbufferHandle(genRenderbuffer());
+  glBindRenderbuffer(GL_RENDERBUFFER, t.colour_.id());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  t.depth_ = RenderbufferHandle(genRenderbuffer());
+  glBindRenderbuffer(GL_RENDERBUFFER, t.depth_.id());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  t.framebuffer_ = FramebufferHandle(genFramebuffer());
+  glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.colour_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth_.id());
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    return Result<OffscreenTarget>::failure("offscreen framebuffer incomplete");
+  }
+  return t;
+}
+
+RgbaImage OffscreenTarget::readPixels() const {
+  RgbaImage image;
+  image.width = width_;
+  image.height = height_;
+  image.pixels.resize(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  flipRows(image);
+  return image;
+}
+
+}  // namespace reflect

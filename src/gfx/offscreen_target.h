@@ -1,0 +1,28 @@
+// A colour + depth framebuffer the size of a frame, for rendering without a window (the CLI and
+// the GL tests); readPixels returns what was drawn, top row first.
+#pragma once
+
+#include "core/image.h"
+#include "core/result.h"
+#include "gfx/gl_handle.h"
+
+namespace reflect {
+
+class OffscreenTarget {
+ public:
+  static Result<OffscreenTarget> create(int width, int height);
+
+  GLuint framebuffer() const { return framebuffer_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  RgbaImage readPixels() const;
+
+ private:
+  RenderbufferHandle colour_;
+  RenderbufferHandle depth_;
+  FramebufferHandle framebuffer_;
+  int width_ = 0;
+  int height_ = 0;
+};
+
+}  // namespace reflect

@@ -1,0 +1,86 @@
+#include "gfx/shader_program.h"
+
+#include <cstdio>
+#include <vector>
+
+#include "gfx/shader_library.h"
+
+namespace reflect {
+namespace {
+
+constexpr const char* kPrelude = "#version 300 es\nprecision highp float;\n";
+
+std::string infoLog(GLuint object, bool isProgram) {
+  GLint length = 0;
+  if (isProgram) {
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  } else {
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  }
+  std::vector<char> log(static_cast<size_t>(length > 1 ? length : 1), '\0');
+  if (isProgram) {
+    glGetProgramInfoLog(object, length, nullptr, log.data());
+  } else {
+    glGetShaderInfoLog(object, length, nullptr, log.data());
+  }
+  return log.data();
+}
+
+Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* body) {
+  const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
+  if (!body) return Result<ShaderHandle>::failure("shader " + file + ": not embedded in this build");
+  ShaderHandle shader(glCreateShader(stage));
+  const char* sources[2] = {kPrelude, body};
+  glShaderSource(shader.id(), 2, sources, nullptr);
+  glCompileShader(shader.id());
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    return Result<ShaderHandle>::failure(std::string(stageName) + " shader " + file +
+                                         " failed to compile:\n" + infoLog(shader.id(), false));
+  }
+  return shader;
+}
+
+}  // namespace
+
+Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile,
+                                           const std::string& fragmentFile) {
+  return buildFromSource(vertexFile, embeddedShader(vertexFile), fragmentFile,
+                         embeddedShader(fragmentFile));
+}
+
+Result<ShaderProgram> ShaderProgram::buildFromSource(const std::string& vertexFile,
+                                                     const char* vertexSource,
+                                                     const std::string& fragmentFile,
+                                                     const char* fragmentSource) {
+  Result<ShaderHandle> vs = compile(GL_VERTEX_SHADER, vertexFile, vertexSource);
+  if (!vs) return Result<ShaderProgram>::failure(vs.error());
+  Result<ShaderHandle> fs = compile(GL_FRAGMENT_SHADER, fragmentFile, fragmentSource);
+  if (!fs) return Result<ShaderProgram>::failure(fs.error());
+
+  ShaderProgram result;
+  result.label_ = vertexFile + " + " + fragmentFile;
+  result.program_ = ProgramHandle(glCreateProgram());
+  glAttachShader(result.program_.id(), vs.value().id());
+  glAttachShader(result.program_.id(), fs.value().id());
+  glLinkProgram(result.program_.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(result.program_.id(), GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    return Result<ShaderProgram>::failure("program " + result.label_ + " failed to link:\n" +
+                                          infoLog(result.program_.id(), true));
+  }
+  // The shader objects can go now; the linked program keeps what it needs.
+  glDetachShader(result.program_.id(), vs.value().id());
+  glDetachShader(result.program_.id(), fs.value().id());
+  return result;
+}
+
+GLint ShaderProgram::uniform(const char* name) const {
+  GLint location = glGetUniformLocation(program_.id(), name);
+  if (location < 0) std::fprintf(stderr, "program %s has no uniform %s\n", label_.c_str(), name);
+  return location;
+}
+
+}  // namespace reflect

@@ -1,0 +1,36 @@
+// A linked GLSL ES 3.00 program built from two embedded shader files.
+#pragma once
+
+#include <string>
+
+#include "core/result.h"
+#include "gfx/gl_handle.h"
+
+namespace reflect {
+
+// Vertex attribute locations shared by every shader (layout(location = N) in mesh.vert).
+inline constexpr GLuint kAttribPosition = 0;
+inline constexpr GLuint kAttribNormal = 1;
+
+class ShaderProgram {
+ public:
+  // Prepends "#version 300 es" and the float precision in one place. Failure carries the stage,
+  // the file name and the driver's log.
+  static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile);
+  // The same from GLSL text (without #version); the names label messages. For tools and tests.
+  static Result<ShaderProgram> buildFromSource(const std::string& vertexName,
+                                               const char* vertexSource,
+                                               const std::string& fragmentName,
+                                               const char* fragmentSource);
+
+  GLuint id() const { return program_.id(); }
+  // -1 (and a message on stderr) for a uniform the program does not have.
+  GLint uniform(const char* name) const;
+  void abandon() { program_.abandon(); }
+
+ private:
+  ProgramHandle program_;
+  std::string label_;
+};
+
+}  // namespace reflect

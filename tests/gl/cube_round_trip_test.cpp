@@ -1,0 +1,129 @@
+// Catches flipped or swapped cube faces: a marker drawn in direction d from the probe centre must
+// be what texture(cube, d) returns, for face centres, edges and corners. And the reflector must
+// never appear in its own cube map.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <vector>
+
+#include "app/headless_frames.h"
+#include "gfx/offscreen_target.h"
+#include "gfx/shader_program.h"
+#include "gl_fixture.h"
+
+namespace reflect {
+namespace {
+
+constexpr int kMaxDirections = 16;
+
+// Pixel i of a 1-pixel-high strip is the cube map sampled along u_directions[i].
+constexpr const char* kStripVertex = R"(
+void main() {
+  vec2 corner = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  gl_Position = vec4(corner, 0.0, 1.0);
+})";
+constexpr const char* kStripFragment = R"(
+uniform samplerCube u_cube;
+uniform vec3 u_directions[16];
+out vec4 colour;
+void main() { colour = texture(u_cube, u_directions[int(gl_FragCoord.x)]); })";
+
+std::vector<glm::u8vec3> sampleCube(GLuint cube, const std::vector<glm::vec3>& directions) {
+  auto program = ShaderProgram::buildFromSource("strip.vert", kStripVertex, "strip.frag",
+                                                kStripFragment);
+  EXPECT_TRUE(program) << program.error();
+  const int n = static_cast<int>(directions.size());
+  auto target = OffscreenTarget::create(n, 1);
+  EXPECT_TRUE(target) << target.error();
+  glBindFramebuffer(GL_FRAMEBUFFER, target.value().framebuffer());
+  glViewport(0, 0, n, 1);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(program.value().id());
+  glUniform3fv(program.value().uniform("u_directions"), n, glm::value_ptr(directions[0]));
+  glUniform1i(program.value().uniform("u_cube"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
+  GLuint vao = 0;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDeleteVertexArrays(1, &vao);
+  EXPECT_TRUE(checkGlError("sample cube"));
+  RgbaImage strip = target.value().readPixels();
+  std::vector<glm::u8vec3> colours;
+  for (int i = 0; i < n; ++i) colours.emplace_back(strip.at(i, 0)[0], strip.at(i, 0)[1], strip.at(i, 0)[2]);
+  return colours;
+}
+
+// Flat colours: ambient 1 and nothing else, so a marker renders exactly its colour.
+Scene markerScene() {
+  Scene scene;
+  scene.light.ambient = 1.0f;
+  scene.light.diffuse = 0.0f;
+  scene.light.specular = 0.0f;
+  scene.clearColour = glm::vec3(0.0f);
+  SceneObject sphere;
+  sphere.mesh = "sphere.obj";
+  sphere.placement = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+  sphere.reflective = true;
+  sphere.colour = glm::vec3(1.0f);
+  scene.objects.push_back(sphere);
+  return scene;
+}
+
+glm::u8vec3 toBytes(const glm::vec3& c) { return glm::u8vec3(glm::round(c * 255.0f)); }
+
+void expectNear(const glm::u8vec3& got, const glm::u8vec3& want, const std::string& what) {
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(int(got[c]), int(want[c]), 2)
+        << what << ": got (" << int(got.r) << "," << int(got.g) << "," << int(got.b) << ")";
+  }
+}
+
+TEST(CubeRoundTrip, MarkerInDirectionDIsWhatTheCubeReturnsForD) {
+  const std::vector<glm::vec3> directions = {
+      {1, 0, 0},  {-1, 0, 0}, {0, 1, 0},  {0, -1, 0}, {0, 0, 1},   {0, 0, -1},
+      {1, 1, 0},  {-1, 0, 1}, {0, -1, -1}, {1, 1, 1}, {-1, -1, -1}, {1, -1, 1}};
+  const std::vector<glm::vec3> colours = {
+      {1, 0, 0},   {0, 1, 0},   {0, 0, 1},   {1, 1, 0}, {1, 0, 1}, {0, 1, 1},
+      {1, 0.5, 0}, {0.5, 0, 1}, {0, 0.5, 0.5}, {1, 1, 1}, {0.5, 0.5, 0}, {0.5, 1, 0.5}};
+  Scene scene = markerScene();
+  const glm::vec3 centre(0.0f, 0.25f, 0.0f);  // sphere.obj's bounds centre (0, 0.5, 0) x 0.5
+  for (size_t i = 0; i < directions.size(); ++i) {
+    SceneObject marker;
+    marker.mesh = "cube.obj";
+    marker.placement = glm::scale(glm::translate(glm::mat4(1.0f), centre + 4.0f * glm::normalize(directions[i])),
+                                  glm::vec3(0.4f));
+    marker.colour = colours[i];
+    scene.objects.push_back(marker);
+  }
+  auto demo = testing::makeDemo(scene);
+  auto frame = renderFrameAt(*demo, 0.0, 64, 64);  // runs the capture
+  ASSERT_TRUE(frame) << frame.error();
+
+  std::vector<glm::vec3> lookups = directions;
+  lookups.push_back({0.3f, -1.0f, 0.8f});  // between markers: the clear colour
+  const auto sampled = sampleCube(demo->environmentTexture(), lookups);
+  for (size_t i = 0; i < directions.size(); ++i) {
+    expectNear(sampled[i], toBytes(colours[i]), "direction " + std::to_string(i));
+  }
+  expectNear(sampled.back(), glm::u8vec3(0), "empty direction");
+}
+
+TEST(CubeRoundTrip, TheReflectorNeverAppearsInItsOwnCubeMap) {
+  Scene scene = markerScene();  // only the (white) mirror sphere, around the probe centre
+  auto demo = testing::makeDemo(scene);
+  ASSERT_TRUE(renderFrameAt(*demo, 0.0, 64, 64));
+  std::vector<glm::vec3> lookups;
+  for (int i = 0; i < kMaxDirections; ++i) {
+    const float a = 0.7f * static_cast<float>(i);
+    lookups.push_back({std::cos(a), std::sin(1.3f * a), std::sin(a)});
+  }
+  for (const glm::u8vec3& c : sampleCube(demo->environmentTexture(), lookups)) {
+    expectNear(c, glm::u8vec3(0), "reflector drawn into its own capture");
+  }
+}
+
+}  // namespace
+}  // namespace reflect

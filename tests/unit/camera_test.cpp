@@ -1,0 +1,94 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/camera.h"
+
+namespace reflect {
+namespace {
+
+bool allFinite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+TEST(LookCamera, StartsAsTheCourseCamera) {
+  LookCamera camera;
+  EXPECT_EQ(camera.eye(), glm::vec3(0, 1, 7));
+  EXPECT_EQ(camera.viewDirection(), glm::vec3(0, 0, -1));
+  const glm::mat4 expected = glm::lookAt(glm::vec3(0, 1, 7), glm::vec3(0, 1, 6), glm::vec3(0, 1, 0));
+  EXPECT_EQ(camera.view(), expected);
+}
+
+TEST(LookCamera, DragTurnsOneHundredDegreesPerCanvasHeight) {
+  LookCamera camera;
+  camera.drag(400.0f, 0.0f, 800.0f);
+  EXPECT_FLOAT_EQ(camera.yawDeg(), 50.0f);
+  camera.drag(0.0f, 80.0f, 800.0f);
+  EXPECT_FLOAT_EQ(camera.pitchDeg(), 10.0f);
+  // Positive yaw turns the view toward -X, as the course's Ry(angle) * (0, 0, -1) does.
+  EXPECT_LT(camera.viewDirection().x, 0.0f);
+  EXPECT_GT(camera.viewDirection().y, 0.0f);
+}
+
+TEST(LookCamera, PitchIsClampedShortOfTheVerticalAndViewStaysFinite) {
+  LookCamera camera;
+  for (float dy : {1e3f, 1e9f, -1e9f, 3e38f, -3e38f}) {
+    camera.drag(0.0f, dy, 800.0f);
+    EXPECT_LE(std::abs(camera.pitchDeg()), LookCamera::kMaxPitchDeg);
+    EXPECT_TRUE(allFinite(camera.view())) << dy;
+    EXPECT_NEAR(glm::length(camera.viewDirection()), 1.0f, 1e-6f);
+    // The view direction never becomes parallel to up.
+    EXPECT_LT(std::abs(camera.viewDirection().y), std::sin(glm::radians(89.5f)));
+  }
+}
+
+TEST(LookCamera, IgnoresNonFiniteInputAndZeroHeight) {
+  LookCamera camera;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  camera.drag(nan, 1.0f, 800.0f);
+  camera.drag(1.0f, inf, 800.0f);
+  camera.drag(10.0f, 10.0f, 0.0f);
+  camera.move(nan);
+  EXPECT_EQ(camera.yawDeg(), 0.0f);
+  EXPECT_EQ(camera.pitchDeg(), 0.0f);
+  EXPECT_EQ(camera.eye(), glm::vec3(0, 1, 7));
+}
+
+TEST(LookCamera, YawWrapsAndStaysSmall) {
+  LookCamera camera;
+  for (int i = 0; i < 10000; ++i) camera.drag(288.0f, 0.0f, 800.0f);  // 36 degrees, 1000 turns
+  EXPECT_LE(std::abs(camera.yawDeg()), 180.0f);
+  EXPECT_NEAR(camera.yawDeg(), 0.0f, 1e-3f);
+  camera.drag(800.0f, 0.0f, 800.0f);  // +100 more
+  EXPECT_NEAR(camera.yawDeg(), 100.0f, 1e-3f);
+}
+
+TEST(LookCamera, MoveGoesAlongTheViewDirection) {
+  LookCamera camera;
+  camera.move(1.0f);
+  EXPECT_NEAR(camera.eye().z, 6.9f, 1e-6f);
+  camera.move(-2.0f);
+  EXPECT_NEAR(camera.eye().z, 7.1f, 1e-6f);
+  camera.reset();
+  EXPECT_EQ(camera.eye(), glm::vec3(0, 1, 7));
+}
+
+TEST(LookCamera, ProjectionFollowsAspectAndRejectsBadAspect) {
+  LookCamera camera;
+  const glm::mat4 wide = camera.projection(2.0f);
+  const glm::mat4 square = camera.projection(1.0f);
+  EXPECT_FLOAT_EQ(wide[0][0] * 2.0f, square[0][0]);
+  EXPECT_FLOAT_EQ(wide[1][1], square[1][1]);
+  EXPECT_EQ(camera.projection(0.0f), square);
+  EXPECT_EQ(camera.projection(std::numeric_limits<float>::quiet_NaN()), square);
+}
+
+}  // namespace
+}  // namespace reflect

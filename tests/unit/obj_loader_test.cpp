@@ -1,0 +1,137 @@
+// The OBJ loader on the project's models, on files with each quirk of the course's models, and
+// on bad files: each bad file gets a message that names it and the problem.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/obj_loader.h"
+
+namespace reflect {
+namespace {
+
+const std::string kData = std::string(TEST_DATA_DIR) + "/obj/";
+const std::string kModels = std::string(MODEL_DIR) + "/";
+
+MeshData mustLoad(const std::string& path) {
+  Result<MeshData> r = loadObjFile(path);
+  EXPECT_TRUE(r) << r.error();
+  return r ? r.take() : MeshData{};
+}
+
+void expectUnitNormals(const MeshData& mesh) {
+  for (const Vertex& v : mesh.vertices) {
+    ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f) << mesh.name;
+    ASSERT_TRUE(std::isfinite(v.position.x + v.position.y + v.position.z)) << mesh.name;
+  }
+}
+
+std::string errorOf(const std::string& path, const ObjLimits& limits = {}) {
+  Result<MeshData> r = loadObjFile(path, limits);
+  EXPECT_FALSE(r) << path << " should not load";
+  return r ? std::string() : r.error();
+}
+
+TEST(ObjLoader, ProjectSphereIsTheCourseIcosphere) {
+  MeshData sphere = mustLoad(kModels + "sphere.obj");
+  EXPECT_EQ(sphere.triangleCount(), 320u);
+  EXPECT_EQ(sphere.vertices.size(), 162u);
+  EXPECT_NEAR(sphere.bounds.centre().y, 0.5f, 1e-3f);
+  EXPECT_NEAR(sphere.bounds.max.x, 2.5456f, 1e-3f);
+  expectUnitNormals(sphere);
+}
+
+TEST(ObjLoader, ProjectFiguresHaveTheCourseExtents) {
+  MeshData mario = mustLoad(kModels + "mario.obj");
+  EXPECT_NEAR(mario.bounds.min.x, -42.9f, 0.05f);
+  EXPECT_NEAR(mario.bounds.max.y, 60.5f, 0.05f);
+  EXPECT_NEAR(mario.bounds.min.z, -29.4f, 0.05f);
+  EXPECT_GT(mario.triangleCount(), 1000u);
+  expectUnitNormals(mario);
+  MeshData sonic = mustLoad(kModels + "sonic.obj");  // has mtllib with no .mtl beside it
+  EXPECT_NEAR(sonic.bounds.min.y, -0.1f, 0.05f);
+  EXPECT_NEAR(sonic.bounds.max.x, 11.0f, 0.05f);
+  EXPECT_NEAR(sonic.bounds.min.z, -10.6f, 0.05f);
+  EXPECT_GT(sonic.triangleCount(), 1000u);
+  expectUnitNormals(sonic);
+}
+
+TEST(ObjLoader, QuadsAreTriangulated) {
+  MeshData cube = mustLoad(kData + "quads_vtvn.obj");
+  EXPECT_EQ(cube.triangleCount(), 12u);
+  expectUnitNormals(cube);
+  EXPECT_EQ(mustLoad(kData + "pos_only_quads.obj").triangleCount(), 2u);
+}
+
+TEST(ObjLoader, SeveralObjectsAndAMissingMtlLoad) {
+  EXPECT_EQ(mustLoad(kData + "multi_object_usemtl.obj").triangleCount(), 9u);
+}
+
+TEST(ObjLoader, CarriageReturnCarriageReturnLineFeed) {
+  MeshData tetra = mustLoad(kData + "crcrlf.obj");
+  EXPECT_EQ(tetra.triangleCount(), 4u);
+  expectUnitNormals(tetra);
+}
+
+TEST(ObjLoader, ComputesNormalsWhenTheFileHasNone) {
+  MeshData tetra = mustLoad(kData + "no_normals.obj");
+  EXPECT_EQ(tetra.triangleCount(), 4u);
+  expectUnitNormals(tetra);
+}
+
+TEST(ObjLoader, RelativeIndices) {
+  EXPECT_EQ(mustLoad(kData + "negative_indices.obj").triangleCount(), 1u);
+}
+
+TEST(ObjLoader, BadFilesNameTheFileAndTheProblem) {
+  EXPECT_EQ(errorOf(kData + "empty.obj"),
+            kData + "empty.obj: no faces found: not an OBJ model, or an empty one");
+  EXPECT_EQ(errorOf(kData + "comments_only.obj"),
+            kData + "comments_only.obj: no faces found: not an OBJ model, or an empty one");
+  EXPECT_EQ(errorOf("/no/such/model.obj"), "/no/such/model.obj: cannot open file");
+
+  const std::string range = errorOf(kData + "index_out_of_range.obj");
+  EXPECT_NE(range.find("index_out_of_range.obj: line "), std::string::npos) << range;
+  EXPECT_NE(range.find("vertex index 7 is out of range (3 defined so far)"), std::string::npos)
+      << range;
+
+  const std::string nan = errorOf(kData + "nan_vertex.obj");
+  EXPECT_NE(nan.find("nan_vertex.obj: line "), std::string::npos) << nan;
+  EXPECT_NE(nan.find("is not a finite number"), std::string::npos) << nan;
+
+  const std::string truncated = errorOf(kData + "truncated.obj");
+  EXPECT_NE(truncated.find("truncated.obj: line "), std::string::npos) << truncated;
+  EXPECT_NE(truncated.find("a face needs at least 3 vertices"), std::string::npos) << truncated;
+
+  const std::string garbage = errorOf(kData + "garbage.obj");
+  EXPECT_EQ(garbage.rfind(kData + "garbage.obj: ", 0), 0u) << garbage;
+}
+
+TEST(ObjLoader, SizeLimitsProtectMemory) {
+  ObjLimits tiny;
+  tiny.maxBytes = 100;
+  EXPECT_NE(errorOf(kModels + "sphere.obj", tiny).find("bytes, over the limit of 100"),
+            std::string::npos);
+  ObjLimits fewTriangles;
+  fewTriangles.maxTriangles = 10;
+  EXPECT_NE(errorOf(kModels + "sphere.obj", fewTriangles).find("more than 10 triangles"),
+            std::string::npos);
+}
+
+TEST(ObjLoader, ParsesTextInMemoryWithTheGivenName) {
+  Result<MeshData> r = parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "inline.obj");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r.value().name, "inline.obj");
+  EXPECT_EQ(r.value().vertices[0].normal, glm::vec3(0, 0, 1));
+  EXPECT_EQ(parseObj("f 1 2 3\n", "x.obj").error(),
+            "x.obj: line 1: vertex index 1 is out of range (0 defined so far)");
+  EXPECT_EQ(parseObj("v 1 2\n", "x.obj").error(), "x.obj: line 1: 'v' needs three numbers");
+  EXPECT_EQ(parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", "x.obj").error(),
+            "x.obj: line 4: vertex index 0 is out of range (3 defined so far)");
+  // A zero-area triangle loads; its computed normal falls back to a finite default.
+  Result<MeshData> flat = parseObj("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "flat.obj");
+  ASSERT_TRUE(flat) << flat.error();
+  for (const Vertex& v : flat.value().vertices) EXPECT_EQ(v.normal, glm::vec3(0, 1, 0));
+}
+
+}  // namespace
+}  // namespace reflect
