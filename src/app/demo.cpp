@@ -74,14 +74,14 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
 
   const auto start = std::chrono::steady_clock::now();
   PassCounts counts = renderer_->captureProbe(scene_, stats_.orbitDegrees, camera_.eye());
-  if (waitForGpu) glFinish();
+  if (waitForGpu) reflect::waitForGpu();
   stats_.captureMs = millisecondsSince(start);
 
   const ViewParams view{camera_.view(),
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
   counts += renderer_->drawMain(scene_, stats_.orbitDegrees, view, framebuffer, width, height);
-  if (waitForGpu) glFinish();
+  if (waitForGpu) reflect::waitForGpu();
   stats_.frameMs = millisecondsSince(start);
 
   stats_.drawCalls = counts.drawCalls;

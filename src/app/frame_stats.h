@@ -9,7 +9,8 @@ namespace reflect {
 struct FrameStats {
   double frameMs = 0;    // capture + main pass
   double captureMs = 0;  // the six cube faces
-  // "gpu-finish": times include a glFinish, so they are what the GPU took.
+  // "gpu-finish": times wait for the GPU to finish (a one-pixel read back), so they are what the
+  // frame took end to end.
   // "cpu-submit": the rAF loop does not wait for the GPU; times are command submission only.
   const char* timing = "cpu-submit";
   int drawCalls = 0;

@@ -18,4 +18,17 @@ bool checkGlError(const char* where) {
 #endif
 }
 
+void waitForGpu() {
+#if defined(__EMSCRIPTEN__)
+  // WebGL's finish() returns before the GPU process is done; a read back cannot.
+  // The canvas (framebuffer 0) always exists on the web, so bind it for the read.
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  GLubyte pixel[4];
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+#else
+  // Natively there is no default framebuffer (EGL surfaceless), and Mesa's glFinish does wait.
+  glFinish();
+#endif
+}
+
 }  // namespace reflect

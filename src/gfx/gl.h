@@ -10,4 +10,8 @@ namespace reflect {
 // check; optimised web builds skip it, because glGetError stalls a WebGL pipeline.
 bool checkGlError(const char* where);
 
+// Blocks until the GPU has finished everything submitted so far. glFinish alone does not wait in
+// every WebGL implementation; reading one pixel back does, natively and in the browser.
+void waitForGpu();
+
 }  // namespace reflect

@@ -1,0 +1,28 @@
+// Playwright drives Debian's Chromium (no browser download). The page is served by
+// tools/serve.mjs from the web build; ./test.sh builds it first.
+import { defineConfig } from '@playwright/test';
+
+const port = Number(process.env.TEST_PORT || 8181);
+
+export default defineConfig({
+  testDir: 'tests/web',
+  outputDir: 'build/playwright-results',
+  workers: 1,  // two cores: one browser at a time keeps SwiftShader timings sane
+  timeout: 60_000,
+  reporter: [['list']],
+  use: {
+    baseURL: `http://127.0.0.1:${port}/`,
+    viewport: { width: 800, height: 600 },
+    launchOptions: {
+      executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
+      args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
+             '--disable-sync', '--no-first-run', '--disable-default-apps'],
+    },
+  },
+  webServer: {
+    command: `node tools/serve.mjs build/web/site ${port}`,
+    url: `http://127.0.0.1:${port}/`,
+    reuseExistingServer: false,
+    timeout: 20_000,
+  },
+});

@@ -1,0 +1,34 @@
+# Installs what the build needs, only when missing (quick when everything is there).
+# Sourced by run.sh and test.sh:  ensure_debian_packages PKG...;  ensure_npm_packages
+# Everything comes from Debian's archive and the npm registry; nothing else is downloaded.
+
+ensure_debian_packages() {
+  local missing=()
+  for package in "$@"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+      missing+=("$package")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "Installing Debian packages: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+ensure_npm_packages() {
+  # npm ci installs exactly the committed lock file; skip it when node_modules already matches.
+  if [ ! -f node_modules/.package-lock.json ] ||
+     ! cmp -s <(sed -n '/"packages"/,$p' package-lock.json | grep -v '^\s*"": {' ) \
+                <(sed -n '/"packages"/,$p' node_modules/.package-lock.json | grep -v '^\s*"": {') ; then
+    npm ci --no-audit --no-fund
+  fi
+}
+
+# Debian's Emscripten needs its JS optimizer's acorn from Debian's node-acorn.
+export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
+
+WEB_PACKAGES=(emscripten node-acorn nodejs npm libglm-dev libstb-dev libtinyobjloader-dev cmake make)
+NATIVE_PACKAGES=(g++ cmake make pkg-config libglm-dev libstb-dev libtinyobjloader-dev libgtest-dev
+                 libgles-dev libegl-dev libegl-mesa0 libgl1-mesa-dri)
+BROWSER_PACKAGES=(chromium)
