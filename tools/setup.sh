@@ -17,11 +17,13 @@ ensure_debian_packages() {
 }
 
 ensure_npm_packages() {
-  # npm ci installs exactly the committed lock file; skip it when node_modules already matches.
-  if [ ! -f node_modules/.package-lock.json ] ||
-     ! cmp -s <(sed -n '/"packages"/,$p' package-lock.json | grep -v '^\s*"": {' ) \
-                <(sed -n '/"packages"/,$p' node_modules/.package-lock.json | grep -v '^\s*"": {') ; then
+  # npm ci installs exactly the committed lock file; a stamp of the lock's hash skips it next time.
+  local stamp=node_modules/.installed-lock.sha256
+  local want
+  want=$(sha256sum package-lock.json | cut -d' ' -f1)
+  if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
     npm ci --no-audit --no-fund
+    echo "$want" >"$stamp"
   fi
 }
 
