@@ -31,6 +31,6 @@ ensure_npm_packages() {
 export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 
 WEB_PACKAGES=(emscripten node-acorn libglm-dev libstb-dev libtinyobjloader-dev cmake make)
-NATIVE_PACKAGES=(g++ cmake make pkg-config libglm-dev libstb-dev libtinyobjloader-dev libgtest-dev
+NATIVE_PACKAGES=(g++ cmake make pkg-config libglm-dev libstb-dev libtinyobjloader-dev libgtest-dev libmeshoptimizer-dev
                  libgles-dev libegl-dev libegl-mesa0 libgl1-mesa-dri)
 BROWSER_PACKAGES=(chromium)

@@ -13,7 +13,8 @@ export class StatsLine {
       this.fps = this.fps === 0 ? instant : this.fps * 0.9 + instant * 0.1;
     }
     this.previous = now;
-    if (now - this.lastShown < 250) return;  // readable, and cheap
+    // Nothing to show before the second frame gives an interval (fps 0 would read 1000000 ms).
+    if (this.fps === 0 || now - this.lastShown < 250) return;  // readable, and cheap
     this.lastShown = now;
     const triangles = stats.triangles >= 1000 ? `${(stats.triangles / 1000).toFixed(1)}k` : stats.triangles;
     this.element.textContent =

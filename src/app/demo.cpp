@@ -1,7 +1,9 @@
 #include "app/demo.h"
 
 #include <chrono>
+#include <cstdio>
 
+#include "core/mesh_lod.h"
 #include "core/obj_loader.h"
 #include "gfx/gl.h"
 
@@ -28,9 +30,34 @@ std::string Demo::loadMeshText(const std::string& name, const std::string& text,
 
 std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   if (!mesh) return mesh.error();
-  if (renderer_) renderer_->setMesh(name, mesh.value());
-  meshes_[name] = mesh.take();
+  std::vector<MeshData> levels;
+  levels.push_back(mesh.take());
+  for (MeshData& coarser : buildLodLevels(levels.front())) levels.push_back(std::move(coarser));
+  if (renderer_) {
+    for (size_t lod = 0; lod < levels.size(); ++lod) {
+      renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
+    }
+  }
+  meshes_[name] = std::move(levels);
+  ++meshRevisions_[name];
   return {};
+}
+
+std::string Demo::addLodLevel(const std::string& name, const std::vector<uint32_t>& indices) {
+  auto it = meshes_.find(name);
+  if (it == meshes_.end()) return name + ": no such mesh";
+  MeshData level = meshFromIndices(it->second.front(), indices);
+  if (level.indices.empty()) return name + ": level of detail has no triangles";
+  if (renderer_) renderer_->setMesh(name, static_cast<int>(it->second.size()), level);
+  it->second.push_back(std::move(level));
+  ++optionsRevision_;  // faces drawn before may have used a coarser level than now exists
+  return {};
+}
+
+const MeshData* Demo::meshLevel(const std::string& name, int lod) const {
+  auto it = meshes_.find(name);
+  if (it == meshes_.end() || lod < 0 || lod >= static_cast<int>(it->second.size())) return nullptr;
+  return &it->second[static_cast<size_t>(lod)];
 }
 
 std::string Demo::loadMeshesFrom(const std::string& directory) {
@@ -48,18 +75,56 @@ bool Demo::hasAllMeshes() const {
   return true;
 }
 
+void Demo::setPlannerSettings(const PlannerSettings& settings) {
+  if (settings.lodPixelRadius != plannerSettings_.lodPixelRadius) ++optionsRevision_;
+  plannerSettings_ = settings;
+}
+
+void Demo::setCubeFaceSize(int size) { scene_.capture.faceSize = size; }
+
+unsigned Demo::environmentTexture() const {
+  const int reflector = scene_.reflectorIndex();
+  return renderer_ && reflector >= 0 ? renderer_->environmentTexture(reflector) : 0;
+}
+
 std::string Demo::initGraphics() {
   renderer_.reset();
-  Result<SceneRenderer> renderer = SceneRenderer::create(scene_.capture.faceSize);
+  planner_.invalidate();  // a new renderer has no captures yet
+  Result<SceneRenderer> renderer = SceneRenderer::create();
   if (!renderer) return renderer.error();
   renderer_ = std::make_unique<SceneRenderer>(renderer.take());
-  for (const auto& [name, mesh] : meshes_) renderer_->setMesh(name, mesh);
+  for (const auto& [name, levels] : meshes_) {
+    for (size_t lod = 0; lod < levels.size(); ++lod) {
+      renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
+    }
+  }
   return checkGlError("init graphics") ? std::string() : "GL error while creating resources";
 }
 
 void Demo::loseGraphics() {
   if (renderer_) renderer_->abandon();
   renderer_.reset();
+  planner_.invalidate();
+}
+
+std::vector<PlannedObject> Demo::plannedObjects(double orbitDegrees) const {
+  std::vector<PlannedObject> planned;
+  planned.reserve(scene_.objects.size());
+  for (const SceneObject& object : scene_.objects) {
+    PlannedObject p;
+    auto it = meshes_.find(object.mesh);
+    if (it != meshes_.end()) {
+      p.localBounds = it->second.front().bounds;
+      p.lodLevels = static_cast<int>(it->second.size());
+    }
+    auto revision = meshRevisions_.find(object.mesh);
+    p.meshRevision = revision == meshRevisions_.end() ? 0 : revision->second;
+    p.model = scene_.modelMatrix(object, orbitDegrees);
+    p.colour = object.colour;
+    p.reflective = object.reflective;
+    planned.push_back(p);
+  }
+  return planned;
 }
 
 const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width, int height,
@@ -69,24 +134,38 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   stats_.timeSeconds = clock_.seconds();
   stats_.orbitDegrees = clock_.orbitDegrees();
   stats_.timing = waitForGpu ? "gpu-finish" : "cpu-submit";
+  stats_.policy = policyName(plannerSettings_.policy);
+  stats_.cubeFaceSize = scene_.capture.faceSize;
   if (!renderer_ || width < 1 || height < 1) return stats_;  // hidden canvas: nothing to draw
-  stats_.cubeFaceSize = renderer_->cubeFaceSize();
 
   const auto start = std::chrono::steady_clock::now();
-  PassCounts counts = renderer_->captureProbe(scene_, stats_.orbitDegrees, camera_.eye());
+  const CaptureContext context{camera_.eye(), scene_.capture.faceSize, scene_.capture.near,
+                               scene_.capture.far, optionsRevision_};
+  const FramePlan plan = planner_.plan(plannedObjects(stats_.orbitDegrees), context,
+                                       plannerSettings_);
+  Result<PassCounts> capture =
+      renderer_->capture(scene_, stats_.orbitDegrees, plan, camera_.eye());
+  if (!capture) {
+    std::fprintf(stderr, "capture failed: %s\n", capture.error().c_str());
+    planner_.invalidate();  // nothing it planned was drawn
+  } else {
+    stats_.captureDrawCalls = capture.value().drawCalls;
+    stats_.captureTriangles = capture.value().triangles;
+  }
   if (waitForGpu) reflect::waitForGpu();
   stats_.captureMs = millisecondsSince(start);
+  stats_.probes = static_cast<int>(plan.probes.size());
+  stats_.facesCaptured = plan.facesCaptured();
 
   const ViewParams view{camera_.view(),
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
-  counts += renderer_->drawMain(scene_, stats_.orbitDegrees, view, framebuffer, width, height);
+  const PassCounts main =
+      renderer_->drawMain(scene_, stats_.orbitDegrees, view, framebuffer, width, height);
   if (waitForGpu) reflect::waitForGpu();
   stats_.frameMs = millisecondsSince(start);
-
-  stats_.drawCalls = counts.drawCalls;
-  stats_.triangles = counts.triangles;
-  stats_.facesCaptured = counts.facesCaptured;
+  stats_.mainDrawCalls = main.drawCalls;
+  stats_.mainTriangles = main.triangles;
   return stats_;
 }
 

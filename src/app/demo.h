@@ -1,14 +1,17 @@
 // The demo's state, independent of platform: the scene, its meshes (kept on the CPU so a lost GL
-// context can be rebuilt), the camera, the clock, the renderer and the last frame's stats.
+// context can be rebuilt), the camera, the clock, the frame planner, the renderer and the last
+// frame's stats.
 #pragma once
 
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/frame_stats.h"
 #include "core/animation_clock.h"
 #include "core/camera.h"
+#include "core/frame_planner.h"
 #include "core/mesh_data.h"
 #include "core/scene.h"
 #include "gfx/scene_renderer.h"
@@ -28,6 +31,10 @@ class Demo {
   // Every scene mesh from `directory`, by file name. Returns "" or the first failure's message.
   std::string loadMeshesFrom(const std::string& directory);
   bool hasAllMeshes() const;
+  // The next coarser level of mesh `name`, as indices into its level-0 vertices (the page
+  // simplifies with npm's meshoptimizer). Returns "" or a message.
+  std::string addLodLevel(const std::string& name, const std::vector<uint32_t>& indices);
+  const MeshData* meshLevel(const std::string& name, int lod) const;
 
   // Creates the GL resources from the CPU-side data. Call once a context is current, and again
   // after a lost context is restored. Returns "" or a message.
@@ -36,8 +43,8 @@ class Demo {
   void loseGraphics();
   bool graphicsReady() const { return renderer_ != nullptr; }
 
-  // Advances the clock by dt seconds and renders one complete frame (capture, then main pass)
-  // into `framebuffer` (0 = the canvas). With `waitForGpu`, timings include a glFinish.
+  // Advances the clock by dt seconds and renders one complete frame (planned capture, then main
+  // pass) into `framebuffer` (0 = the canvas). With `waitForGpu`, timings include the GPU's work.
   const FrameStats& frame(double dtSeconds, unsigned framebuffer, int width, int height,
                           bool waitForGpu);
 
@@ -45,18 +52,24 @@ class Demo {
   AnimationClock& clock() { return clock_; }
   const Scene& scene() const { return scene_; }
   const FrameStats& lastStats() const { return stats_; }
-  // The live cube map (0 before initGraphics), for tests that sample it.
-  unsigned environmentTexture() const { return renderer_ ? renderer_->environmentTexture() : 0; }
-  // Applies to the next initGraphics (the capture target is rebuilt).
-  void setCubeFaceSize(int size) { scene_.capture.faceSize = size; }
+  const PlannerSettings& plannerSettings() const { return plannerSettings_; }
+  void setPlannerSettings(const PlannerSettings& settings);
+  void setCubeFaceSize(int size);
+  // The live cube map of the scene's first reflector (0 before the first capture), for tests.
+  unsigned environmentTexture() const;
 
  private:
   std::string adopt(const std::string& name, Result<MeshData> mesh);
+  std::vector<PlannedObject> plannedObjects(double orbitDegrees) const;
 
   Scene scene_;
-  std::map<std::string, MeshData> meshes_;
+  std::map<std::string, std::vector<MeshData>> meshes_;  // levels of detail, 0 = as loaded
+  std::map<std::string, uint32_t> meshRevisions_;
   LookCamera camera_;
   AnimationClock clock_;
+  FramePlanner planner_;
+  PlannerSettings plannerSettings_;
+  uint32_t optionsRevision_ = 0;
   std::unique_ptr<SceneRenderer> renderer_;
   FrameStats stats_;
 };

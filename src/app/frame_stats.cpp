@@ -5,13 +5,15 @@
 namespace reflect {
 
 std::string FrameStats::toJson() const {
-  char buffer[512];
+  char buffer[768];
   std::snprintf(buffer, sizeof buffer,
-                "{\"frameMs\":%.4f,\"captureMs\":%.4f,\"timing\":\"%s\",\"drawCalls\":%d,"
-                "\"triangles\":%zu,\"facesCaptured\":%d,\"cubeFaceSize\":%d,\"time\":%.6f,"
-                "\"orbitDegrees\":%.6f}",
-                frameMs, captureMs, timing, drawCalls, triangles, facesCaptured, cubeFaceSize,
-                timeSeconds, orbitDegrees);
+                "{\"frameMs\":%.4f,\"captureMs\":%.4f,\"timing\":\"%s\",\"policy\":\"%s\","
+                "\"probes\":%d,\"facesCaptured\":%d,\"drawCalls\":%d,\"triangles\":%zu,"
+                "\"captureDrawCalls\":%d,\"captureTriangles\":%zu,\"mainDrawCalls\":%d,"
+                "\"mainTriangles\":%zu,\"cubeFaceSize\":%d,\"time\":%.6f,\"orbitDegrees\":%.6f}",
+                frameMs, captureMs, timing, policy, probes, facesCaptured, drawCalls(),
+                triangles(), captureDrawCalls, captureTriangles, mainDrawCalls, mainTriangles,
+                cubeFaceSize, timeSeconds, orbitDegrees);
   return buffer;
 }
 

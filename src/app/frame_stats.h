@@ -8,18 +8,23 @@ namespace reflect {
 
 struct FrameStats {
   double frameMs = 0;    // capture + main pass
-  double captureMs = 0;  // the six cube faces
-  // "gpu-finish": times wait for the GPU to finish (a one-pixel read back), so they are what the
-  // frame took end to end.
-  // "cpu-submit": the rAF loop does not wait for the GPU; times are command submission only.
+  double captureMs = 0;  // the planned cube faces
+  // "gpu-finish": times wait for the GPU to finish, so they are what the frame took end to end.
+  // "cpu-submit": the display loop does not wait for the GPU; times are command submission only.
   const char* timing = "cpu-submit";
-  int drawCalls = 0;
-  size_t triangles = 0;
+  const char* policy = "when-changed";
+  int probes = 0;
   int facesCaptured = 0;
+  int captureDrawCalls = 0;
+  size_t captureTriangles = 0;
+  int mainDrawCalls = 0;
+  size_t mainTriangles = 0;
   int cubeFaceSize = 0;
   double timeSeconds = 0;
   double orbitDegrees = 0;
 
+  int drawCalls() const { return captureDrawCalls + mainDrawCalls; }
+  size_t triangles() const { return captureTriangles + mainTriangles; }
   std::string toJson() const;
 };
 

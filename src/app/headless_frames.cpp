@@ -24,8 +24,8 @@ Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, i
     if (i < warmup) continue;
     result.frameMs.push_back(s.frameMs);
     result.captureMs.push_back(s.captureMs);
-    result.trianglesPerFrame = s.triangles;
-    result.drawCallsPerFrame = s.drawCalls;
+    result.trianglesPerFrame = s.triangles();
+    result.drawCallsPerFrame = s.drawCalls();
   }
   return result;
 }

@@ -1,5 +1,6 @@
 #include "gfx/scene_renderer.h"
 
+#include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -23,13 +24,11 @@ void clearTo(const glm::vec3& colour) {
 
 }  // namespace
 
-Result<SceneRenderer> SceneRenderer::create(int cubeFaceSize) {
+Result<SceneRenderer> SceneRenderer::create() {
   Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag");
   if (!phong) return Result<SceneRenderer>::failure(phong.error());
   Result<ShaderProgram> mirror = ShaderProgram::build("mesh.vert", "reflect.frag");
   if (!mirror) return Result<SceneRenderer>::failure(mirror.error());
-  Result<CubeCaptureTarget> capture = CubeCaptureTarget::create(cubeFaceSize);
-  if (!capture) return Result<SceneRenderer>::failure(capture.error());
 
   const ShaderProgram& p = phong.value();
   PhongProgram phongProgram{ShaderProgram{},        p.uniform("u_viewProjection"),
@@ -40,41 +39,44 @@ Result<SceneRenderer> SceneRenderer::create(int cubeFaceSize) {
                             p.uniform("u_shininess")};
   phongProgram.program = phong.take();
   const ShaderProgram& r = mirror.value();
-  ReflectProgram reflectProgram{ShaderProgram{},          r.uniform("u_viewProjection"),
-                                r.uniform("u_model"),     r.uniform("u_normalMatrix"),
-                                r.uniform("u_colour"),    r.uniform("u_viewPosition"),
-                                r.uniform("u_reflectionWeight"), r.uniform("u_baseWeight"),
-                                r.uniform("u_environment")};
-  reflectProgram.program = mirror.take();
-  return SceneRenderer(std::move(phongProgram), std::move(reflectProgram), capture.take());
+  MirrorProgram mirrorProgram{ShaderProgram{},          r.uniform("u_viewProjection"),
+                              r.uniform("u_model"),     r.uniform("u_normalMatrix"),
+                              r.uniform("u_colour"),    r.uniform("u_viewPosition"),
+                              r.uniform("u_reflectionWeight"), r.uniform("u_baseWeight"),
+                              r.uniform("u_environment")};
+  mirrorProgram.program = mirror.take();
+  return SceneRenderer(std::move(phongProgram), std::move(mirrorProgram));
 }
 
-SceneRenderer::SceneRenderer(PhongProgram phong, ReflectProgram reflect, CubeCaptureTarget capture)
-    : phong_(std::move(phong)), reflect_(std::move(reflect)), capture_(std::move(capture)) {}
+SceneRenderer::SceneRenderer(PhongProgram phong, MirrorProgram mirror)
+    : phong_(std::move(phong)), mirror_(std::move(mirror)) {}
 
-void SceneRenderer::setMesh(const std::string& name, const MeshData& mesh) {
-  meshes_.erase(name);
-  meshes_.emplace(name, MeshBuffer(mesh));
+void SceneRenderer::setMesh(const std::string& name, int lod, const MeshData& mesh) {
+  std::vector<MeshBuffer>& levels = meshes_[name];
+  if (lod == 0) levels.clear();
+  if (lod != static_cast<int>(levels.size())) return;  // levels arrive in order, 0 first
+  levels.emplace_back(mesh);
 }
 
-const MeshBuffer* SceneRenderer::mesh(const std::string& name) const {
+int SceneRenderer::lodLevels(const std::string& name) const {
   auto it = meshes_.find(name);
-  return it == meshes_.end() ? nullptr : &it->second;
+  return it == meshes_.end() ? 0 : static_cast<int>(it->second.size());
 }
 
-std::optional<glm::vec3> SceneRenderer::probeCentre(const Scene& scene, double orbitDegrees) const {
-  const int index = scene.reflectorIndex();
-  if (index < 0) return std::nullopt;
-  const SceneObject& reflector = scene.objects[static_cast<size_t>(index)];
-  const MeshBuffer* buffer = mesh(reflector.mesh);
-  const glm::vec3 localCentre = buffer ? buffer->bounds().centre() : glm::vec3(0.0f);
-  return glm::vec3(scene.modelMatrix(reflector, orbitDegrees) * glm::vec4(localCentre, 1.0f));
+const MeshBuffer* SceneRenderer::mesh(const std::string& name, int lod) const {
+  auto it = meshes_.find(name);
+  if (it == meshes_.end() || it->second.empty()) return nullptr;
+  const size_t level = std::min(static_cast<size_t>(std::max(lod, 0)), it->second.size() - 1);
+  return &it->second[level];
 }
 
-PassCounts SceneRenderer::drawPhongObjects(const Scene& scene, double orbitDegrees,
-                                           const glm::mat4& viewProj,
-                                           const glm::vec3& viewPosition) {
-  PassCounts counts;
+GLuint SceneRenderer::environmentTexture(int reflector) const {
+  auto it = probes_.find(reflector);
+  return it == probes_.end() ? 0 : it->second.texture();
+}
+
+void SceneRenderer::usePhong(const Scene& scene, const glm::mat4& viewProj,
+                             const glm::vec3& viewPosition) {
   glUseProgram(phong_.program.id());
   glUniformMatrix4fv(phong_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
   glUniform3fv(phong_.lightPosition, 1, glm::value_ptr(scene.light.position));
@@ -83,72 +85,95 @@ PassCounts SceneRenderer::drawPhongObjects(const Scene& scene, double orbitDegre
   glUniform1f(phong_.diffuse, scene.light.diffuse);
   glUniform1f(phong_.specular, scene.light.specular);
   glUniform1f(phong_.shininess, scene.light.shininess);
-  for (const SceneObject& object : scene.objects) {
-    // The reflector is left out by what it is, not by a list: its own probe must not see it,
-    // and the main pass draws it with the mirror shader.
-    if (object.reflective) continue;
-    const MeshBuffer* buffer = mesh(object.mesh);
-    if (!buffer) continue;
-    setObjectMatrices(phong_.model, phong_.normalMatrix, scene.modelMatrix(object, orbitDegrees));
-    glUniform3fv(phong_.colour, 1, glm::value_ptr(object.colour));
-    buffer->draw();
-    ++counts.drawCalls;
-    counts.triangles += buffer->triangleCount();
-  }
-  return counts;
 }
 
-PassCounts SceneRenderer::captureProbe(const Scene& scene, double orbitDegrees,
-                                       const glm::vec3& lightingEye) {
+void SceneRenderer::useMirror(const glm::mat4& viewProj, const glm::vec3& viewPosition) {
+  glUseProgram(mirror_.program.id());
+  glUniformMatrix4fv(mirror_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
+  glUniform3fv(mirror_.viewPosition, 1, glm::value_ptr(viewPosition));
+  glUniform1i(mirror_.environment, kEnvironmentTextureUnit);
+}
+
+PassCounts SceneRenderer::drawObject(const Scene& scene, int index, int lod, double orbitDegrees) {
+  const SceneObject& object = scene.objects[static_cast<size_t>(index)];
+  const MeshBuffer* buffer = mesh(object.mesh, lod);
+  if (!buffer) return {};
+  const glm::mat4 model = scene.modelMatrix(object, orbitDegrees);
+  if (object.reflective) {
+    setObjectMatrices(mirror_.model, mirror_.normalMatrix, model);
+    glUniform3fv(mirror_.colour, 1, glm::value_ptr(object.colour));
+    glUniform1f(mirror_.reflectionWeight, object.reflectionWeight);
+    glUniform1f(mirror_.baseWeight, object.baseWeight);
+    glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, environmentTexture(index));
+  } else {
+    setObjectMatrices(phong_.model, phong_.normalMatrix, model);
+    glUniform3fv(phong_.colour, 1, glm::value_ptr(object.colour));
+  }
+  buffer->draw();
+  return {1, buffer->triangleCount()};
+}
+
+Result<PassCounts> SceneRenderer::capture(const Scene& scene, double orbitDegrees,
+                                          const FramePlan& plan, const glm::vec3& lightingEye) {
   PassCounts counts;
-  const std::optional<glm::vec3> centre = probeCentre(scene, orbitDegrees);
-  if (!centre) return counts;
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   const glm::mat4 projection = cubeFaceProjection(scene.capture.near, scene.capture.far);
-  for (int face = 0; face < 6; ++face) {
-    capture_.bindFace(face);
-    clearTo(scene.clearColour);
-    counts += drawPhongObjects(scene, orbitDegrees, projection * cubeFaceView(*centre, face),
-                               lightingEye);
-    ++counts.facesCaptured;
+  for (const ProbePlan& probe : plan.probes) {
+    if (probe.faces.empty()) continue;
+    auto target = probes_.find(probe.reflector);
+    if (target == probes_.end() || target->second.faceSize() != scene.capture.faceSize) {
+      Result<CubeCaptureTarget> created = CubeCaptureTarget::create(scene.capture.faceSize);
+      if (!created) return Result<PassCounts>::failure(created.error());
+      probes_.erase(probe.reflector);
+      target = probes_.emplace(probe.reflector, created.take()).first;
+    }
+    for (const FacePlan& face : probe.faces) {
+      target->second.bindFace(face.face);
+      clearTo(scene.clearColour);
+      const glm::mat4 viewProj = projection * cubeFaceView(probe.centre, face.face);
+      // Phong objects first, then other mirrors (with their cube as it was before this frame's
+      // capture of them: one bounce). Program switches stay at two per face.
+      usePhong(scene, viewProj, lightingEye);
+      for (const DrawItem& d : face.draws) {
+        if (!scene.objects[static_cast<size_t>(d.object)].reflective)
+          counts += drawObject(scene, d.object, d.lod, orbitDegrees);
+      }
+      bool mirrorInUse = false;
+      for (const DrawItem& d : face.draws) {
+        if (!scene.objects[static_cast<size_t>(d.object)].reflective) continue;
+        if (!mirrorInUse) useMirror(viewProj, probe.centre);
+        mirrorInUse = true;
+        counts += drawObject(scene, d.object, d.lod, orbitDegrees);
+      }
+    }
   }
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  checkGlError("capture probe");
+  checkGlError("capture");
   return counts;
 }
 
 PassCounts SceneRenderer::drawMain(const Scene& scene, double orbitDegrees, const ViewParams& camera,
-                                   GLuint framebuffer, int width, int height) {
+                                   unsigned framebuffer, int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // the ground quad is seen from both sides
   clearTo(scene.clearColour);
   const glm::mat4 viewProj = camera.projection * camera.view;
-  PassCounts counts = drawPhongObjects(scene, orbitDegrees, viewProj, camera.eye);
-
-  const int index = scene.reflectorIndex();
-  if (index >= 0) {
-    const SceneObject& reflector = scene.objects[static_cast<size_t>(index)];
-    if (const MeshBuffer* buffer = mesh(reflector.mesh)) {
-      glUseProgram(reflect_.program.id());
-      glUniformMatrix4fv(reflect_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
-      setObjectMatrices(reflect_.model, reflect_.normalMatrix,
-                        scene.modelMatrix(reflector, orbitDegrees));
-      glUniform3fv(reflect_.colour, 1, glm::value_ptr(reflector.colour));
-      glUniform3fv(reflect_.viewPosition, 1, glm::value_ptr(camera.eye));
-      glUniform1f(reflect_.reflectionWeight, reflector.reflectionWeight);
-      glUniform1f(reflect_.baseWeight, reflector.baseWeight);
-      glUniform1i(reflect_.environment, kEnvironmentTextureUnit);
-      glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
-      glBindTexture(GL_TEXTURE_CUBE_MAP, capture_.texture());
-      buffer->draw();
-      glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-      ++counts.drawCalls;
-      counts.triangles += buffer->triangleCount();
-    }
+  PassCounts counts;
+  usePhong(scene, viewProj, camera.eye);
+  const int objectCount = static_cast<int>(scene.objects.size());
+  for (int i = 0; i < objectCount; ++i) {
+    if (!scene.objects[static_cast<size_t>(i)].reflective) counts += drawObject(scene, i, 0, orbitDegrees);
   }
+  useMirror(viewProj, camera.eye);
+  for (int i = 0; i < objectCount; ++i) {
+    if (scene.objects[static_cast<size_t>(i)].reflective) counts += drawObject(scene, i, 0, orbitDegrees);
+  }
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindVertexArray(0);
   checkGlError("main pass");
   return counts;
@@ -156,9 +181,12 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double orbitDegrees, cons
 
 void SceneRenderer::abandon() {
   phong_.program.abandon();
-  reflect_.program.abandon();
-  capture_.abandon();
-  for (auto& [name, buffer] : meshes_) buffer.abandon();
+  mirror_.program.abandon();
+  for (auto& [index, target] : probes_) target.abandon();
+  probes_.clear();
+  for (auto& [name, levels] : meshes_) {
+    for (MeshBuffer& level : levels) level.abandon();
+  }
   meshes_.clear();
 }
 

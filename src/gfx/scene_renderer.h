@@ -1,13 +1,14 @@
-// Draws a Scene with GL ES 3.0: the probe capture (six cube faces from the reflector's centre,
-// everything but the reflector) and the main pass (everything, the reflector sampling the probe).
+// Draws a Scene with GL ES 3.0 as a FramePlan says: each probe's planned cube faces (objects at
+// their planned level of detail), then the main pass, where each reflector samples its own probe.
 #pragma once
 
 #include <map>
-#include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "core/frame_planner.h"
 #include "core/mesh_data.h"
 #include "core/result.h"
 #include "core/scene.h"
@@ -26,32 +27,31 @@ struct ViewParams {
 struct PassCounts {
   int drawCalls = 0;
   size_t triangles = 0;
-  int facesCaptured = 0;
   PassCounts& operator+=(const PassCounts& o) {
     drawCalls += o.drawCalls;
     triangles += o.triangles;
-    facesCaptured += o.facesCaptured;
     return *this;
   }
 };
 
 class SceneRenderer {
  public:
-  static Result<SceneRenderer> create(int cubeFaceSize);
+  static Result<SceneRenderer> create();
 
-  // Uploads (or replaces) the mesh the scene knows by `name`.
-  void setMesh(const std::string& name, const MeshData& mesh);
-  bool hasMesh(const std::string& name) const { return meshes_.count(name) != 0; }
+  // Uploads (or replaces) level `lod` of the mesh the scene knows by `name` (0 = full detail;
+  // setting level 0 drops the coarser levels, which belonged to the old mesh).
+  void setMesh(const std::string& name, int lod, const MeshData& mesh);
+  int lodLevels(const std::string& name) const;
 
-  // World-space centre of the reflector's mesh bounds; nullopt if the scene has no reflector.
-  std::optional<glm::vec3> probeCentre(const Scene& scene, double orbitDegrees) const;
-  // `lightingEye` is the main camera's eye: the course lights captures as seen from it.
-  PassCounts captureProbe(const Scene& scene, double orbitDegrees, const glm::vec3& lightingEye);
+  // Renders the plan's faces. `lightingEye` is the main camera's eye: the course lights captures
+  // as seen from it. Probe targets are created (or resized) on first use.
+  Result<PassCounts> capture(const Scene& scene, double orbitDegrees, const FramePlan& plan,
+                             const glm::vec3& lightingEye);
   PassCounts drawMain(const Scene& scene, double orbitDegrees, const ViewParams& camera,
-                      GLuint framebuffer, int width, int height);
+                      unsigned framebuffer, int width, int height);
 
-  int cubeFaceSize() const { return capture_.faceSize(); }
-  GLuint environmentTexture() const { return capture_.texture(); }
+  // The live cube map of the probe owned by object `reflector` (0 if none yet).
+  GLuint environmentTexture(int reflector) const;
   // After a lost context: drop every GL name without deleting (the context took them).
   void abandon();
 
@@ -61,21 +61,23 @@ class SceneRenderer {
     GLint viewProjection, model, normalMatrix, colour, lightPosition, viewPosition, ambient,
         diffuse, specular, shininess;
   };
-  struct ReflectProgram {
+  struct MirrorProgram {
     ShaderProgram program;
     GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
         environment;
   };
 
-  SceneRenderer(PhongProgram phong, ReflectProgram reflect, CubeCaptureTarget capture);
-  PassCounts drawPhongObjects(const Scene& scene, double orbitDegrees, const glm::mat4& viewProj,
-                              const glm::vec3& viewPosition);
-  const MeshBuffer* mesh(const std::string& name) const;
+  SceneRenderer(PhongProgram phong, MirrorProgram mirror);
+  void usePhong(const Scene& scene, const glm::mat4& viewProj, const glm::vec3& viewPosition);
+  void useMirror(const glm::mat4& viewProj, const glm::vec3& viewPosition);
+  // Draws one object with whichever program is in use for its material.
+  PassCounts drawObject(const Scene& scene, int index, int lod, double orbitDegrees);
+  const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;
-  ReflectProgram reflect_;
-  CubeCaptureTarget capture_;
-  std::map<std::string, MeshBuffer> meshes_;
+  MirrorProgram mirror_;
+  std::map<int, CubeCaptureTarget> probes_;  // by reflector object index
+  std::map<std::string, std::vector<MeshBuffer>> meshes_;
 };
 
 }  // namespace reflect

@@ -1,0 +1,216 @@
+#include "core/frame_planner.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/frustum.h"
+
+namespace reflect {
+namespace {
+
+bool sameState(const PlannedObject& a, const PlannedObject& b) {
+  return a.model == b.model && a.colour == b.colour && a.meshRevision == b.meshRevision &&
+         a.reflective == b.reflective && a.localBounds.min == b.localBounds.min &&
+         a.localBounds.max == b.localBounds.max;
+}
+
+bool contains(const std::vector<int>& list, int value) {
+  return std::find(list.begin(), list.end(), value) != list.end();
+}
+
+glm::vec3 probeCentreOf(const PlannedObject& reflector) {
+  return glm::vec3(reflector.model * glm::vec4(reflector.localBounds.centre(), 1.0f));
+}
+
+}  // namespace
+
+const char* policyName(UpdatePolicy policy) {
+  switch (policy) {
+    case UpdatePolicy::EveryFrame: return "every-frame";
+    case UpdatePolicy::WhenChanged: return "when-changed";
+    case UpdatePolicy::TimeSliced: return "time-sliced";
+    case UpdatePolicy::EveryNFrames: return "every-n";
+  }
+  return "?";
+}
+
+bool parsePolicy(const std::string& text, UpdatePolicy* policy) {
+  for (UpdatePolicy p : {UpdatePolicy::EveryFrame, UpdatePolicy::WhenChanged,
+                         UpdatePolicy::TimeSliced, UpdatePolicy::EveryNFrames}) {
+    if (text == policyName(p)) {
+      *policy = p;
+      return true;
+    }
+  }
+  return false;
+}
+
+int PlannerSettings::maxStalenessFrames() const {
+  switch (policy) {
+    case UpdatePolicy::TimeSliced: {
+      const int k = std::clamp(facesPerFrame, 1, 6);
+      return (6 + k - 1) / k - 1;
+    }
+    case UpdatePolicy::EveryNFrames: return std::max(everyN, 1) - 1;
+    default: return 0;
+  }
+}
+
+int FramePlan::facesCaptured() const {
+  int n = 0;
+  for (const ProbePlan& p : probes) n += static_cast<int>(p.faces.size());
+  return n;
+}
+
+void FramePlanner::trackChanges(const std::vector<PlannedObject>& objects) {
+  if (objects.size() != previous_.size()) {
+    // A different object list: every object is new, every probe starts over.
+    previous_ = objects;
+    stateVersions_.assign(objects.size(), 1);
+    contentVersions_.assign(objects.size(), 1);
+    probes_.clear();
+    return;
+  }
+  for (size_t i = 0; i < objects.size(); ++i) {
+    if (!sameState(objects[i], previous_[i])) {
+      ++stateVersions_[i];
+      previous_[i] = objects[i];
+    }
+  }
+}
+
+std::vector<DrawItem> FramePlanner::drawsFor(const std::vector<PlannedObject>& objects,
+                                             int reflector, const glm::vec3& centre, int face,
+                                             const CaptureContext& context,
+                                             const PlannerSettings& settings) const {
+  std::vector<DrawItem> draws;
+  const bool original = settings.policy == UpdatePolicy::EveryFrame;
+  for (size_t i = 0; i < objects.size(); ++i) {
+    // The probe's own reflector is left out by identity: it surrounds the capture point.
+    if (static_cast<int>(i) == reflector) continue;
+    const PlannedObject& o = objects[i];
+    if (!original && !faceMaySee(centre, face, context.near, context.far,
+                                 transformBounds(o.localBounds, o.model))) {
+      continue;
+    }
+    DrawItem item{static_cast<int>(i), 0};
+    if (!original && settings.lodPixelRadius > 0.0f && o.lodLevels > 1) {
+      const Bounds world = transformBounds(o.localBounds, o.model);
+      const float radius = 0.5f * glm::length(world.max - world.min);
+      const float distance = glm::length(world.centre() - centre);
+      if (distance > radius) {
+        // At 90 degrees a unit of tangent spans half the face: radius/distance x faceSize/2 px.
+        float pixels = radius / distance * 0.5f * static_cast<float>(context.faceSize);
+        float threshold = settings.lodPixelRadius;
+        while (item.lod + 1 < o.lodLevels && pixels < threshold) {
+          ++item.lod;
+          threshold *= 0.5f;
+        }
+      }
+    }
+    draws.push_back(item);
+  }
+  return draws;
+}
+
+FramePlanner::Staleness FramePlanner::faceStaleness(const ProbeMemory& probe, int face,
+                                                    const std::vector<int>& visibleNow) const {
+  const FaceMemory& memory = probe.faces[static_cast<size_t>(face)];
+  if (!memory.captured) return Staleness::Changed;
+  if (visibleNow != memory.visible) return Staleness::Changed;  // something entered or left
+  Staleness result = Staleness::Fresh;
+  for (int i : visibleNow) {
+    const size_t k = static_cast<size_t>(i);
+    if (stateVersions_[k] != memory.stateVersions[k]) return Staleness::Changed;
+    if (contentVersions_[k] != memory.contentVersions[k]) result = Staleness::BounceOnly;
+  }
+  return result;
+}
+
+std::vector<int> FramePlanner::chooseFaces(const std::vector<int>& stale,
+                                          const PlannerSettings& settings,
+                                          ProbeMemory& memory) const {
+  switch (settings.policy) {
+    case UpdatePolicy::EveryFrame:
+    case UpdatePolicy::WhenChanged:
+      return stale;
+    case UpdatePolicy::EveryNFrames:
+      if (frameIndex_ % static_cast<uint64_t>(std::max(settings.everyN, 1)) == 0) return stale;
+      return {};
+    case UpdatePolicy::TimeSliced: {
+      // Round robin from a cursor, so every stale face is reached within ceil(6/k) frames.
+      const int k = std::clamp(settings.facesPerFrame, 1, 6);
+      std::vector<int> chosen;
+      for (int step = 0; step < 6 && static_cast<int>(chosen.size()) < k; ++step) {
+        const int face = (memory.sliceCursor + step) % 6;
+        if (contains(stale, face)) chosen.push_back(face);
+      }
+      if (!chosen.empty()) memory.sliceCursor = (chosen.back() + 1) % 6;
+      std::sort(chosen.begin(), chosen.end());
+      return chosen;
+    }
+  }
+  return stale;
+}
+
+FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
+                             const CaptureContext& context, const PlannerSettings& settings) {
+  trackChanges(objects);
+  FramePlan plan;
+  std::vector<int> recapturedForRealChange;
+  for (size_t r = 0; r < objects.size(); ++r) {
+    if (!objects[r].reflective) continue;
+    const int reflector = static_cast<int>(r);
+    auto memoryIt = std::find_if(probes_.begin(), probes_.end(),
+                                 [&](const ProbeMemory& m) { return m.reflector == reflector; });
+    if (memoryIt == probes_.end()) {
+      probes_.push_back(ProbeMemory{});
+      memoryIt = std::prev(probes_.end());
+      memoryIt->reflector = reflector;
+    }
+    ProbeMemory& memory = *memoryIt;
+    ProbePlan probe{reflector, probeCentreOf(objects[r]), {}};
+    // The probe moved or a capture option changed: no face is valid any more.
+    if (probe.centre != memory.centre || !(context == memory.context)) {
+      for (FaceMemory& f : memory.faces) f.captured = false;
+      memory.centre = probe.centre;
+      memory.context = context;
+    }
+
+    std::array<std::vector<DrawItem>, 6> draws;
+    std::array<Staleness, 6> staleness{};
+    std::vector<int> stale;  // faces that need a redraw, in face order
+    for (int face = 0; face < 6; ++face) {
+      const size_t f = static_cast<size_t>(face);
+      draws[f] = drawsFor(objects, reflector, probe.centre, face, context, settings);
+      std::vector<int> visible;
+      for (const DrawItem& d : draws[f]) visible.push_back(d.object);
+      staleness[f] = settings.policy == UpdatePolicy::EveryFrame
+                         ? Staleness::Changed
+                         : faceStaleness(memory, face, visible);
+      if (staleness[f] != Staleness::Fresh) stale.push_back(face);
+    }
+
+    const std::vector<int> chosen = chooseFaces(stale, settings, memory);
+    bool capturedReal = false;
+    for (int face : chosen) {
+      const size_t f = static_cast<size_t>(face);
+      capturedReal |= staleness[f] == Staleness::Changed;
+      FaceMemory& m = memory.faces[f];
+      m.captured = true;
+      m.visible.clear();
+      for (const DrawItem& d : draws[f]) m.visible.push_back(d.object);
+      m.stateVersions = stateVersions_;
+      m.contentVersions = contentVersions_;
+      probe.faces.push_back(FacePlan{face, std::move(draws[f])});
+    }
+    if (capturedReal) recapturedForRealChange.push_back(reflector);
+    plan.probes.push_back(std::move(probe));
+  }
+  // Mirrors whose cube changed look different from the next frame on.
+  for (int r : recapturedForRealChange) ++contentVersions_[static_cast<size_t>(r)];
+  ++frameIndex_;
+  return plan;
+}
+
+}  // namespace reflect

@@ -1,0 +1,124 @@
+// Decides, each frame, the least capture work the scene needs: which probes to capture, which of
+// their faces, and which objects (at which level of detail) to draw into each face.
+// Plain C++ without GL, so every rule is unit-tested.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/mesh_data.h"
+
+namespace reflect {
+
+enum class UpdatePolicy {
+  EveryFrame,    // the course: six faces, every object but the reflector, every frame
+  WhenChanged,   // a face is redrawn only when what it shows changed (exact; the default)
+  TimeSliced,    // as WhenChanged, but at most `facesPerFrame` faces a frame (may lag)
+  EveryNFrames,  // as WhenChanged, but only on every `everyN`-th frame (may lag)
+};
+
+const char* policyName(UpdatePolicy policy);
+// Accepts "every-frame", "when-changed", "time-sliced", "every-n"; false if unknown.
+bool parsePolicy(const std::string& text, UpdatePolicy* policy);
+
+struct PlannerSettings {
+  UpdatePolicy policy = UpdatePolicy::WhenChanged;
+  int facesPerFrame = 2;  // TimeSliced
+  int everyN = 4;         // EveryNFrames
+  // Capture level of detail: an object whose bounding sphere spans fewer than this many pixels
+  // (radius) in a face is drawn with its next coarser level; 0 turns LOD off.
+  float lodPixelRadius = 0.0f;
+  // The largest number of frames a face may lag behind the scene under this policy.
+  int maxStalenessFrames() const;
+};
+
+// What the planner needs to know of one scene object this frame.
+struct PlannedObject {
+  Bounds localBounds;
+  glm::mat4 model{1.0f};
+  glm::vec3 colour{1.0f};
+  uint32_t meshRevision = 0;  // bumped when the object's mesh is replaced
+  bool reflective = false;
+  int lodLevels = 1;  // levels available (0 = full detail)
+};
+
+// Everything else a capture depends on. Any change recaptures every face.
+struct CaptureContext {
+  glm::vec3 lightingEye{0.0f};  // the course lights captures from the main camera's eye
+  int faceSize = 256;
+  float near = 1.0f;
+  float far = 100.0f;
+  uint32_t revision = 0;  // bumped by the caller for any other option (light, clear colour...)
+  bool operator==(const CaptureContext& o) const {
+    return lightingEye == o.lightingEye && faceSize == o.faceSize && near == o.near &&
+           far == o.far && revision == o.revision;
+  }
+};
+
+struct DrawItem {
+  int object = 0;
+  int lod = 0;
+};
+
+struct FacePlan {
+  int face = 0;
+  std::vector<DrawItem> draws;
+};
+
+struct ProbePlan {
+  int reflector = 0;  // index of the reflective object that owns the probe
+  glm::vec3 centre{0.0f};
+  std::vector<FacePlan> faces;  // only the faces to redraw this frame
+};
+
+struct FramePlan {
+  std::vector<ProbePlan> probes;  // one per reflective object, even when nothing is redrawn
+  int facesCaptured() const;
+};
+
+class FramePlanner {
+ public:
+  FramePlan plan(const std::vector<PlannedObject>& objects, const CaptureContext& context,
+                 const PlannerSettings& settings);
+  // Forget every capture (the GL context was lost, or the caller wants a clean start).
+  void invalidate() { probes_.clear(); }
+
+ private:
+  // What a face showed when it was last drawn: which objects, and each object's versions then.
+  struct FaceMemory {
+    bool captured = false;
+    std::vector<int> visible;
+    std::vector<uint32_t> stateVersions;    // per object
+    std::vector<uint32_t> contentVersions;  // per object (reflectors: their cube's content)
+  };
+  struct ProbeMemory {
+    int reflector = -1;
+    glm::vec3 centre{0.0f};
+    CaptureContext context;
+    std::array<FaceMemory, 6> faces;
+    int sliceCursor = 0;
+  };
+  enum class Staleness { Fresh, BounceOnly, Changed };
+
+  std::vector<int> chooseFaces(const std::vector<int>& stale, const PlannerSettings& settings,
+                               ProbeMemory& memory) const;
+  Staleness faceStaleness(const ProbeMemory& probe, int face, const std::vector<int>& visibleNow) const;
+  void trackChanges(const std::vector<PlannedObject>& objects);
+  std::vector<DrawItem> drawsFor(const std::vector<PlannedObject>& objects, int reflector,
+                                 const glm::vec3& centre, int face, const CaptureContext& context,
+                                 const PlannerSettings& settings) const;
+
+  std::vector<PlannedObject> previous_;
+  std::vector<uint32_t> stateVersions_;    // per object: bumped each frame its state changes
+  // Per object: bumped when a reflector's cube was redrawn for a real change, so probes that
+  // show this mirror redraw once (one bounce), without two mirrors re-triggering each other.
+  std::vector<uint32_t> contentVersions_;
+  std::vector<ProbeMemory> probes_;
+  uint64_t frameIndex_ = 0;
+};
+
+}  // namespace reflect

@@ -1,0 +1,234 @@
+// Each rule of the frame planner, on small synthetic scenes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/frame_planner.h"
+#include "core/frustum.h"
+
+namespace reflect {
+namespace {
+
+const Bounds kUnitBox{{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}};
+
+PlannedObject boxAt(glm::vec3 position, float size = 1.0f) {
+  PlannedObject o;
+  o.localBounds = kUnitBox;
+  o.model = glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(size));
+  return o;
+}
+
+PlannedObject mirrorAt(glm::vec3 position) {
+  PlannedObject o = boxAt(position);
+  o.reflective = true;
+  return o;
+}
+
+std::vector<int> facesOf(const ProbePlan& probe) {
+  std::vector<int> faces;
+  for (const FacePlan& f : probe.faces) faces.push_back(f.face);
+  return faces;
+}
+
+std::vector<int> objectsIn(const ProbePlan& probe, int face) {
+  for (const FacePlan& f : probe.faces) {
+    if (f.face != face) continue;
+    std::vector<int> objects;
+    for (const DrawItem& d : f.draws) objects.push_back(d.object);
+    return objects;
+  }
+  return {};
+}
+
+constexpr int kPX = 0, kNX = 1, kPY = 2, kNY = 3, kPZ = 4, kNZ = 5;
+
+TEST(FramePlanner, NoProbeWithoutReflectiveObjects) {
+  FramePlanner planner;
+  const FramePlan plan = planner.plan({boxAt({3, 0, 0}), boxAt({0, 0, 3})}, {}, {});
+  EXPECT_TRUE(plan.probes.empty());
+  EXPECT_EQ(plan.facesCaptured(), 0);
+}
+
+TEST(FramePlanner, CullsObjectsPerFace) {
+  FramePlanner planner;
+  // 0: mirror at origin; 1: box on +X; 2: box on the +X/+Z edge; 3: a floor below everything.
+  PlannedObject floor = boxAt({0, -3, 0});
+  floor.model = glm::scale(glm::translate(glm::mat4(1.0f), {0, -3, 0}), {200, 0.01f, 200});
+  const FramePlan plan =
+      planner.plan({mirrorAt({0, 0, 0}), boxAt({5, 0, 0}), boxAt({4, 0, 4}), floor}, {}, {});
+  ASSERT_EQ(plan.probes.size(), 1u);
+  const ProbePlan& probe = plan.probes[0];
+  EXPECT_EQ(facesOf(probe), (std::vector<int>{0, 1, 2, 3, 4, 5}));  // first frame: all
+  EXPECT_EQ(objectsIn(probe, kPX), (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(objectsIn(probe, kPZ), (std::vector<int>{2, 3}));
+  EXPECT_EQ(objectsIn(probe, kNX), (std::vector<int>{3}));
+  EXPECT_EQ(objectsIn(probe, kPY), (std::vector<int>{}));  // the floor is below the probe
+  EXPECT_EQ(objectsIn(probe, kNY), (std::vector<int>{3}));
+}
+
+TEST(FramePlanner, NearAndFarPlanesCull) {
+  const glm::vec3 c(0.0f);
+  EXPECT_FALSE(faceMaySee(c, kPX, 1.0f, 100.0f, transformBounds(kUnitBox, glm::translate(glm::mat4(1.0f), {200, 0, 0}))));
+  EXPECT_TRUE(faceMaySee(c, kPX, 1.0f, 100.0f, transformBounds(kUnitBox, glm::translate(glm::mat4(1.0f), {100.3f, 0, 0}))));
+  EXPECT_FALSE(faceMaySee(c, kPX, 1.0f, 100.0f, transformBounds(kUnitBox, glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)))));
+}
+
+TEST(FramePlanner, StaticSceneCapturesOnce) {
+  FramePlanner planner;
+  const std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), boxAt({5, 0, 0}), boxAt({0, 0, -5})};
+  EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 6);
+  for (int frame = 0; frame < 5; ++frame) EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 0);
+}
+
+TEST(FramePlanner, RedrawsOnlyFacesWhereSomethingMoved) {
+  FramePlanner planner;
+  std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), boxAt({5, 0, 0}), boxAt({0, 0, -5})};
+  planner.plan(scene, {}, {});
+  scene[1] = boxAt({5, 0.5f, 0});  // moves within +X
+  FramePlan plan = planner.plan(scene, {}, {});
+  EXPECT_EQ(facesOf(plan.probes[0]), (std::vector<int>{kPX}));
+  EXPECT_EQ(objectsIn(plan.probes[0], kPX), (std::vector<int>{1}));
+  // Moves from +X to +Z: +X must be redrawn to erase it, +Z to show it.
+  scene[1] = boxAt({0, 0, 5});
+  plan = planner.plan(scene, {}, {});
+  EXPECT_EQ(facesOf(plan.probes[0]), (std::vector<int>{kPX, kPZ}));
+  EXPECT_EQ(objectsIn(plan.probes[0], kPX), (std::vector<int>{}));
+  // A colour change is a change too.
+  scene[2].colour = glm::vec3(0.5f);
+  EXPECT_EQ(facesOf(planner.plan(scene, {}, {}).probes[0]), (std::vector<int>{kNZ}));
+  // And so is a new mesh.
+  scene[2].meshRevision = 7;
+  EXPECT_EQ(facesOf(planner.plan(scene, {}, {}).probes[0]), (std::vector<int>{kNZ}));
+}
+
+TEST(FramePlanner, ProbeMoveOrOptionChangeRedrawsEverything) {
+  FramePlanner planner;
+  std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), boxAt({5, 0, 0})};
+  planner.plan(scene, {}, {});
+  scene[0] = mirrorAt({0, 0.1f, 0});
+  EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 6);
+  EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 0);
+  CaptureContext moved;
+  moved.lightingEye = glm::vec3(0, 1, 7);  // the course lights captures from the main eye
+  EXPECT_EQ(planner.plan(scene, moved, {}).facesCaptured(), 6);
+  CaptureContext bigger = moved;
+  bigger.faceSize = 512;
+  EXPECT_EQ(planner.plan(scene, bigger, {}).facesCaptured(), 6);
+  planner.invalidate();
+  EXPECT_EQ(planner.plan(scene, bigger, {}).facesCaptured(), 6);
+}
+
+TEST(FramePlanner, ExcludesEachReflectorFromItsOwnProbeOnly) {
+  FramePlanner planner;
+  const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}), mirrorAt({5, 0, 0})}, {}, {});
+  ASSERT_EQ(plan.probes.size(), 2u);
+  EXPECT_EQ(plan.probes[0].reflector, 0);
+  EXPECT_EQ(plan.probes[1].reflector, 1);
+  for (const ProbePlan& probe : plan.probes) {
+    for (const FacePlan& f : probe.faces) {
+      for (const DrawItem& d : f.draws) EXPECT_NE(d.object, probe.reflector);
+    }
+  }
+  EXPECT_EQ(objectsIn(plan.probes[0], kPX), (std::vector<int>{1}));  // sees the other mirror
+  EXPECT_EQ(objectsIn(plan.probes[1], kNX), (std::vector<int>{0}));
+}
+
+TEST(FramePlanner, TwoMirrorsSettleAfterOneBounce) {
+  FramePlanner planner;
+  const std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), mirrorAt({5, 0, 0})};
+  EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 12);
+  // Each mirror's cube changed, so the face of the other that shows it is redrawn once...
+  const FramePlan bounce = planner.plan(scene, {}, {});
+  EXPECT_EQ(bounce.facesCaptured(), 2);
+  // ...and that redraw does not trigger the first one again.
+  EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 0);
+}
+
+TEST(FramePlanner, EveryFramePolicyIsTheCourseScheme) {
+  FramePlanner planner;
+  PlannerSettings original;
+  original.policy = UpdatePolicy::EveryFrame;
+  const std::vector<PlannedObject> scene = {boxAt({5, 0, 0}), mirrorAt({0, 0, 0}), boxAt({0, 9, 0})};
+  for (int frame = 0; frame < 3; ++frame) {
+    const FramePlan plan = planner.plan(scene, {}, original);
+    ASSERT_EQ(plan.facesCaptured(), 6);
+    for (int face = 0; face < 6; ++face) {
+      EXPECT_EQ(objectsIn(plan.probes[0], face), (std::vector<int>{0, 2}));  // no culling
+    }
+  }
+}
+
+TEST(FramePlanner, TimeSlicingBoundsFacesPerFrameAndReachesEveryFace) {
+  FramePlanner planner;
+  PlannerSettings sliced;
+  sliced.policy = UpdatePolicy::TimeSliced;
+  sliced.facesPerFrame = 2;
+  EXPECT_EQ(sliced.maxStalenessFrames(), 2);
+  const std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), boxAt({5, 0, 0})};
+  std::vector<int> seen;
+  for (int frame = 0; frame < 3; ++frame) {
+    const FramePlan plan = planner.plan(scene, {}, sliced);
+    EXPECT_EQ(plan.facesCaptured(), 2);
+    for (int f : facesOf(plan.probes[0])) seen.push_back(f);
+  }
+  std::sort(seen.begin(), seen.end());
+  EXPECT_EQ(seen, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(planner.plan(scene, {}, sliced).facesCaptured(), 0);  // all fresh now
+}
+
+TEST(FramePlanner, EveryNFramesCapturesOnlyOnItsFrames) {
+  FramePlanner planner;
+  PlannerSettings everyThird;
+  everyThird.policy = UpdatePolicy::EveryNFrames;
+  everyThird.everyN = 3;
+  EXPECT_EQ(everyThird.maxStalenessFrames(), 2);
+  std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), boxAt({5, 0, 0})};
+  std::vector<int> faces;
+  for (int frame = 0; frame < 7; ++frame) {
+    scene[1] = boxAt({5, 0.01f * static_cast<float>(frame), 0});  // moves every frame
+    faces.push_back(planner.plan(scene, {}, everyThird).facesCaptured());
+  }
+  EXPECT_EQ(faces, (std::vector<int>{6, 0, 0, 1, 0, 0, 1}));
+}
+
+TEST(FramePlanner, PolicyNamesRoundTrip) {
+  for (UpdatePolicy p : {UpdatePolicy::EveryFrame, UpdatePolicy::WhenChanged,
+                         UpdatePolicy::TimeSliced, UpdatePolicy::EveryNFrames}) {
+    UpdatePolicy parsed = UpdatePolicy::WhenChanged;
+    ASSERT_TRUE(parsePolicy(policyName(p), &parsed));
+    EXPECT_EQ(parsed, p);
+  }
+  UpdatePolicy unused;
+  EXPECT_FALSE(parsePolicy("sometimes", &unused));
+  EXPECT_EQ(PlannerSettings{}.maxStalenessFrames(), 0);
+}
+
+TEST(FramePlanner, CoarserLevelsForObjectsSmallInTheFace) {
+  FramePlanner planner;
+  PlannerSettings lod;
+  lod.lodPixelRadius = 32.0f;  // 256-pixel faces
+  PlannedObject nearBox = boxAt({3, 0, 0});
+  PlannedObject farBox = boxAt({0, 0, 40});
+  PlannedObject veryFar = boxAt({0, 0, -95});
+  for (PlannedObject* o : {&nearBox, &farBox, &veryFar}) o->lodLevels = 3;
+  const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}), nearBox, farBox, veryFar}, {}, lod);
+  auto lodOf = [&](int face, int object) {
+    for (const FacePlan& f : plan.probes[0].faces)
+      for (const DrawItem& d : f.draws)
+        if (f.face == face && d.object == object) return d.lod;
+    return -1;
+  };
+  // Radius sqrt(3)/2 = 0.87: at 3 units 37 px (full detail); at 40 units 2.8 px; at 95, 1.2 px.
+  EXPECT_EQ(lodOf(kPX, 1), 0);
+  EXPECT_EQ(lodOf(kPZ, 2), 2);
+  EXPECT_EQ(lodOf(kNZ, 3), 2);  // clamped to the levels there are
+  PlannedObject mid = boxAt({0, 0, -5});  // 22 px: one level down
+  mid.lodLevels = 3;
+  FramePlanner second;
+  const FramePlan p2 = second.plan({mirrorAt({0, 0, 0}), mid}, {}, lod);
+  EXPECT_EQ(p2.probes[0].faces[kNZ].draws.at(0).lod, 1);
+}
+
+}  // namespace
+}  // namespace reflect
