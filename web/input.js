@@ -19,6 +19,7 @@ export function attachInput(canvas, actions) {
   window.addEventListener('keydown', (e) => {
     if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement ||
         e.target instanceof HTMLTextAreaElement) return;  // typing in a control moves nothing
+    if (e.ctrlKey || e.metaKey || e.altKey) return;  // browser shortcuts (Ctrl+R, Ctrl+S) stay the browser's
     const key = e.key.toLowerCase();
     if (key === 'w' || key === 'arrowup') actions.move(1);
     else if (key === 's' || key === 'arrowdown') actions.move(-1);

@@ -39,7 +39,8 @@ const char* cliHelp() {
          "\n"
          "commands:\n"
          "  render   render one frame to a PNG\n"
-         "  bench    render frames of the default scene and print frame and capture ms\n"
+         "  bench    time the capture update policies on the default scene (or one policy\n"
+         "           with --policy) and compare their pictures with the every-frame policy\n"
          "  help     show this text (also --help)\n"
          "\n"
          "options:\n"
@@ -52,7 +53,15 @@ const char* cliHelp() {
          "  --yaw D          camera yaw in degrees (default 0)\n"
          "  --pitch D        camera pitch in degrees, clamped to +/-89 (default 0)\n"
          "  --frames N       bench: frames to time (default 120)\n"
-         "  --warmup N       bench: frames before timing (default 10)\n";
+         "  --warmup N       bench: frames before timing (default 10)\n"
+         "  --accuracy-frames N  bench: frames compared with every-frame (default 60)\n"
+         "  --policy P       capture update policy: every-frame (the course), when-changed\n"
+         "                   (default), time-sliced, every-n\n"
+         "  --slice K        time-sliced: faces per frame (default 2)\n"
+         "  --every N        every-n: capture every N-th frame (default 4)\n"
+         "  --lod D          capture LOD: in each face use the coarsest mesh level with at\n"
+         "                   least D triangles per pixel of the object's projected disc\n"
+         "                   (default 0 = off, full detail)\n";
 }
 
 Result<CliOptions> parseCli(const std::vector<std::string>& args) {
@@ -88,6 +97,18 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       ok = parseInt(value, 0, 1000000, &o.warmup);
     } else if (flag == "--cube") {
       ok = parseInt(value, 1, 16384, &o.cubeSize);
+    } else if (flag == "--accuracy-frames") {
+      ok = parseInt(value, 0, 100000, &o.accuracyFrames);
+    } else if (flag == "--policy") {
+      ok = parsePolicy(value, &o.planner.policy);
+      o.policySet = true;
+    } else if (flag == "--slice") {
+      ok = parseInt(value, 1, 6, &o.planner.facesPerFrame);
+    } else if (flag == "--every") {
+      ok = parseInt(value, 1, 1000, &o.planner.everyN);
+    } else if (flag == "--lod") {
+      ok = parseNumber(value, &number) && number >= 0;
+      o.planner.lodTrianglesPerPixel = static_cast<float>(number);
     } else if (flag == "--yaw" || flag == "--pitch") {
       ok = parseNumber(value, &number);
       (flag == "--yaw" ? o.yawDeg : o.pitchDeg) = static_cast<float>(number);

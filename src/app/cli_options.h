@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/frame_planner.h"
 #include "core/result.h"
 
 namespace reflect {
@@ -20,6 +21,10 @@ struct CliOptions {
   int cubeSize = 256;
   float yawDeg = 0.0f;
   float pitchDeg = 0.0f;
+  // Capture planning. `policySet`: bench times just this policy instead of comparing them all.
+  PlannerSettings planner;
+  bool policySet = false;
+  int accuracyFrames = 60;  // bench: frames compared against the every-frame policy
 };
 
 Result<CliOptions> parseCli(const std::vector<std::string>& args);

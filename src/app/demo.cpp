@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "core/mesh_chunks.h"
 #include "core/mesh_lod.h"
 #include "core/obj_loader.h"
 #include "gfx/gl.h"
@@ -33,6 +34,7 @@ std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   std::vector<MeshData> levels;
   levels.push_back(mesh.take());
   for (MeshData& coarser : buildLodLevels(levels.front())) levels.push_back(std::move(coarser));
+  for (MeshData& level : levels) chunkMesh(level);
   if (renderer_) {
     for (size_t lod = 0; lod < levels.size(); ++lod) {
       renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
@@ -48,6 +50,7 @@ std::string Demo::addLodLevel(const std::string& name, const std::vector<uint32_
   if (it == meshes_.end()) return name + ": no such mesh";
   MeshData level = meshFromIndices(it->second.front(), indices);
   if (level.indices.empty()) return name + ": level of detail has no triangles";
+  chunkMesh(level);
   if (renderer_) renderer_->setMesh(name, static_cast<int>(it->second.size()), level);
   it->second.push_back(std::move(level));
   ++optionsRevision_;  // faces drawn before may have used a coarser level than now exists
@@ -76,7 +79,7 @@ bool Demo::hasAllMeshes() const {
 }
 
 void Demo::setPlannerSettings(const PlannerSettings& settings) {
-  if (settings.lodPixelRadius != plannerSettings_.lodPixelRadius) ++optionsRevision_;
+  if (settings.lodTrianglesPerPixel != plannerSettings_.lodTrianglesPerPixel) ++optionsRevision_;
   plannerSettings_ = settings;
 }
 
@@ -115,7 +118,9 @@ std::vector<PlannedObject> Demo::plannedObjects(double orbitDegrees) const {
     auto it = meshes_.find(object.mesh);
     if (it != meshes_.end()) {
       p.localBounds = it->second.front().bounds;
-      p.lodLevels = static_cast<int>(it->second.size());
+      for (const MeshData& level : it->second) {
+        p.levels.push_back(PlannedLevel{level.triangleCount(), &level.chunks});
+      }
     }
     auto revision = meshRevisions_.find(object.mesh);
     p.meshRevision = revision == meshRevisions_.end() ? 0 : revision->second;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/frustum.h"
+#include "core/mesh_chunks.h"
 
 namespace reflect {
 namespace {
@@ -79,6 +80,33 @@ void FramePlanner::trackChanges(const std::vector<PlannedObject>& objects) {
   }
 }
 
+namespace {
+
+// The coarsest level whose triangle count still covers the object's projected disc in the face at
+// `trianglesPerPixel`. Distances and sizes from the bounding sphere of the oriented box.
+int chooseLevel(const PlannedObject& o, const glm::vec3& centre, int faceSize,
+                float trianglesPerPixel) {
+  if (trianglesPerPixel <= 0.0f || o.levels.size() < 2) return 0;
+  const glm::vec3 worldCentre(o.model * glm::vec4(o.localBounds.centre(), 1.0f));
+  const glm::vec3 halfExtent = 0.5f * (o.localBounds.max - o.localBounds.min);
+  const glm::mat3 m(o.model);
+  const float radius = glm::length(glm::abs(m[0]) * halfExtent.x + glm::abs(m[1]) * halfExtent.y +
+                                   glm::abs(m[2]) * halfExtent.z);
+  const float distance = glm::length(worldCentre - centre);
+  if (distance <= radius) return 0;  // the probe is inside or touching it
+  // At 90 degrees one unit of tangent spans half the face.
+  const float pixels = radius / distance * 0.5f * static_cast<float>(faceSize);
+  const float wanted = trianglesPerPixel * 3.14159265f * pixels * pixels;
+  int level = 0;
+  while (level + 1 < static_cast<int>(o.levels.size()) &&
+         static_cast<float>(o.levels[static_cast<size_t>(level + 1)].triangles) >= wanted) {
+    ++level;
+  }
+  return level;
+}
+
+}  // namespace
+
 std::vector<DrawItem> FramePlanner::drawsFor(const std::vector<PlannedObject>& objects,
                                              int reflector, const glm::vec3& centre, int face,
                                              const CaptureContext& context,
@@ -89,26 +117,28 @@ std::vector<DrawItem> FramePlanner::drawsFor(const std::vector<PlannedObject>& o
     // The probe's own reflector is left out by identity: it surrounds the capture point.
     if (static_cast<int>(i) == reflector) continue;
     const PlannedObject& o = objects[i];
-    if (!original && !faceMaySee(centre, face, context.near, context.far,
-                                 transformBounds(o.localBounds, o.model))) {
+    DrawItem item{static_cast<int>(i), 0, {}, 0};
+    if (!o.levels.empty()) item.triangles = o.levels[0].triangles;
+    if (original) {  // the course draws every object whole into every face
+      draws.push_back(std::move(item));
       continue;
     }
-    DrawItem item{static_cast<int>(i), 0};
-    if (!original && settings.lodPixelRadius > 0.0f && o.lodLevels > 1) {
-      const Bounds world = transformBounds(o.localBounds, o.model);
-      const float radius = 0.5f * glm::length(world.max - world.min);
-      const float distance = glm::length(world.centre() - centre);
-      if (distance > radius) {
-        // At 90 degrees a unit of tangent spans half the face: radius/distance x faceSize/2 px.
-        float pixels = radius / distance * 0.5f * static_cast<float>(context.faceSize);
-        float threshold = settings.lodPixelRadius;
-        while (item.lod + 1 < o.lodLevels && pixels < threshold) {
-          ++item.lod;
-          threshold *= 0.5f;
+    if (!faceMaySee(centre, face, context.near, context.far, o.localBounds, o.model)) continue;
+    item.lod = chooseLevel(o, centre, context.faceSize, settings.lodTrianglesPerPixel);
+    if (!o.levels.empty()) {
+      const PlannedLevel& level = o.levels[static_cast<size_t>(item.lod)];
+      item.triangles = level.triangles;
+      if (level.chunks && !level.chunks->empty()) {
+        item.triangles = 0;
+        for (const MeshChunk& chunk : *level.chunks) {
+          if (!faceMaySee(centre, face, context.near, context.far, chunk.bounds, o.model)) continue;
+          appendRange(item.ranges, chunk.range);
+          item.triangles += chunk.range.count / 3;
         }
+        if (item.ranges.empty()) continue;  // the box reaches in, but no part of the mesh does
       }
     }
-    draws.push_back(item);
+    draws.push_back(std::move(item));
   }
   return draws;
 }

@@ -29,11 +29,17 @@ struct PlannerSettings {
   UpdatePolicy policy = UpdatePolicy::WhenChanged;
   int facesPerFrame = 2;  // TimeSliced
   int everyN = 4;         // EveryNFrames
-  // Capture level of detail: an object whose bounding sphere spans fewer than this many pixels
-  // (radius) in a face is drawn with its next coarser level; 0 turns LOD off.
-  float lodPixelRadius = 0.0f;
+  // Capture level of detail: in each face an object is drawn with its coarsest level that still
+  // has this many triangles per pixel of its projected bounding disc; 0 turns LOD off.
+  float lodTrianglesPerPixel = 0.0f;
   // The largest number of frames a face may lag behind the scene under this policy.
   int maxStalenessFrames() const;
+};
+
+// One level of detail of an object's mesh (the pointer is borrowed for the plan() call).
+struct PlannedLevel {
+  size_t triangles = 0;
+  const std::vector<MeshChunk>* chunks = nullptr;  // null or empty: cull the object as a whole
 };
 
 // What the planner needs to know of one scene object this frame.
@@ -43,7 +49,7 @@ struct PlannedObject {
   glm::vec3 colour{1.0f};
   uint32_t meshRevision = 0;  // bumped when the object's mesh is replaced
   bool reflective = false;
-  int lodLevels = 1;  // levels available (0 = full detail)
+  std::vector<PlannedLevel> levels;  // 0 = full detail; empty: one level, no chunks
 };
 
 // Everything else a capture depends on. Any change recaptures every face.
@@ -62,6 +68,8 @@ struct CaptureContext {
 struct DrawItem {
   int object = 0;
   int lod = 0;
+  std::vector<IndexRange> ranges;  // the visible chunks; empty = the whole mesh
+  size_t triangles = 0;            // in `ranges` (0 when the level's size is unknown)
 };
 
 struct FacePlan {

@@ -22,16 +22,21 @@ Bounds transformBounds(const Bounds& local, const glm::mat4& model) {
 
 namespace {
 
-// The largest value of dot(n, p - centre) over the box: its corner furthest along n.
-float maxAlong(const glm::vec3& n, const glm::vec3& centre, const Bounds& box) {
-  const glm::vec3 far(n.x >= 0 ? box.max.x : box.min.x, n.y >= 0 ? box.max.y : box.min.y,
-                      n.z >= 0 ? box.max.z : box.min.z);
-  return glm::dot(n, far - centre);
+// The largest value of dot(n, M x + t - centre) over the local box: its corner furthest along n
+// once n is taken into the box's space (M^T n).
+float maxAlong(const glm::vec3& n, const glm::vec3& centre, const Bounds& local,
+               const glm::mat4& model) {
+  const glm::vec3 localN = glm::transpose(glm::mat3(model)) * n;
+  const glm::vec3 far(localN.x >= 0 ? local.max.x : local.min.x,
+                      localN.y >= 0 ? local.max.y : local.min.y,
+                      localN.z >= 0 ? local.max.z : local.min.z);
+  return glm::dot(localN, far) + glm::dot(n, glm::vec3(model[3]) - centre);
 }
 
 }  // namespace
 
-bool faceMaySee(const glm::vec3& centre, int face, float near, float far, const Bounds& box) {
+bool faceMaySee(const glm::vec3& centre, int face, float near, float far, const Bounds& local,
+                const glm::mat4& model) {
   const CubeFace& f = kCubeFaces.at(static_cast<size_t>(face));
   const glm::vec3 d = f.direction;
   const glm::vec3 u = f.up;
@@ -40,10 +45,10 @@ bool faceMaySee(const glm::vec3& centre, int face, float near, float far, const 
   // through the centre with normals d -/+ u and d -/+ r (unnormalised; only the sign matters).
   const glm::vec3 sides[4] = {d - u, d + u, d - r, d + r};
   for (const glm::vec3& n : sides) {
-    if (maxAlong(n, centre, box) < 0.0f) return false;
+    if (maxAlong(n, centre, local, model) < 0.0f) return false;
   }
-  if (maxAlong(d, centre, box) < near) return false;   // wholly in front of the near plane
-  if (maxAlong(-d, centre, box) < -far) return false;  // wholly beyond the far plane
+  if (maxAlong(d, centre, local, model) < near) return false;   // wholly before the near plane
+  if (maxAlong(-d, centre, local, model) < -far) return false;  // wholly beyond the far plane
   return true;
 }
 

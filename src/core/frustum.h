@@ -11,8 +11,10 @@ namespace reflect {
 // The world-space box around `local` transformed by `model` (all 8 corners).
 Bounds transformBounds(const Bounds& local, const glm::mat4& model);
 
-// True when `box` may intersect the frustum of cube face `face` seen from `centre` between
-// `near` and `far`.
-bool faceMaySee(const glm::vec3& centre, int face, float near, float far, const Bounds& box);
+// True when the box `local` placed by `model` (an oriented box in the world) may intersect the
+// frustum of cube face `face` seen from `centre` between `near` and `far`. Each plane is taken
+// into the box's own space, so a rotated figure is not inflated to a world-aligned box.
+bool faceMaySee(const glm::vec3& centre, int face, float near, float far, const Bounds& local,
+                const glm::mat4& model = glm::mat4(1.0f));
 
 }  // namespace reflect

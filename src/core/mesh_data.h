@@ -21,11 +21,23 @@ struct Bounds {
   glm::vec3 centre() const { return (min + max) * 0.5f; }
 };
 
+struct IndexRange {
+  uint32_t first = 0;  // first index (not triangle)
+  uint32_t count = 0;  // indices
+};
+
+// Nearby triangles stored contiguously, with their bounds (see mesh_chunks.h).
+struct MeshChunk {
+  IndexRange range;
+  Bounds bounds;
+};
+
 struct MeshData {
   std::string name;  // for messages: the file it came from
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;  // triangles, counter-clockwise
   Bounds bounds;
+  std::vector<MeshChunk> chunks;  // empty until chunkMesh
 
   size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -1,6 +1,7 @@
 #include "gfx/mesh_buffer.h"
 
 #include <cstddef>
+#include <cstdint>
 
 #include "gfx/shader_program.h"
 
@@ -33,6 +34,15 @@ MeshBuffer::MeshBuffer(const MeshData& mesh)
 void MeshBuffer::draw() const {
   glBindVertexArray(vao_.id());
   glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+}
+
+void MeshBuffer::draw(const std::vector<IndexRange>& ranges) const {
+  if (ranges.empty()) return draw();
+  glBindVertexArray(vao_.id());
+  for (const IndexRange& r : ranges) {
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(r.count), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<uintptr_t>(r.first) * sizeof(uint32_t)));
+  }
 }
 
 void MeshBuffer::abandon() {

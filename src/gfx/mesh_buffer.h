@@ -1,6 +1,8 @@
 // One mesh on the GPU: a vertex array with interleaved position + normal and 32-bit indices.
 #pragma once
 
+#include <vector>
+
 #include "core/mesh_data.h"
 #include "gfx/gl_handle.h"
 
@@ -11,6 +13,8 @@ class MeshBuffer {
   explicit MeshBuffer(const MeshData& mesh);
 
   void draw() const;
+  // Only these index ranges (the visible chunks); empty draws everything.
+  void draw(const std::vector<IndexRange>& ranges) const;
   GLsizei indexCount() const { return indexCount_; }
   size_t triangleCount() const { return static_cast<size_t>(indexCount_) / 3; }
   const Bounds& bounds() const { return bounds_; }

@@ -58,11 +58,6 @@ void SceneRenderer::setMesh(const std::string& name, int lod, const MeshData& me
   levels.emplace_back(mesh);
 }
 
-int SceneRenderer::lodLevels(const std::string& name) const {
-  auto it = meshes_.find(name);
-  return it == meshes_.end() ? 0 : static_cast<int>(it->second.size());
-}
-
 const MeshBuffer* SceneRenderer::mesh(const std::string& name, int lod) const {
   auto it = meshes_.find(name);
   if (it == meshes_.end() || it->second.empty()) return nullptr;
@@ -94,9 +89,10 @@ void SceneRenderer::useMirror(const glm::mat4& viewProj, const glm::vec3& viewPo
   glUniform1i(mirror_.environment, kEnvironmentTextureUnit);
 }
 
-PassCounts SceneRenderer::drawObject(const Scene& scene, int index, int lod, double orbitDegrees) {
-  const SceneObject& object = scene.objects[static_cast<size_t>(index)];
-  const MeshBuffer* buffer = mesh(object.mesh, lod);
+PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item,
+                                     double orbitDegrees) {
+  const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
+  const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
   const glm::mat4 model = scene.modelMatrix(object, orbitDegrees);
   if (object.reflective) {
@@ -105,13 +101,14 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, int index, int lod, dou
     glUniform1f(mirror_.reflectionWeight, object.reflectionWeight);
     glUniform1f(mirror_.baseWeight, object.baseWeight);
     glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, environmentTexture(index));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, environmentTexture(item.object));
   } else {
     setObjectMatrices(phong_.model, phong_.normalMatrix, model);
     glUniform3fv(phong_.colour, 1, glm::value_ptr(object.colour));
   }
-  buffer->draw();
-  return {1, buffer->triangleCount()};
+  buffer->draw(item.ranges);
+  const size_t triangles = item.ranges.empty() ? buffer->triangleCount() : item.triangles;
+  return {static_cast<int>(std::max<size_t>(item.ranges.size(), 1)), triangles};
 }
 
 Result<PassCounts> SceneRenderer::capture(const Scene& scene, double orbitDegrees,
@@ -138,14 +135,14 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double orbitDegree
       usePhong(scene, viewProj, lightingEye);
       for (const DrawItem& d : face.draws) {
         if (!scene.objects[static_cast<size_t>(d.object)].reflective)
-          counts += drawObject(scene, d.object, d.lod, orbitDegrees);
+          counts += drawObject(scene, d, orbitDegrees);
       }
       bool mirrorInUse = false;
       for (const DrawItem& d : face.draws) {
         if (!scene.objects[static_cast<size_t>(d.object)].reflective) continue;
         if (!mirrorInUse) useMirror(viewProj, probe.centre);
         mirrorInUse = true;
-        counts += drawObject(scene, d.object, d.lod, orbitDegrees);
+        counts += drawObject(scene, d, orbitDegrees);
       }
     }
   }
@@ -167,11 +164,15 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double orbitDegrees, cons
   usePhong(scene, viewProj, camera.eye);
   const int objectCount = static_cast<int>(scene.objects.size());
   for (int i = 0; i < objectCount; ++i) {
-    if (!scene.objects[static_cast<size_t>(i)].reflective) counts += drawObject(scene, i, 0, orbitDegrees);
+    if (!scene.objects[static_cast<size_t>(i)].reflective) {
+      counts += drawObject(scene, DrawItem{i, 0, {}, 0}, orbitDegrees);
+    }
   }
   useMirror(viewProj, camera.eye);
   for (int i = 0; i < objectCount; ++i) {
-    if (scene.objects[static_cast<size_t>(i)].reflective) counts += drawObject(scene, i, 0, orbitDegrees);
+    if (scene.objects[static_cast<size_t>(i)].reflective) {
+      counts += drawObject(scene, DrawItem{i, 0, {}, 0}, orbitDegrees);
+    }
   }
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindVertexArray(0);

@@ -41,7 +41,6 @@ class SceneRenderer {
   // Uploads (or replaces) level `lod` of the mesh the scene knows by `name` (0 = full detail;
   // setting level 0 drops the coarser levels, which belonged to the old mesh).
   void setMesh(const std::string& name, int lod, const MeshData& mesh);
-  int lodLevels(const std::string& name) const;
 
   // Renders the plan's faces. `lightingEye` is the main camera's eye: the course lights captures
   // as seen from it. Probe targets are created (or resized) on first use.
@@ -70,8 +69,8 @@ class SceneRenderer {
   SceneRenderer(PhongProgram phong, MirrorProgram mirror);
   void usePhong(const Scene& scene, const glm::mat4& viewProj, const glm::vec3& viewPosition);
   void useMirror(const glm::mat4& viewProj, const glm::vec3& viewPosition);
-  // Draws one object with whichever program is in use for its material.
-  PassCounts drawObject(const Scene& scene, int index, int lod, double orbitDegrees);
+  // Draws one object (or the planned ranges of it) with the program in use for its material.
+  PassCounts drawObject(const Scene& scene, const DrawItem& item, double orbitDegrees);
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;

@@ -207,27 +207,56 @@ TEST(FramePlanner, PolicyNamesRoundTrip) {
 TEST(FramePlanner, CoarserLevelsForObjectsSmallInTheFace) {
   FramePlanner planner;
   PlannerSettings lod;
-  lod.lodPixelRadius = 32.0f;  // 256-pixel faces
-  PlannedObject nearBox = boxAt({3, 0, 0});
-  PlannedObject farBox = boxAt({0, 0, 40});
-  PlannedObject veryFar = boxAt({0, 0, -95});
-  for (PlannedObject* o : {&nearBox, &farBox, &veryFar}) o->lodLevels = 3;
-  const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}), nearBox, farBox, veryFar}, {}, lod);
-  auto lodOf = [&](int face, int object) {
+  lod.lodTrianglesPerPixel = 0.5f;  // 256-pixel faces
+  auto withLevels = [](PlannedObject o) {
+    o.levels = {{4000, nullptr}, {1000, nullptr}, {250, nullptr}};
+    return o;
+  };
+  // Bounding radius sqrt(3)/2. At 3 units: 37 px radius, 4280 px^2, wants 2140 triangles: level 0.
+  // At 5 units: 22 px, wants 774: level 1. At 40 units: 2.8 px, wants 12: level 2 (the last).
+  const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}), withLevels(boxAt({3, 0, 0})),
+                                       withLevels(boxAt({0, 0, -5})), withLevels(boxAt({0, 0, 40}))},
+                                      {}, lod);
+  auto drawOf = [&](int face, int object) {
     for (const FacePlan& f : plan.probes[0].faces)
       for (const DrawItem& d : f.draws)
-        if (f.face == face && d.object == object) return d.lod;
-    return -1;
+        if (f.face == face && d.object == object) return d;
+    return DrawItem{-1, -1, {}, 0};
   };
-  // Radius sqrt(3)/2 = 0.87: at 3 units 37 px (full detail); at 40 units 2.8 px; at 95, 1.2 px.
-  EXPECT_EQ(lodOf(kPX, 1), 0);
-  EXPECT_EQ(lodOf(kPZ, 2), 2);
-  EXPECT_EQ(lodOf(kNZ, 3), 2);  // clamped to the levels there are
-  PlannedObject mid = boxAt({0, 0, -5});  // 22 px: one level down
-  mid.lodLevels = 3;
-  FramePlanner second;
-  const FramePlan p2 = second.plan({mirrorAt({0, 0, 0}), mid}, {}, lod);
-  EXPECT_EQ(p2.probes[0].faces[kNZ].draws.at(0).lod, 1);
+  EXPECT_EQ(drawOf(kPX, 1).lod, 0);
+  EXPECT_EQ(drawOf(kPX, 1).triangles, 4000u);
+  EXPECT_EQ(drawOf(kNZ, 2).lod, 1);
+  EXPECT_EQ(drawOf(kPZ, 3).lod, 2);
+  EXPECT_EQ(drawOf(kPZ, 3).triangles, 250u);
+  // LOD off: full detail everywhere.
+  FramePlanner off;
+  const FramePlan full = off.plan({mirrorAt({0, 0, 0}), withLevels(boxAt({0, 0, 40}))}, {}, {});
+  EXPECT_EQ(full.probes[0].faces[kPZ].draws.at(0).lod, 0);
+}
+
+TEST(FramePlanner, DrawsOnlyTheChunksAFaceCanSee) {
+  // One object whose two chunks sit on either side of the probe.
+  const std::vector<MeshChunk> chunks = {
+      {{0, 300}, {{4, -1, -1}, {6, 1, 1}}},    // +X side, 100 triangles
+      {{300, 600}, {{-6, -1, -1}, {-4, 1, 1}}}, // -X side, 200 triangles
+  };
+  PlannedObject wide;
+  wide.localBounds = {{-6, -1, -1}, {6, 1, 1}};
+  wide.levels = {{300, &chunks}};
+  FramePlanner planner;
+  const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}), wide}, {}, {});
+  const FacePlan& px = plan.probes[0].faces[kPX];
+  const FacePlan& nx = plan.probes[0].faces[kNX];
+  ASSERT_EQ(px.draws.size(), 1u);
+  ASSERT_EQ(px.draws[0].ranges.size(), 1u);
+  EXPECT_EQ(px.draws[0].ranges[0].first, 0u);
+  EXPECT_EQ(px.draws[0].triangles, 100u);
+  ASSERT_EQ(nx.draws.size(), 1u);
+  EXPECT_EQ(nx.draws[0].ranges[0].first, 300u);
+  EXPECT_EQ(nx.draws[0].triangles, 200u);
+  // The object's box reaches into +Y (it is 2 tall around the probe's height) but no chunk is
+  // beyond the near plane there: not drawn at all.
+  EXPECT_TRUE(plan.probes[0].faces[kPY].draws.empty());
 }
 
 }  // namespace

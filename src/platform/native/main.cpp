@@ -7,19 +7,41 @@
 #include "app/cli_options.h"
 #include "app/demo.h"
 #include "app/headless_frames.h"
+#include "app/policy_bench.h"
 #include "core/image.h"
 #include "platform/native/egl_context.h"
 #include "platform/native/model_paths.h"
 
 namespace {
 
+using reflect::CliOptions;
+using reflect::Demo;
+using reflect::Result;
+
 int fail(const std::string& message) {
   std::fprintf(stderr, "reflect: %s\n", message.c_str());
   return 1;
 }
 
-int runRender(reflect::Demo& demo, const reflect::CliOptions& o) {
-  reflect::Result<reflect::RgbaImage> image = reflect::renderFrameAt(demo, o.time, o.width, o.height);
+Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, bool reflectorAsPhong) {
+  reflect::Scene scene = reflect::makeDynamicReflectionScene();
+  if (reflectorAsPhong) {
+    for (reflect::SceneObject& object : scene.objects) object.reflective = false;
+  }
+  auto demo = std::make_unique<Demo>(scene);
+  demo->setCubeFaceSize(o.cubeSize);
+  demo->setPlannerSettings(o.planner);
+  demo->camera().setAngles(o.yawDeg, o.pitchDeg);
+  std::string error = reflect::loadSceneModels(*demo, o.assets);
+  if (error.empty()) error = demo->initGraphics();
+  if (!error.empty()) return Result<std::unique_ptr<Demo>>::failure(error);
+  return Result<std::unique_ptr<Demo>>(std::move(demo));
+}
+
+int runRender(const CliOptions& o) {
+  auto demo = makeDemo(o, false);
+  if (!demo) return fail(demo.error());
+  auto image = reflect::renderFrameAt(*demo.value(), o.time, o.width, o.height);
   if (!image) return fail(image.error());
   std::string error = reflect::writePng(image.value(), o.out);
   if (!error.empty()) return fail(error);
@@ -27,13 +49,17 @@ int runRender(reflect::Demo& demo, const reflect::CliOptions& o) {
   return 0;
 }
 
-int runBench(reflect::Demo& demo, const reflect::CliOptions& o) {
-  reflect::Result<reflect::BenchResult> r =
-      reflect::benchFrames(demo, o.width, o.height, o.warmup, o.frames);
+// One policy: frames of the animated default scene, median and spread.
+int runSingleBench(const CliOptions& o) {
+  auto demo = makeDemo(o, false);
+  if (!demo) return fail(demo.error());
+  auto r = reflect::benchFrames(*demo.value(), o.width, o.height, o.warmup, o.frames);
   if (!r) return fail(r.error());
   const reflect::BenchResult& b = r.value();
-  std::printf("frames %d at %dx%d, cube %d, %d draw calls and %zu triangles a frame\n", o.frames,
-              o.width, o.height, o.cubeSize, b.drawCallsPerFrame, b.trianglesPerFrame);
+  std::printf("policy %s, %d frames at %dx%d, cube %d: %d draw calls and %zu triangles in the "
+              "last frame\n",
+              reflect::policyName(o.planner.policy), o.frames, o.width, o.height, o.cubeSize,
+              b.drawCallsPerFrame, b.trianglesPerFrame);
   std::printf("frame ms   median %.3f  p10 %.3f  p90 %.3f\n", reflect::median(b.frameMs),
               reflect::percentile(b.frameMs, 0.1), reflect::percentile(b.frameMs, 0.9));
   std::printf("capture ms median %.3f  p10 %.3f  p90 %.3f\n", reflect::median(b.captureMs),
@@ -41,28 +67,80 @@ int runBench(reflect::Demo& demo, const reflect::CliOptions& o) {
   return 0;
 }
 
+// Every policy on the animated scene, then the static scene against a plain-Phong reflector.
+int runPolicyBench(const CliOptions& o) {
+  using reflect::PolicyCase;
+  using reflect::UpdatePolicy;
+  auto settings = [&](UpdatePolicy policy, float lod) {
+    reflect::PlannerSettings s = o.planner;
+    s.policy = policy;
+    s.lodTrianglesPerPixel = lod;
+    return s;
+  };
+  const float lod = o.planner.lodTrianglesPerPixel > 0 ? o.planner.lodTrianglesPerPixel : 0.5f;
+  char lodLabel[64];
+  std::snprintf(lodLabel, sizeof lodLabel, "when-changed + LOD (%.2g tris/px)", lod);
+  char sliceLabel[64], everyLabel[64];
+  std::snprintf(sliceLabel, sizeof sliceLabel, "time-sliced (%d faces/frame)", o.planner.facesPerFrame);
+  std::snprintf(everyLabel, sizeof everyLabel, "every-n (N = %d)", o.planner.everyN);
+  const std::vector<PolicyCase> animated = {
+      {"every-frame (the course)", settings(UpdatePolicy::EveryFrame, 0), false},
+      {"when-changed (default)", settings(UpdatePolicy::WhenChanged, 0), false},
+      {lodLabel, settings(UpdatePolicy::WhenChanged, lod), false},
+      {sliceLabel, settings(UpdatePolicy::TimeSliced, 0), false},
+      {everyLabel, settings(UpdatePolicy::EveryNFrames, 0), false},
+  };
+  const reflect::DemoFactory factory = [&](bool asPhong) { return makeDemo(o, asPhong); };
+  reflect::PolicyBenchOptions options;
+  options.width = o.width;
+  options.height = o.height;
+  options.warmup = o.warmup;
+  options.frames = o.frames;
+  options.accuracyFrames = o.accuracyFrames;
+
+  std::printf("scene: Ex12-2%s%s, %dx%d, cube %d, %d frames after %d warm-up, 60 Hz steps\n\n",
+              o.assets.empty() ? "" : " with models from ", o.assets.c_str(), o.width, o.height,
+              o.cubeSize, o.frames, o.warmup);
+  auto results = reflect::benchPolicies(factory, animated, options);
+  if (!results) return fail(results.error());
+  std::printf("animated (the figures orbit):\n%s\n",
+              reflect::formatPolicyTable(results.value()).c_str());
+  const reflect::PolicyResult& original = results.value()[0];
+  for (size_t i = 1; i < results.value().size(); ++i) {
+    const reflect::PolicyResult& r = results.value()[i];
+    std::printf("%s: frame time %.2fx every-frame's, %.2fx fewer triangles per frame\n",
+                r.label.c_str(), r.medianMs / original.medianMs,
+                original.trianglesPerFrame / std::max(r.trianglesPerFrame, 1.0));
+  }
+
+  options.dtSeconds = 0.0;  // nothing moves
+  const std::vector<PolicyCase> still = {
+      {"static: when-changed", settings(UpdatePolicy::WhenChanged, 0), false},
+      {"static: reflector as plain Phong", settings(UpdatePolicy::WhenChanged, 0), true},
+      {"static: every-frame (the course)", settings(UpdatePolicy::EveryFrame, 0), false},
+  };
+  auto stillResults = reflect::benchPolicies(factory, still, options);
+  if (!stillResults) return fail(stillResults.error());
+  std::printf("\nstatic (time stopped):\n%s\n",
+              reflect::formatPolicyTable(stillResults.value()).c_str());
+  std::printf("static when-changed: frame time %.3fx the plain-Phong scene's\n",
+              stillResults.value()[0].medianMs / stillResults.value()[1].medianMs);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  reflect::Result<reflect::CliOptions> parsed =
-      reflect::parseCli(std::vector<std::string>(argv + 1, argv + argc));
+  auto parsed = reflect::parseCli(std::vector<std::string>(argv + 1, argv + argc));
   if (!parsed) return fail(parsed.error());
-  const reflect::CliOptions& o = parsed.value();
+  const CliOptions& o = parsed.value();
   if (o.command == "help") {
     std::fputs(reflect::cliHelp(), stdout);
     return 0;
   }
-
-  reflect::Demo demo(reflect::makeDynamicReflectionScene());
-  demo.setCubeFaceSize(o.cubeSize);
-  demo.camera().setAngles(o.yawDeg, o.pitchDeg);
-  std::string error = reflect::loadSceneModels(demo, o.assets);
-  if (!error.empty()) return fail(error);
-
   auto context = reflect::HeadlessGlContext::create();
   if (!context) return fail(context.error());
-  error = demo.initGraphics();
-  if (!error.empty()) return fail(error);
-  if (o.command == "bench") std::printf("GL: %s\n", context.value()->description().c_str());
-  return o.command == "render" ? runRender(demo, o) : runBench(demo, o);
+  if (o.command == "render") return runRender(o);
+  std::printf("GL: %s\n", context.value()->description().c_str());
+  return o.policySet ? runSingleBench(o) : runPolicyBench(o);
 }

@@ -1,0 +1,70 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/mesh_chunks.h"
+
+namespace reflect {
+namespace {
+
+// A strip of n separate triangles along x.
+MeshData strip(int n) {
+  MeshData mesh;
+  for (int i = 0; i < n; ++i) {
+    const float x = static_cast<float>(i);
+    for (glm::vec3 p : {glm::vec3(x, 0, 0), glm::vec3(x + 0.5f, 0, 0), glm::vec3(x, 1, 0)}) {
+      mesh.indices.push_back(static_cast<uint32_t>(mesh.vertices.size()));
+      mesh.vertices.push_back({p, {0, 0, 1}});
+    }
+  }
+  std::reverse(mesh.indices.begin(), mesh.indices.end());  // scrambled order to start with
+  mesh.bounds = computeBounds(mesh.vertices);
+  return mesh;
+}
+
+TEST(MeshChunks, CoverEveryTriangleOnceInBoundedContiguousPieces) {
+  MeshData mesh = strip(1000);
+  std::vector<uint32_t> before = mesh.indices;
+  chunkMesh(mesh, 100);
+  ASSERT_GE(mesh.chunks.size(), 10u);
+  uint32_t next = 0;
+  for (const MeshChunk& c : mesh.chunks) {
+    EXPECT_EQ(c.range.first, next);
+    EXPECT_LE(c.range.count, 300u);
+    EXPECT_GT(c.range.count, 0u);
+    next += c.range.count;
+    for (uint32_t i = c.range.first; i < c.range.first + c.range.count; ++i) {
+      const glm::vec3 p = mesh.vertices[mesh.indices[i]].position;
+      EXPECT_TRUE(glm::all(glm::greaterThanEqual(p, c.bounds.min)) &&
+                  glm::all(glm::lessThanEqual(p, c.bounds.max)));
+    }
+  }
+  EXPECT_EQ(next, mesh.indices.size());
+  // The same triangles, only reordered (each triangle's corners kept together and in order).
+  std::vector<uint32_t> after = mesh.indices;
+  std::sort(before.begin(), before.end());
+  std::sort(after.begin(), after.end());
+  EXPECT_EQ(before, after);
+  for (size_t t = 0; t < mesh.indices.size(); t += 3) {
+    EXPECT_EQ(mesh.indices[t] / 3, mesh.indices[t + 1] / 3);
+  }
+  // Spatial: a chunk of 100 triangles of this strip spans about 100 units of x, not 1000.
+  for (const MeshChunk& c : mesh.chunks) EXPECT_LT(c.bounds.max.x - c.bounds.min.x, 130.0f);
+}
+
+TEST(MeshChunks, SmallMeshIsOneChunkAndRangesMerge) {
+  MeshData mesh = strip(5);
+  chunkMesh(mesh);
+  ASSERT_EQ(mesh.chunks.size(), 1u);
+  EXPECT_EQ(mesh.chunks[0].range.count, 15u);
+  std::vector<IndexRange> ranges;
+  appendRange(ranges, {0, 3});
+  appendRange(ranges, {3, 6});
+  appendRange(ranges, {12, 3});
+  ASSERT_EQ(ranges.size(), 2u);
+  EXPECT_EQ(ranges[0].count, 9u);
+  EXPECT_EQ(ranges[1].first, 12u);
+}
+
+}  // namespace
+}  // namespace reflect
