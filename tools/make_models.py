@@ -294,7 +294,17 @@ def _disc(part, y, radius, segs, up):
         part.faces.append((centre, a, b) if up else (centre, b, a))
 
 
+# Tessellation multiplier: 1 for the shipped models; --heavy raises it to write a figure with the
+# triangle count of the course's mario.obj (about 145k) for benchmarks.
+DETAIL = 1.0
+
+
+def _fine(n, minimum=3):
+    return max(minimum, int(round(n * DETAIL)))
+
+
 def unit_sphere(segs, rings):
+    segs, rings = _fine(segs), _fine(rings, 2)
     part = Part()
     _rows_surface(part, [(math.pi * i / rings, 0.0) for i in range(rings + 1)], segs)
     return part
@@ -302,6 +312,7 @@ def unit_sphere(segs, rings):
 
 def unit_dome(segs, rings):
     """Upper hemisphere (y >= 0) closed by a flat disc at y = 0."""
+    segs, rings = _fine(segs), _fine(rings, 1)
     part = Part()
     _rows_surface(part, [(0.5 * math.pi * i / rings, 0.0) for i in range(rings + 1)], segs)
     _disc(part, 0.0, 1.0, segs, up=False)
@@ -310,6 +321,7 @@ def unit_dome(segs, rings):
 
 def unit_capsule(half_len, segs, rings):
     """Radius-1 capsule along Y with hemisphere centres at y = 0 and y = 2*half_len."""
+    segs, rings = _fine(segs), _fine(rings, 2)
     half = rings // 2
     rows = [(0.5 * math.pi * i / half, 2.0 * half_len) for i in range(half + 1)]
     rows += [(0.5 * math.pi + 0.5 * math.pi * i / half, 0.0) for i in range(half + 1)]
@@ -320,6 +332,7 @@ def unit_capsule(half_len, segs, rings):
 
 def unit_frustum(r0, r1, segs, caps=True):
     """Cylinder / cone frustum along Y from y=0 (radius r0) to y=1 (radius r1)."""
+    segs = _fine(segs)
     part = Part()
     slope = r0 - r1
     rows = []
@@ -425,6 +438,7 @@ def on_ellipsoid(centre, radii, s, alpha_deg, inflate=1.0):
 
 def ellipsoid_patch(centre, radii, s_range, a_range, ns, na, inflate=1.03):
     """Open surface patch hugging an ellipsoid (used for the overall bib and straps)."""
+    ns, na = _fine(ns, 1), _fine(na, 1)
     part = Part()
     grid = []
     for i in range(ns + 1):
@@ -1101,7 +1115,19 @@ def main(argv=None):
     ap.add_argument("--preview-size", type=int, default=256, help="tile size of the previews in pixels")
     ap.add_argument("--fixtures", nargs="?", const=os.path.join(REPO_ROOT, "tests", "data", "obj"),
                     metavar="DIR", help="write OBJ loader test fixtures only (default dir: tests/data/obj)")
+    ap.add_argument("--heavy", nargs="?", const=os.path.join(REPO_ROOT, "build", "heavy"), metavar="DIR",
+                    help="write only mario.obj, tessellated to about the course model's 145k triangles, "
+                         "into DIR (default build/heavy) for benchmarks")
     args = ap.parse_args(argv)
+
+    if args.heavy:
+        global DETAIL
+        DETAIL = 4.6
+        os.makedirs(args.heavy, exist_ok=True)
+        model, _ = build_mario()
+        nv, nt = write_obj(model, os.path.join(args.heavy, "mario.obj"))
+        print("heavy mario.obj: vertices %d, triangles %d -> %s" % (nv, nt, args.heavy))
+        return 0
 
     if args.fixtures:
         write_fixtures(args.fixtures)

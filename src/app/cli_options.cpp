@@ -54,6 +54,8 @@ const char* cliHelp() {
          "  --pitch D        camera pitch in degrees, clamped to +/-89 (default 0)\n"
          "  --frames N       bench: frames to time (default 120)\n"
          "  --warmup N       bench: frames before timing (default 10)\n"
+         "  --growth         bench: frame ms for 1/4/16 reflectors x 10k/100k/1M triangles,\n"
+         "                   with a probe each and with neighbours sharing probes\n"
          "  --accuracy-frames N  bench: frames compared with every-frame (default 60)\n"
          "  --policy P       capture update policy: every-frame (the course), when-changed\n"
          "                   (default), time-sliced, every-n\n"
@@ -77,6 +79,10 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
     const std::string& flag = args[i];
     if (flag == "--help" || flag == "-h") {
       o.command = "help";
+      continue;
+    }
+    if (flag == "--growth") {
+      o.growth = true;
       continue;
     }
     if (i + 1 >= args.size()) return Out::failure(flag + ": missing value");

@@ -24,7 +24,8 @@ struct CliOptions {
   // Capture planning. `policySet`: bench times just this policy instead of comparing them all.
   PlannerSettings planner;
   bool policySet = false;
-  int accuracyFrames = 60;  // bench: frames compared against the every-frame policy
+  int accuracyFrames = 60;
+  bool growth = false;  // bench: frame time against reflectors and triangles  // bench: frames compared against the every-frame policy
 };
 
 Result<CliOptions> parseCli(const std::vector<std::string>& args);

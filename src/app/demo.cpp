@@ -29,6 +29,10 @@ std::string Demo::loadMeshText(const std::string& name, const std::string& text,
   return adopt(name, parseObj(text, source));
 }
 
+std::string Demo::setMeshData(const std::string& name, MeshData mesh) {
+  return adopt(name, Result<MeshData>(std::move(mesh)));
+}
+
 std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   if (!mesh) return mesh.error();
   std::vector<MeshData> levels;
@@ -127,6 +131,7 @@ std::vector<PlannedObject> Demo::plannedObjects(double orbitDegrees) const {
     p.model = scene_.modelMatrix(object, orbitDegrees);
     p.colour = object.colour;
     p.reflective = object.reflective;
+    p.probeGroup = object.probeGroup;
     planned.push_back(p);
   }
   return planned;

@@ -28,6 +28,8 @@ class Demo {
   // The same for OBJ text already in memory (the page fetches files); `source` names it in messages.
   std::string loadMeshText(const std::string& name, const std::string& text,
                            const std::string& source);
+  // A mesh made in memory (generated scenes); levels of detail and chunks are built as for files.
+  std::string setMeshData(const std::string& name, MeshData mesh);
   // Every scene mesh from `directory`, by file name. Returns "" or the first failure's message.
   std::string loadMeshesFrom(const std::string& directory);
   bool hasAllMeshes() const;

@@ -26,6 +26,7 @@ Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, i
     result.captureMs.push_back(s.captureMs);
     result.trianglesPerFrame = s.triangles();
     result.drawCallsPerFrame = s.drawCalls();
+    result.facesPerFrame += s.facesCaptured / static_cast<double>(frames);
   }
   return result;
 }

@@ -19,8 +19,41 @@ bool contains(const std::vector<int>& list, int value) {
   return std::find(list.begin(), list.end(), value) != list.end();
 }
 
-glm::vec3 probeCentreOf(const PlannedObject& reflector) {
-  return glm::vec3(reflector.model * glm::vec4(reflector.localBounds.centre(), 1.0f));
+// The centre of the members' joint world bounds (for one member: its own bounds' centre).
+glm::vec3 probeCentreOf(const std::vector<PlannedObject>& objects, const std::vector<int>& members) {
+  if (members.size() == 1) {
+    const PlannedObject& o = objects[static_cast<size_t>(members[0])];
+    return glm::vec3(o.model * glm::vec4(o.localBounds.centre(), 1.0f));
+  }
+  Bounds joint;
+  for (size_t k = 0; k < members.size(); ++k) {
+    const PlannedObject& o = objects[static_cast<size_t>(members[k])];
+    const Bounds b = transformBounds(o.localBounds, o.model);
+    joint = k == 0 ? b : Bounds{glm::min(joint.min, b.min), glm::max(joint.max, b.max)};
+  }
+  return joint.centre();
+}
+
+// Probes in object order: one per ungrouped reflector, one per group (owned by its first member).
+std::vector<std::vector<int>> probeMembers(const std::vector<PlannedObject>& objects) {
+  std::vector<std::vector<int>> probes;
+  for (size_t r = 0; r < objects.size(); ++r) {
+    if (!objects[r].reflective) continue;
+    const int group = objects[r].probeGroup;
+    bool joined = false;
+    if (group >= 0) {
+      for (std::vector<int>& members : probes) {
+        const PlannedObject& owner = objects[static_cast<size_t>(members[0])];
+        if (owner.probeGroup == group) {
+          members.push_back(static_cast<int>(r));
+          joined = true;
+          break;
+        }
+      }
+    }
+    if (!joined) probes.push_back({static_cast<int>(r)});
+  }
+  return probes;
 }
 
 }  // namespace
@@ -108,14 +141,15 @@ int chooseLevel(const PlannedObject& o, const glm::vec3& centre, int faceSize,
 }  // namespace
 
 std::vector<DrawItem> FramePlanner::drawsFor(const std::vector<PlannedObject>& objects,
-                                             int reflector, const glm::vec3& centre, int face,
+                                             const std::vector<int>& members,
+                                             const glm::vec3& centre, int face,
                                              const CaptureContext& context,
                                              const PlannerSettings& settings) const {
   std::vector<DrawItem> draws;
   const bool original = settings.policy == UpdatePolicy::EveryFrame;
   for (size_t i = 0; i < objects.size(); ++i) {
-    // The probe's own reflector is left out by identity: it surrounds the capture point.
-    if (static_cast<int>(i) == reflector) continue;
+    // The probe's own reflectors are left out by identity: they surround the capture point.
+    if (contains(members, static_cast<int>(i))) continue;
     const PlannedObject& o = objects[i];
     DrawItem item{static_cast<int>(i), 0, {}, 0};
     if (!o.levels.empty()) item.triangles = o.levels[0].triangles;
@@ -188,9 +222,8 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   trackChanges(objects);
   FramePlan plan;
   std::vector<int> recapturedForRealChange;
-  for (size_t r = 0; r < objects.size(); ++r) {
-    if (!objects[r].reflective) continue;
-    const int reflector = static_cast<int>(r);
+  for (const std::vector<int>& members : probeMembers(objects)) {
+    const int reflector = members.front();
     auto memoryIt = std::find_if(probes_.begin(), probes_.end(),
                                  [&](const ProbeMemory& m) { return m.reflector == reflector; });
     if (memoryIt == probes_.end()) {
@@ -199,7 +232,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       memoryIt->reflector = reflector;
     }
     ProbeMemory& memory = *memoryIt;
-    ProbePlan probe{reflector, probeCentreOf(objects[r]), {}};
+    ProbePlan probe{reflector, members, probeCentreOf(objects, members), {}};
     // The probe moved or a capture option changed: no face is valid any more.
     if (probe.centre != memory.centre || !(context == memory.context)) {
       for (FaceMemory& f : memory.faces) f.captured = false;
@@ -212,7 +245,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
     std::vector<int> stale;  // faces that need a redraw, in face order
     for (int face = 0; face < 6; ++face) {
       const size_t f = static_cast<size_t>(face);
-      draws[f] = drawsFor(objects, reflector, probe.centre, face, context, settings);
+      draws[f] = drawsFor(objects, members, probe.centre, face, context, settings);
       std::vector<int> visible;
       for (const DrawItem& d : draws[f]) visible.push_back(d.object);
       staleness[f] = settings.policy == UpdatePolicy::EveryFrame
@@ -234,7 +267,9 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       m.contentVersions = contentVersions_;
       probe.faces.push_back(FacePlan{face, std::move(draws[f])});
     }
-    if (capturedReal) recapturedForRealChange.push_back(reflector);
+    if (capturedReal) {
+      recapturedForRealChange.insert(recapturedForRealChange.end(), members.begin(), members.end());
+    }
     plan.probes.push_back(std::move(probe));
   }
   // Mirrors whose cube changed look different from the next frame on.

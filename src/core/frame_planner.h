@@ -49,6 +49,9 @@ struct PlannedObject {
   glm::vec3 colour{1.0f};
   uint32_t meshRevision = 0;  // bumped when the object's mesh is replaced
   bool reflective = false;
+  // Reflectors with the same group >= 0 share one probe at the centre of their joint bounds
+  // (cheaper, less exact: they do not see each other); -1 = a probe of its own.
+  int probeGroup = -1;
   std::vector<PlannedLevel> levels;  // 0 = full detail; empty: one level, no chunks
 };
 
@@ -78,7 +81,8 @@ struct FacePlan {
 };
 
 struct ProbePlan {
-  int reflector = 0;  // index of the reflective object that owns the probe
+  int reflector = 0;         // index of the reflective object that owns the probe
+  std::vector<int> members;  // every reflector that samples it (the owner first)
   glm::vec3 centre{0.0f};
   std::vector<FacePlan> faces;  // only the faces to redraw this frame
 };
@@ -116,7 +120,8 @@ class FramePlanner {
                                ProbeMemory& memory) const;
   Staleness faceStaleness(const ProbeMemory& probe, int face, const std::vector<int>& visibleNow) const;
   void trackChanges(const std::vector<PlannedObject>& objects);
-  std::vector<DrawItem> drawsFor(const std::vector<PlannedObject>& objects, int reflector,
+  std::vector<DrawItem> drawsFor(const std::vector<PlannedObject>& objects,
+                                 const std::vector<int>& members,
                                  const glm::vec3& centre, int face, const CaptureContext& context,
                                  const PlannerSettings& settings) const;
 

@@ -29,6 +29,8 @@ struct SceneObject {
   // Reflective shading: reflectionWeight * env + baseWeight * colour (the course: 0.78 and 0.3).
   float reflectionWeight = 0.78f;
   float baseWeight = 0.3f;
+  // Reflectors with the same group >= 0 share one probe (see PlannedObject::probeGroup).
+  int probeGroup = -1;
 };
 
 struct CaptureSettings {

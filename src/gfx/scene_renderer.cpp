@@ -66,7 +66,8 @@ const MeshBuffer* SceneRenderer::mesh(const std::string& name, int lod) const {
 }
 
 GLuint SceneRenderer::environmentTexture(int reflector) const {
-  auto it = probes_.find(reflector);
+  auto owner = ownerOf_.find(reflector);
+  auto it = probes_.find(owner == ownerOf_.end() ? reflector : owner->second);
   return it == probes_.end() ? 0 : it->second.texture();
 }
 
@@ -117,6 +118,10 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double orbitDegree
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   const glm::mat4 projection = cubeFaceProjection(scene.capture.near, scene.capture.far);
+  ownerOf_.clear();
+  for (const ProbePlan& probe : plan.probes) {
+    for (int member : probe.members) ownerOf_[member] = probe.reflector;
+  }
   for (const ProbePlan& probe : plan.probes) {
     if (probe.faces.empty()) continue;
     auto target = probes_.find(probe.reflector);
@@ -185,6 +190,7 @@ void SceneRenderer::abandon() {
   mirror_.program.abandon();
   for (auto& [index, target] : probes_) target.abandon();
   probes_.clear();
+  ownerOf_.clear();
   for (auto& [name, levels] : meshes_) {
     for (MeshBuffer& level : levels) level.abandon();
   }

@@ -49,7 +49,7 @@ class SceneRenderer {
   PassCounts drawMain(const Scene& scene, double orbitDegrees, const ViewParams& camera,
                       unsigned framebuffer, int width, int height);
 
-  // The live cube map of the probe owned by object `reflector` (0 if none yet).
+  // The live cube map that reflective object `reflector` samples (0 if none yet).
   GLuint environmentTexture(int reflector) const;
   // After a lost context: drop every GL name without deleting (the context took them).
   void abandon();
@@ -75,7 +75,8 @@ class SceneRenderer {
 
   PhongProgram phong_;
   MirrorProgram mirror_;
-  std::map<int, CubeCaptureTarget> probes_;  // by reflector object index
+  std::map<int, CubeCaptureTarget> probes_;  // by owning reflector's object index
+  std::map<int, int> ownerOf_;                // reflector -> owner of the probe it samples
   std::map<std::string, std::vector<MeshBuffer>> meshes_;
 };
 

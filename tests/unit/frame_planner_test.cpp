@@ -145,6 +145,21 @@ TEST(FramePlanner, TwoMirrorsSettleAfterOneBounce) {
   EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 0);
 }
 
+TEST(FramePlanner, NeighboursCanShareOneProbe) {
+  PlannedObject a = mirrorAt({-1, 0, 0}), b = mirrorAt({1, 0, 0}), c = mirrorAt({0, 0, 9});
+  a.probeGroup = b.probeGroup = 3;
+  FramePlanner planner;
+  const FramePlan plan = planner.plan({a, b, c, boxAt({0, 0, -6})}, {}, {});
+  ASSERT_EQ(plan.probes.size(), 2u);
+  EXPECT_EQ(plan.probes[0].reflector, 0);
+  EXPECT_EQ(plan.probes[0].members, (std::vector<int>{0, 1}));
+  EXPECT_EQ(plan.probes[0].centre, glm::vec3(0, 0, 0));  // centre of the joint bounds
+  EXPECT_EQ(plan.probes[1].members, (std::vector<int>{2}));
+  for (const FacePlan& f : plan.probes[0].faces) {
+    for (const DrawItem& d : f.draws) EXPECT_TRUE(d.object == 2 || d.object == 3);
+  }
+}
+
 TEST(FramePlanner, EveryFramePolicyIsTheCourseScheme) {
   FramePlanner planner;
   PlannerSettings original;

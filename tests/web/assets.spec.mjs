@@ -16,7 +16,7 @@ const real = (name) => readFileSync(MODELS + name);
 // 'abort' a failed connection.
 async function serveCourse(page, files) {
   const requested = [];
-  await page.route('**/course/*', (route) => {
+  await page.route((url) => url.pathname.startsWith('/course/'), (route) => {
     const name = new URL(route.request().url()).pathname.split('/').pop();
     requested.push(name);
     const file = files[name];

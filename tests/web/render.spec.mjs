@@ -102,3 +102,25 @@ test.describe('at devicePixelRatio 2', () => {
     expect(size).toMatchObject({ width: 1000, height: 800, clientWidth: 500, clientHeight: 400, dpr: 2 });
   });
 });
+
+test('after a lost and restored WebGL context the same picture comes back', async ({ page }) => {
+  await openDemo(page, '?paused');
+  const before = await renderAndRead(page, 1.5);
+  await page.evaluate(() => {
+    window.__loseContext = document.getElementById('canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
+    window.__loseContext.loseContext();
+  });
+  await expect(page.locator('#messages .message', { hasText: 'WebGL context lost' })).toBeVisible();
+  // While lost, a frame draws nothing and does not throw.
+  expect((await page.evaluate(() => window.demo.frame(0))).drawCalls).toBe(0);
+  await page.evaluate(() => window.__loseContext.restoreContext());
+  await expect(page.locator('#messages .message', { hasText: 'WebGL context restored' })).toBeVisible();
+  const after = await renderAndRead(page, 1.5);
+  expect(after.stats.drawCalls).toBeGreaterThan(0);
+  let differ = 0;
+  for (let i = 0; i < after.data.length; i += 4) {
+    if (Math.abs(after.data[i] - before.data[i]) + Math.abs(after.data[i + 1] - before.data[i + 1]) +
+        Math.abs(after.data[i + 2] - before.data[i + 2]) > 6) ++differ;
+  }
+  expect(differ, 'pixels that differ from the picture before the loss').toBe(0);
+});

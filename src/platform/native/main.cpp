@@ -6,6 +6,7 @@
 
 #include "app/cli_options.h"
 #include "app/demo.h"
+#include "app/growth_bench.h"
 #include "app/headless_frames.h"
 #include "app/policy_bench.h"
 #include "core/image.h"
@@ -142,5 +143,15 @@ int main(int argc, char** argv) {
   if (!context) return fail(context.error());
   if (o.command == "render") return runRender(o);
   std::printf("GL: %s\n", context.value()->description().c_str());
+  if (o.growth) {
+    reflect::GrowthOptions options;
+    options.width = o.width;
+    options.height = o.height;
+    auto tables = reflect::runGrowthBench(reflect::builtInModelDirectory(), options);
+    if (!tables) return fail(tables.error());
+    std::printf("growth: policy when-changed, figures orbiting, %dx%d, cube %d\n%s", o.width,
+                o.height, 256, tables.value().c_str());
+    return 0;
+  }
   return o.policySet ? runSingleBench(o) : runPolicyBench(o);
 }

@@ -4,10 +4,13 @@
 #include <emscripten/html5.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/demo.h"
+#include "core/mesh_lod.h"
 #include "gfx/gl.h"
 
 namespace {
@@ -96,6 +99,62 @@ EMSCRIPTEN_KEEPALIVE const char* rf_frame(double dtSeconds, int waitForGpu) {
 }
 
 EMSCRIPTEN_KEEPALIVE void rf_set_time(double seconds) { gDemo->clock().set(seconds); }
+
+// Capture planning: policy by name ("every-frame", "when-changed", "time-sliced", "every-n"),
+// faces per frame for time-sliced, N for every-n, LOD triangles per pixel (0 = off).
+// Returns "" or an error for an unknown policy.
+EMSCRIPTEN_KEEPALIVE const char* rf_set_planner(const char* policy, int facesPerFrame, int everyN,
+                                                double lodTrianglesPerPixel) {
+  reflect::PlannerSettings settings = gDemo->plannerSettings();
+  if (!reflect::parsePolicy(policy, &settings.policy)) {
+    return returnText(std::string("unknown update policy '") + policy + "'");
+  }
+  settings.facesPerFrame = facesPerFrame;
+  settings.everyN = everyN;
+  settings.lodTrianglesPerPixel = static_cast<float>(lodTrianglesPerPixel);
+  gDemo->setPlannerSettings(settings);
+  return returnText("");
+}
+
+// {"policy":..., "maxStalenessFrames":...}
+EMSCRIPTEN_KEEPALIVE const char* rf_planner_json() {
+  const reflect::PlannerSettings& s = gDemo->plannerSettings();
+  char buffer[200];
+  std::snprintf(buffer, sizeof buffer,
+                "{\"policy\":\"%s\",\"facesPerFrame\":%d,\"everyN\":%d,\"lod\":%g,"
+                "\"maxStalenessFrames\":%d}",
+                reflect::policyName(s.policy), s.facesPerFrame, s.everyN, s.lodTrianglesPerPixel,
+                s.maxStalenessFrames());
+  return returnText(buffer);
+}
+
+// Level 0 of mesh `name` for the page's simplifier: vertex array (6 floats a vertex, position
+// first) and index array. Pointers into wasm memory, valid until the mesh changes.
+EMSCRIPTEN_KEEPALIVE const void* rf_mesh_vertices(const char* name, int* count) {
+  const reflect::MeshData* mesh = gDemo->meshLevel(name, 0);
+  *count = mesh ? static_cast<int>(mesh->vertices.size()) : 0;
+  return mesh ? mesh->vertices.data() : nullptr;
+}
+EMSCRIPTEN_KEEPALIVE const void* rf_mesh_indices(const char* name, int* count) {
+  const reflect::MeshData* mesh = gDemo->meshLevel(name, 0);
+  *count = mesh ? static_cast<int>(mesh->indices.size()) : 0;
+  return mesh ? mesh->indices.data() : nullptr;
+}
+// How the page should build levels of detail (the same settings the native build uses).
+EMSCRIPTEN_KEEPALIVE const char* rf_lod_settings_json() {
+  const reflect::LodSettings s;
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer,
+                "{\"maxLevels\":%d,\"triangleRatio\":%g,\"targetError\":%g,\"minTriangles\":%zu}",
+                s.maxLevels, s.triangleRatio, s.targetError, s.minTriangles);
+  return returnText(buffer);
+}
+
+// The next level of detail of `name` as indices into its level-0 vertices.
+EMSCRIPTEN_KEEPALIVE const char* rf_add_lod(const char* name, const uint32_t* indices, int count) {
+  return returnText(gDemo->addLodLevel(
+      name, std::vector<uint32_t>(indices, indices + std::max(count, 0))));
+}
 EMSCRIPTEN_KEEPALIVE void rf_drag(float dx, float dy, float canvasHeight) {
   gDemo->camera().drag(dx, dy, canvasHeight);
 }
