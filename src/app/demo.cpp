@@ -100,6 +100,7 @@ std::string Demo::initGraphics() {
   Result<SceneRenderer> renderer = SceneRenderer::create();
   if (!renderer) return renderer.error();
   renderer_ = std::make_unique<SceneRenderer>(renderer.take());
+  gpuTimer_ = std::make_unique<GpuTimer>();
   for (const auto& [name, levels] : meshes_) {
     for (size_t lod = 0; lod < levels.size(); ++lod) {
       renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
@@ -111,6 +112,8 @@ std::string Demo::initGraphics() {
 void Demo::loseGraphics() {
   if (renderer_) renderer_->abandon();
   renderer_.reset();
+  if (gpuTimer_) gpuTimer_->abandon();
+  gpuTimer_.reset();
   planner_.invalidate();
 }
 
@@ -153,8 +156,10 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                                scene_.capture.far, optionsRevision_};
   const FramePlan plan = planner_.plan(plannedObjects(stats_.orbitDegrees), context,
                                        plannerSettings_);
+  gpuTimer_->begin(GpuTimer::kCapture);
   Result<PassCounts> capture =
       renderer_->capture(scene_, stats_.orbitDegrees, plan, camera_.eye());
+  gpuTimer_->end();
   if (!capture) {
     std::fprintf(stderr, "capture failed: %s\n", capture.error().c_str());
     planner_.invalidate();  // nothing it planned was drawn
@@ -170,10 +175,17 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   const ViewParams view{camera_.view(),
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
+  gpuTimer_->begin(GpuTimer::kMain);
   const PassCounts main =
       renderer_->drawMain(scene_, stats_.orbitDegrees, view, framebuffer, width, height);
+  gpuTimer_->end();
+  gpuTimer_->endFrame();
   if (waitForGpu) reflect::waitForGpu();
   stats_.frameMs = millisecondsSince(start);
+  if (gpuTimer_->lastMs(GpuTimer::kCapture) && gpuTimer_->lastMs(GpuTimer::kMain)) {
+    stats_.gpuCaptureMs = *gpuTimer_->lastMs(GpuTimer::kCapture);
+    stats_.gpuFrameMs = stats_.gpuCaptureMs + *gpuTimer_->lastMs(GpuTimer::kMain);
+  }
   stats_.mainDrawCalls = main.drawCalls;
   stats_.mainTriangles = main.triangles;
   return stats_;

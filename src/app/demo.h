@@ -14,6 +14,7 @@
 #include "core/frame_planner.h"
 #include "core/mesh_data.h"
 #include "core/scene.h"
+#include "gfx/gpu_timer.h"
 #include "gfx/scene_renderer.h"
 
 namespace reflect {
@@ -73,6 +74,7 @@ class Demo {
   PlannerSettings plannerSettings_;
   uint32_t optionsRevision_ = 0;
   std::unique_ptr<SceneRenderer> renderer_;
+  std::unique_ptr<GpuTimer> gpuTimer_;
   FrameStats stats_;
 };
 

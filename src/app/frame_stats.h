@@ -12,6 +12,9 @@ struct FrameStats {
   // "gpu-finish": times wait for the GPU to finish, so they are what the frame took end to end.
   // "cpu-submit": the display loop does not wait for the GPU; times are command submission only.
   const char* timing = "cpu-submit";
+  // From GPU timer queries where the extension exists (a frame or two late); -1 where it does not.
+  double gpuFrameMs = -1;
+  double gpuCaptureMs = -1;
   const char* policy = "when-changed";
   int probes = 0;
   int facesCaptured = 0;

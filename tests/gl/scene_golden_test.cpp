@@ -60,6 +60,20 @@ TEST(DefaultScene, FrameStatsCountTheWork) {
   EXPECT_DOUBLE_EQ(s.orbitDegrees, 27.0);
 }
 
+TEST(DefaultScene, GpuTimerQueriesReportPassTimesNatively) {
+  // Mesa offers GL_EXT_disjoint_timer_query; results arrive a few frames late.
+  auto demo = testing::makeDemo(makeDynamicReflectionScene());
+  FrameStats last;
+  for (int i = 0; i < 8; ++i) {
+    auto image = renderFrameAt(*demo, 0.1 * i, 64, 64);
+    ASSERT_TRUE(image);
+    last = demo->lastStats();
+  }
+  EXPECT_GT(last.gpuFrameMs, 0.0);
+  EXPECT_GE(last.gpuFrameMs, last.gpuCaptureMs);
+  EXPECT_GT(last.gpuCaptureMs, 0.0);  // time 0.1 s steps move the figures: faces are redrawn
+}
+
 // Where on screen the mirror shows direction `toward` (from the sphere centre): the sphere point
 // whose normal halves the angle between the eye and that direction.
 glm::ivec2 reflectionPixel(const glm::vec3& toward, const LookCamera& camera) {
