@@ -1,4 +1,5 @@
-// Every mesh: world-space position and normal for per-fragment lighting.
+// Every mesh: world-space position and normal for per-fragment lighting, and the object-space
+// position for Ex12-1's cube-textured material.
 // (#version and precision are prepended by ShaderProgram.)
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -9,10 +10,12 @@ uniform mat3 u_normalMatrix;  // inverse-transpose of u_model's upper 3x3
 
 out vec3 v_worldPosition;
 out vec3 v_worldNormal;
+out vec3 v_objectPosition;
 
 void main() {
   vec4 world = u_model * vec4(a_position, 1.0);
   v_worldPosition = world.xyz;
   v_worldNormal = u_normalMatrix * a_normal;
+  v_objectPosition = a_position;
   gl_Position = u_viewProjection * world;
 }

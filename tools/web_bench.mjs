@@ -135,7 +135,7 @@ async function main() {
         const wallMs = performance.now() - start;
         out.push({ wallMs, frameMs: s.frameMs, captureMs: s.captureMs, triangles: s.triangles,
                    drawCalls: s.drawCalls, facesCaptured: s.facesCaptured, cubeFaceSize: s.cubeFaceSize,
-                   timing: s.timing, policy: s.policy });
+                   timing: s.timing, policy: s.policy, gpuFrameMs: s.gpuFrameMs, gpuCaptureMs: s.gpuCaptureMs });
       }
       return out;
     }, { warmup: options.warmup, count: options.frames });
@@ -159,6 +159,14 @@ async function main() {
     console.log(row('capture ms (page)', frames.map((f) => f.captureMs)));
     console.log(row('main pass ms (page)', frames.map((f) => f.frameMs - f.captureMs)));
     console.log(row('wall ms per call', frames.map((f) => f.wallMs)));
+    // GPU timer queries (EXT_disjoint_timer_query), where the page reports them (-1: unavailable).
+    const gpu = frames.filter((f) => f.gpuFrameMs >= 0);
+    if (gpu.length) {
+      console.log(row('gpu frame ms', gpu.map((f) => f.gpuFrameMs)));
+      console.log(row('gpu capture ms', gpu.filter((f) => f.gpuCaptureMs >= 0).map((f) => f.gpuCaptureMs)));
+    } else if (frames.some((f) => f.gpuFrameMs !== undefined)) {
+      console.log('gpu timer queries:    not available in this browser');
+    }
     console.log('');
     console.log(`triangles/frame: ${distinct(frames.map((f) => f.triangles))}`);
     console.log(`draw calls/frame: ${distinct(frames.map((f) => f.drawCalls))}`);

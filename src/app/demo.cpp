@@ -91,7 +91,7 @@ void Demo::setCubeFaceSize(int size) { scene_.capture.faceSize = size; }
 
 unsigned Demo::environmentTexture() const {
   const int reflector = scene_.reflectorIndex();
-  return renderer_ && reflector >= 0 ? renderer_->environmentTexture(reflector) : 0;
+  return renderer_ && reflector >= 0 ? renderer_->environmentTexture(scene_, reflector) : 0;
 }
 
 std::string Demo::initGraphics() {
@@ -117,7 +117,7 @@ void Demo::loseGraphics() {
   planner_.invalidate();
 }
 
-std::vector<PlannedObject> Demo::plannedObjects(double orbitDegrees) const {
+std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
   std::vector<PlannedObject> planned;
   planned.reserve(scene_.objects.size());
   for (const SceneObject& object : scene_.objects) {
@@ -131,9 +131,9 @@ std::vector<PlannedObject> Demo::plannedObjects(double orbitDegrees) const {
     }
     auto revision = meshRevisions_.find(object.mesh);
     p.meshRevision = revision == meshRevisions_.end() ? 0 : revision->second;
-    p.model = scene_.modelMatrix(object, orbitDegrees);
+    p.model = scene_.modelMatrix(object, seconds);
     p.colour = object.colour;
-    p.reflective = object.reflective;
+    p.probed = object.needsLiveProbe();
     p.probeGroup = object.probeGroup;
     planned.push_back(p);
   }
@@ -154,11 +154,11 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   const auto start = std::chrono::steady_clock::now();
   const CaptureContext context{camera_.eye(), scene_.capture.faceSize, scene_.capture.near,
                                scene_.capture.far, optionsRevision_};
-  const FramePlan plan = planner_.plan(plannedObjects(stats_.orbitDegrees), context,
+  const FramePlan plan = planner_.plan(plannedObjects(stats_.timeSeconds), context,
                                        plannerSettings_);
   gpuTimer_->begin(GpuTimer::kCapture);
   Result<PassCounts> capture =
-      renderer_->capture(scene_, stats_.orbitDegrees, plan, camera_.eye());
+      renderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
   gpuTimer_->end();
   if (!capture) {
     std::fprintf(stderr, "capture failed: %s\n", capture.error().c_str());
@@ -177,7 +177,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                         camera_.eye()};
   gpuTimer_->begin(GpuTimer::kMain);
   const PassCounts main =
-      renderer_->drawMain(scene_, stats_.orbitDegrees, view, framebuffer, width, height);
+      renderer_->drawMain(scene_, stats_.timeSeconds, view, framebuffer, width, height);
   gpuTimer_->end();
   gpuTimer_->endFrame();
   if (waitForGpu) reflect::waitForGpu();

@@ -63,7 +63,7 @@ class Demo {
 
  private:
   std::string adopt(const std::string& name, Result<MeshData> mesh);
-  std::vector<PlannedObject> plannedObjects(double orbitDegrees) const;
+  std::vector<PlannedObject> plannedObjects(double seconds) const;
 
   Scene scene_;
   std::map<std::string, std::vector<MeshData>> meshes_;  // levels of detail, 0 = as loaded

@@ -49,7 +49,7 @@ Scene growthScene(int reflectors, bool share) {
     blob.placement = glm::scale(
         glm::translate(glm::rotate(glm::mat4(1.0f), glm::radians(angle), {0, 1, 0}), {0, -0.8f, 6.0f}),
         glm::vec3(0.7f));
-    blob.orbits = true;
+    blob.motion = Motion::Orbit;
     blob.colour = i % 2 ? glm::vec3(1.0f, 0.4f, 0.4f) : glm::vec3(0.4f, 1.0f, 0.4f);
     scene.objects.push_back(blob);
   }
@@ -61,7 +61,7 @@ Scene growthScene(int reflectors, bool share) {
     const float z = (static_cast<float>(i / side) - 0.5f * static_cast<float>(side - 1)) * 1.6f;
     mirror.placement = glm::scale(glm::translate(glm::mat4(1.0f), {x, 0.0f, z}), glm::vec3(0.25f));
     mirror.colour = {0.95f, 0.85f, 0.4f};
-    mirror.reflective = true;
+    mirror.material = Material::Mirror;
     if (share) mirror.probeGroup = (i % side) / 2 + 100 * ((i / side) / 2);  // 2x2 neighbours
     scene.objects.push_back(mirror);
   }

@@ -11,7 +11,7 @@ namespace {
 
 bool sameState(const PlannedObject& a, const PlannedObject& b) {
   return a.model == b.model && a.colour == b.colour && a.meshRevision == b.meshRevision &&
-         a.reflective == b.reflective && a.localBounds.min == b.localBounds.min &&
+         a.probed == b.probed && a.localBounds.min == b.localBounds.min &&
          a.localBounds.max == b.localBounds.max;
 }
 
@@ -38,7 +38,7 @@ glm::vec3 probeCentreOf(const std::vector<PlannedObject>& objects, const std::ve
 std::vector<std::vector<int>> probeMembers(const std::vector<PlannedObject>& objects) {
   std::vector<std::vector<int>> probes;
   for (size_t r = 0; r < objects.size(); ++r) {
-    if (!objects[r].reflective) continue;
+    if (!objects[r].probed) continue;
     const int group = objects[r].probeGroup;
     bool joined = false;
     if (group >= 0) {

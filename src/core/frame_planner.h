@@ -48,8 +48,8 @@ struct PlannedObject {
   glm::mat4 model{1.0f};
   glm::vec3 colour{1.0f};
   uint32_t meshRevision = 0;  // bumped when the object's mesh is replaced
-  bool reflective = false;
-  // Reflectors with the same group >= 0 share one probe at the centre of their joint bounds
+  bool probed = false;  // samples a live probe of its own (mirror, glass, cube-textured)
+  // Probed objects with the same group >= 0 share one probe at the centre of their joint bounds
   // (cheaper, less exact: they do not see each other); -1 = a probe of its own.
   int probeGroup = -1;
   std::vector<PlannedLevel> levels;  // 0 = full detail; empty: one level, no chunks

@@ -6,8 +6,18 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <limits>
 
 namespace reflect {
+namespace {
+
+std::string decodeFailure() {
+  const char* reason = stbi_failure_reason();
+  return reason ? reason : "unknown reason";
+}
+
+}  // namespace
 
 void flipRows(RgbaImage& image) {
   const size_t rowBytes = static_cast<size_t>(image.width) * 4;
@@ -21,18 +31,53 @@ void flipRows(RgbaImage& image) {
   }
 }
 
-Result<RgbaImage> readPng(const std::string& path) {
+Result<RgbaImage> decodeImage(const uint8_t* data, size_t size, const std::string& name,
+                              int maxDimension) {
+  if (size == 0) return Result<RgbaImage>::failure(name + ": cannot read image (empty file)");
+  if (size > static_cast<size_t>(std::numeric_limits<int>::max())) {
+    return Result<RgbaImage>::failure(name + ": cannot read image (file of " +
+                                      std::to_string(size) + " bytes is too large)");
+  }
+  const int length = static_cast<int>(size);
   int w = 0, h = 0, channels = 0;
-  stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (!data) {
-    return Result<RgbaImage>::failure(path + ": cannot read image (" + stbi_failure_reason() + ")");
+  // The header first: a huge image is rejected before its pixels are allocated.
+  if (!stbi_info_from_memory(data, length, &w, &h, &channels)) {
+    return Result<RgbaImage>::failure(name + ": cannot read image (" + decodeFailure() + ")");
+  }
+  if (w < 1 || h < 1 || w > maxDimension || h > maxDimension) {
+    return Result<RgbaImage>::failure(name + ": image is " + std::to_string(w) + "x" +
+                                      std::to_string(h) + ", over the limit of " +
+                                      std::to_string(maxDimension) + "x" +
+                                      std::to_string(maxDimension));
+  }
+  stbi_uc* pixels = stbi_load_from_memory(data, length, &w, &h, &channels, 4);
+  if (!pixels) {
+    return Result<RgbaImage>::failure(name + ": cannot read image (" + decodeFailure() + ")");
+  }
+  // The decoder reads the header again; trust only sizes within the limit checked above.
+  if (w < 1 || h < 1 || w > maxDimension || h > maxDimension) {
+    stbi_image_free(pixels);
+    return Result<RgbaImage>::failure(name + ": cannot read image (inconsistent header)");
   }
   RgbaImage image;
   image.width = w;
   image.height = h;
-  image.pixels.assign(data, data + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
-  stbi_image_free(data);
+  image.pixels.assign(pixels, pixels + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
+  stbi_image_free(pixels);
   return image;
+}
+
+Result<RgbaImage> readPng(const std::string& path) {
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  if (!file) return Result<RgbaImage>::failure(path + ": cannot read image (cannot open file)");
+  const std::streamoff size = file.tellg();
+  if (size < 0) return Result<RgbaImage>::failure(path + ": cannot read image (cannot read file)");
+  std::vector<uint8_t> bytes(static_cast<size_t>(size));
+  file.seekg(0);
+  if (!file.read(reinterpret_cast<char*>(bytes.data()), size)) {
+    return Result<RgbaImage>::failure(path + ": cannot read image (cannot read file)");
+  }
+  return decodeImage(bytes.data(), bytes.size(), path);
 }
 
 std::string writePng(const RgbaImage& image, const std::string& path) {

@@ -22,6 +22,15 @@ struct RgbaImage {
 // GL reads rows bottom-up; images and PNGs are top-down.
 void flipRows(RgbaImage& image);
 
+// The largest width or height decodeImage accepts by default (8192 x 8192 RGBA8 is 256 MB).
+inline constexpr int kMaxImageDimension = 8192;
+
+// Decodes an image file held in memory (PNG, or another format stb_image reads) to RGBA8.
+// Images wider or taller than `maxDimension` are rejected before any pixel is decoded. `name`
+// is used in every message (usually the path the bytes came from).
+Result<RgbaImage> decodeImage(const uint8_t* data, size_t size, const std::string& name,
+                              int maxDimension = kMaxImageDimension);
+// Reads the file's bytes and decodes them with decodeImage.
 Result<RgbaImage> readPng(const std::string& path);
 // Returns an empty string on success, else a message naming the file.
 std::string writePng(const RgbaImage& image, const std::string& path);

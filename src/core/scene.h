@@ -1,7 +1,9 @@
-// What is in the scene, as data: meshes by name, transforms, colours, which object reflects,
-// light, camera and capture settings. The renderer draws whatever this describes.
+// What is in the scene, as data: meshes by name, transforms and simple animations, colours,
+// materials, light, camera, background and capture settings. Scenes come from JSON files
+// (scene_file.h); the renderer draws whatever this describes.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -19,18 +21,44 @@ struct PhongLight {
   float shininess = 10.0f;
 };
 
+enum class Material {
+  Phong,         // lit with the course's Phong constants
+  Mirror,        // reflection of the environment mixed with the base colour
+  Glass,         // refraction (reflection on total internal reflection) mixed with the base colour
+  CubeTextured,  // Ex12-1: the environment sampled along the object-space position, unlit
+};
+
+// Where a mirror, glass or cube-textured object gets its environment from.
+enum class Environment {
+  LiveProbe,  // a cube map captured from the object's centre (or its probe group's)
+  Skybox,     // the scene's static skybox
+};
+
+enum class Motion {
+  None,
+  Orbit,  // M = R(axis, rate * t) * placement: circles the world origin
+  Spin,   // M = placement * R(axis, rate * t): turns about its own origin
+};
+
 struct SceneObject {
   std::string mesh;  // model file name, e.g. "mario.obj"
-  // M = Ry(orbit angle) * placement when `orbits`, else placement.
   glm::mat4 placement{1.0f};
-  bool orbits = false;
+  Motion motion = Motion::None;
+  glm::vec3 axis{0.0f, 1.0f, 0.0f};
+  double degreesPerSecond = 27.0;  // the course's 0.45 degrees a frame at 60 Hz
   glm::vec3 colour{1.0f};
-  bool reflective = false;
-  // Reflective shading: reflectionWeight * env + baseWeight * colour (the course: 0.78 and 0.3).
+  Material material = Material::Phong;
+  Environment environment = Environment::LiveProbe;
+  // Mirror and glass: weight * environment + baseWeight * colour (the course: 0.78 and 0.3).
   float reflectionWeight = 0.78f;
   float baseWeight = 0.3f;
-  // Reflectors with the same group >= 0 share one probe (see PlannedObject::probeGroup).
+  float refractiveIndex = 1.52f;  // glass (air to glass); also sets Fresnel's F0
+  bool fresnel = false;           // Schlick weighting instead of the fixed mix
+  // Objects with the same probe group >= 0 share one live probe; -1 = a probe of its own.
   int probeGroup = -1;
+
+  bool usesEnvironment() const { return material != Material::Phong; }
+  bool needsLiveProbe() const { return usesEnvironment() && environment == Environment::LiveProbe; }
 };
 
 struct CaptureSettings {
@@ -39,21 +67,32 @@ struct CaptureSettings {
   float far = 100.0f;
 };
 
+// Six images in GL face order (+X, -X, +Y, -Y, +Z, -Z), or one horizontal cross.
+struct SkyboxSource {
+  std::array<std::string, 6> faces;  // empty when `cross` is used
+  std::string cross;
+  bool empty() const { return cross.empty() && faces[0].empty(); }
+};
+
 struct Scene {
+  std::string name = "ex12-2";
+  std::string title = "Ex12-2: dynamic reflection";
   std::vector<SceneObject> objects;
   PhongLight light;
   CameraSettings camera;
   CaptureSettings capture;
   glm::vec3 clearColour{0.4f, 0.4f, 0.4f};
+  SkyboxSource skybox;  // drawn behind everything (and into captures) when set
 
-  glm::mat4 modelMatrix(const SceneObject& object, double orbitDegrees) const;
+  glm::mat4 modelMatrix(const SceneObject& object, double seconds) const;
   // The distinct mesh names the scene uses, in first-use order.
   std::vector<std::string> meshNames() const;
-  // Index of the reflective object, or -1 when the scene has none.
+  // Index of the first object with a live probe, or -1 when the scene has none.
   int reflectorIndex() const;
 };
 
-// The course's Ex12-2 ("dynamic reflection"), with the values of SEED.md.
+// The course's Ex12-2 ("dynamic reflection"), with the values of SEED.md. The same scene ships as
+// assets/scenes/ex12-2.json; a test keeps the two equal.
 Scene makeDynamicReflectionScene();
 
 }  // namespace reflect

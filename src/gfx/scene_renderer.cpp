@@ -27,8 +27,10 @@ void clearTo(const glm::vec3& colour) {
 Result<SceneRenderer> SceneRenderer::create() {
   Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag");
   if (!phong) return Result<SceneRenderer>::failure(phong.error());
-  Result<ShaderProgram> mirror = ShaderProgram::build("mesh.vert", "reflect.frag");
-  if (!mirror) return Result<SceneRenderer>::failure(mirror.error());
+  Result<ShaderProgram> environment = ShaderProgram::build("mesh.vert", "environment.frag");
+  if (!environment) return Result<SceneRenderer>::failure(environment.error());
+  Result<ShaderProgram> cubeTextured = ShaderProgram::build("mesh.vert", "cube_textured.frag");
+  if (!cubeTextured) return Result<SceneRenderer>::failure(cubeTextured.error());
 
   const ShaderProgram& p = phong.value();
   PhongProgram phongProgram{ShaderProgram{},        p.uniform("u_viewProjection"),
@@ -38,24 +40,41 @@ Result<SceneRenderer> SceneRenderer::create() {
                             p.uniform("u_diffuse"), p.uniform("u_specular"),
                             p.uniform("u_shininess")};
   phongProgram.program = phong.take();
-  const ShaderProgram& r = mirror.value();
-  MirrorProgram mirrorProgram{ShaderProgram{},          r.uniform("u_viewProjection"),
-                              r.uniform("u_model"),     r.uniform("u_normalMatrix"),
-                              r.uniform("u_colour"),    r.uniform("u_viewPosition"),
-                              r.uniform("u_reflectionWeight"), r.uniform("u_baseWeight"),
-                              r.uniform("u_environment")};
-  mirrorProgram.program = mirror.take();
-  return SceneRenderer(std::move(phongProgram), std::move(mirrorProgram));
+  const ShaderProgram& e = environment.value();
+  EnvironmentProgram environmentProgram{
+      ShaderProgram{},        e.uniform("u_viewProjection"), e.uniform("u_model"),
+      e.uniform("u_normalMatrix"), e.uniform("u_colour"), e.uniform("u_viewPosition"),
+      e.uniform("u_reflectionWeight"), e.uniform("u_baseWeight"), e.uniform("u_refracts"),
+      e.uniform("u_eta"),     e.uniform("u_fresnelF0"), e.uniform("u_fresnel"),
+      e.uniform("u_environment")};
+  environmentProgram.program = environment.take();
+  const ShaderProgram& c = cubeTextured.value();
+  CubeTexturedProgram cubeTexturedProgram{ShaderProgram{}, c.uniform("u_viewProjection"),
+                                          c.uniform("u_model"), c.uniform("u_normalMatrix"),
+                                          c.uniform("u_environment")};
+  cubeTexturedProgram.program = cubeTextured.take();
+  return SceneRenderer(std::move(phongProgram), std::move(environmentProgram),
+                       std::move(cubeTexturedProgram));
 }
 
-SceneRenderer::SceneRenderer(PhongProgram phong, MirrorProgram mirror)
-    : phong_(std::move(phong)), mirror_(std::move(mirror)) {}
+SceneRenderer::SceneRenderer(PhongProgram phong, EnvironmentProgram environment,
+                             CubeTexturedProgram cubeTextured)
+    : phong_(std::move(phong)),
+      environment_(std::move(environment)),
+      cubeTextured_(std::move(cubeTextured)) {}
 
 void SceneRenderer::setMesh(const std::string& name, int lod, const MeshData& mesh) {
   std::vector<MeshBuffer>& levels = meshes_[name];
   if (lod == 0) levels.clear();
   if (lod != static_cast<int>(levels.size())) return;  // levels arrive in order, 0 first
   levels.emplace_back(mesh);
+}
+
+std::string SceneRenderer::setSkybox(const CubeFaces& faces) {
+  Result<SkyboxPass> pass = SkyboxPass::create(faces);
+  if (!pass) return pass.error();
+  skybox_ = std::make_unique<SkyboxPass>(pass.take());
+  return {};
 }
 
 const MeshBuffer* SceneRenderer::mesh(const std::string& name, int lod) const {
@@ -65,55 +84,104 @@ const MeshBuffer* SceneRenderer::mesh(const std::string& name, int lod) const {
   return &it->second[level];
 }
 
-GLuint SceneRenderer::environmentTexture(int reflector) const {
-  auto owner = ownerOf_.find(reflector);
-  auto it = probes_.find(owner == ownerOf_.end() ? reflector : owner->second);
+GLuint SceneRenderer::environmentTexture(const Scene& scene, int index) const {
+  const SceneObject& object = scene.objects.at(static_cast<size_t>(index));
+  if (object.environment == Environment::Skybox) return skybox_ ? skybox_->texture() : 0;
+  auto owner = ownerOf_.find(index);
+  auto it = probes_.find(owner == ownerOf_.end() ? index : owner->second);
   return it == probes_.end() ? 0 : it->second.texture();
 }
 
-void SceneRenderer::usePhong(const Scene& scene, const glm::mat4& viewProj,
-                             const glm::vec3& viewPosition) {
-  glUseProgram(phong_.program.id());
-  glUniformMatrix4fv(phong_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
-  glUniform3fv(phong_.lightPosition, 1, glm::value_ptr(scene.light.position));
-  glUniform3fv(phong_.viewPosition, 1, glm::value_ptr(viewPosition));
-  glUniform1f(phong_.ambient, scene.light.ambient);
-  glUniform1f(phong_.diffuse, scene.light.diffuse);
-  glUniform1f(phong_.specular, scene.light.specular);
-  glUniform1f(phong_.shininess, scene.light.shininess);
+void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
+                        const glm::vec3& viewPosition) {
+  current_ = kind;
+  switch (kind) {
+    case ProgramKind::Phong:
+      glUseProgram(phong_.program.id());
+      glUniformMatrix4fv(phong_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
+      glUniform3fv(phong_.lightPosition, 1, glm::value_ptr(scene.light.position));
+      glUniform3fv(phong_.viewPosition, 1, glm::value_ptr(viewPosition));
+      glUniform1f(phong_.ambient, scene.light.ambient);
+      glUniform1f(phong_.diffuse, scene.light.diffuse);
+      glUniform1f(phong_.specular, scene.light.specular);
+      glUniform1f(phong_.shininess, scene.light.shininess);
+      break;
+    case ProgramKind::Environment:
+      glUseProgram(environment_.program.id());
+      glUniformMatrix4fv(environment_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
+      glUniform3fv(environment_.viewPosition, 1, glm::value_ptr(viewPosition));
+      glUniform1i(environment_.environment, kEnvironmentTextureUnit);
+      break;
+    case ProgramKind::CubeTextured:
+      glUseProgram(cubeTextured_.program.id());
+      glUniformMatrix4fv(cubeTextured_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
+      glUniform1i(cubeTextured_.environment, kEnvironmentTextureUnit);
+      break;
+  }
 }
 
-void SceneRenderer::useMirror(const glm::mat4& viewProj, const glm::vec3& viewPosition) {
-  glUseProgram(mirror_.program.id());
-  glUniformMatrix4fv(mirror_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
-  glUniform3fv(mirror_.viewPosition, 1, glm::value_ptr(viewPosition));
-  glUniform1i(mirror_.environment, kEnvironmentTextureUnit);
-}
-
-PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item,
-                                     double orbitDegrees) {
+PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item, double seconds) {
   const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
   const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
-  const glm::mat4 model = scene.modelMatrix(object, orbitDegrees);
-  if (object.reflective) {
-    setObjectMatrices(mirror_.model, mirror_.normalMatrix, model);
-    glUniform3fv(mirror_.colour, 1, glm::value_ptr(object.colour));
-    glUniform1f(mirror_.reflectionWeight, object.reflectionWeight);
-    glUniform1f(mirror_.baseWeight, object.baseWeight);
+  const glm::mat4 model = scene.modelMatrix(object, seconds);
+  switch (current_) {
+    case ProgramKind::Phong:
+      setObjectMatrices(phong_.model, phong_.normalMatrix, model);
+      glUniform3fv(phong_.colour, 1, glm::value_ptr(object.colour));
+      break;
+    case ProgramKind::Environment: {
+      setObjectMatrices(environment_.model, environment_.normalMatrix, model);
+      glUniform3fv(environment_.colour, 1, glm::value_ptr(object.colour));
+      glUniform1f(environment_.reflectionWeight, object.reflectionWeight);
+      glUniform1f(environment_.baseWeight, object.baseWeight);
+      glUniform1i(environment_.refracts, object.material == Material::Glass ? 1 : 0);
+      const float n = std::max(object.refractiveIndex, 1e-3f);
+      glUniform1f(environment_.eta, 1.0f / n);
+      glUniform1f(environment_.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
+      glUniform1i(environment_.fresnel, object.fresnel ? 1 : 0);
+      break;
+    }
+    case ProgramKind::CubeTextured:
+      setObjectMatrices(cubeTextured_.model, cubeTextured_.normalMatrix, model);
+      break;
+  }
+  if (object.usesEnvironment()) {
     glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, environmentTexture(item.object));
-  } else {
-    setObjectMatrices(phong_.model, phong_.normalMatrix, model);
-    glUniform3fv(phong_.colour, 1, glm::value_ptr(object.colour));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, environmentTexture(scene, item.object));
   }
   buffer->draw(item.ranges);
   const size_t triangles = item.ranges.empty() ? buffer->triangleCount() : item.triangles;
   return {static_cast<int>(std::max<size_t>(item.ranges.size(), 1)), triangles};
 }
 
-Result<PassCounts> SceneRenderer::capture(const Scene& scene, double orbitDegrees,
-                                          const FramePlan& plan, const glm::vec3& lightingEye) {
+PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds,
+                                    const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
+                                    const glm::vec3& viewPosition,
+                                    const glm::vec3& environmentViewPosition) {
+  PassCounts counts;
+  // One program switch per material kind present: Phong first, then the environment users.
+  for (ProgramKind kind : {ProgramKind::Phong, ProgramKind::Environment, ProgramKind::CubeTextured}) {
+    bool inUse = false;
+    for (const DrawItem& d : draws) {
+      const Material m = scene.objects[static_cast<size_t>(d.object)].material;
+      const ProgramKind wanted = m == Material::Phong          ? ProgramKind::Phong
+                                 : m == Material::CubeTextured ? ProgramKind::CubeTextured
+                                                               : ProgramKind::Environment;
+      if (wanted != kind) continue;
+      if (!inUse) {
+        use(kind, scene, viewProj,
+            kind == ProgramKind::Phong ? viewPosition : environmentViewPosition);
+      }
+      inUse = true;
+      counts += drawObject(scene, d, seconds);
+    }
+  }
+  return counts;
+}
+
+Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, const FramePlan& plan,
+                                          const glm::vec3& lightingEye) {
   PassCounts counts;
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
@@ -134,21 +202,11 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double orbitDegree
     for (const FacePlan& face : probe.faces) {
       target->second.bindFace(face.face);
       clearTo(scene.clearColour);
-      const glm::mat4 viewProj = projection * cubeFaceView(probe.centre, face.face);
-      // Phong objects first, then other mirrors (with their cube as it was before this frame's
-      // capture of them: one bounce). Program switches stay at two per face.
-      usePhong(scene, viewProj, lightingEye);
-      for (const DrawItem& d : face.draws) {
-        if (!scene.objects[static_cast<size_t>(d.object)].reflective)
-          counts += drawObject(scene, d, orbitDegrees);
-      }
-      bool mirrorInUse = false;
-      for (const DrawItem& d : face.draws) {
-        if (!scene.objects[static_cast<size_t>(d.object)].reflective) continue;
-        if (!mirrorInUse) useMirror(viewProj, probe.centre);
-        mirrorInUse = true;
-        counts += drawObject(scene, d, orbitDegrees);
-      }
+      const glm::mat4 view = cubeFaceView(probe.centre, face.face);
+      // Other mirrors in view use their cube as it was before this frame's capture of them
+      // (one bounce); they are seen from the probe centre.
+      counts += drawItems(scene, seconds, face.draws, projection * view, lightingEye, probe.centre);
+      if (skybox_) skybox_->draw(projection, view);
     }
   }
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
@@ -157,28 +215,18 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double orbitDegree
   return counts;
 }
 
-PassCounts SceneRenderer::drawMain(const Scene& scene, double orbitDegrees, const ViewParams& camera,
+PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const ViewParams& camera,
                                    unsigned framebuffer, int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // the ground quad is seen from both sides
   clearTo(scene.clearColour);
-  const glm::mat4 viewProj = camera.projection * camera.view;
-  PassCounts counts;
-  usePhong(scene, viewProj, camera.eye);
-  const int objectCount = static_cast<int>(scene.objects.size());
-  for (int i = 0; i < objectCount; ++i) {
-    if (!scene.objects[static_cast<size_t>(i)].reflective) {
-      counts += drawObject(scene, DrawItem{i, 0, {}, 0}, orbitDegrees);
-    }
-  }
-  useMirror(viewProj, camera.eye);
-  for (int i = 0; i < objectCount; ++i) {
-    if (scene.objects[static_cast<size_t>(i)].reflective) {
-      counts += drawObject(scene, DrawItem{i, 0, {}, 0}, orbitDegrees);
-    }
-  }
+  std::vector<DrawItem> all;
+  for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) all.push_back({i, 0, {}, 0});
+  PassCounts counts =
+      drawItems(scene, seconds, all, camera.projection * camera.view, camera.eye, camera.eye);
+  if (skybox_) skybox_->draw(camera.projection, camera.view);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindVertexArray(0);
   checkGlError("main pass");
@@ -187,7 +235,10 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double orbitDegrees, cons
 
 void SceneRenderer::abandon() {
   phong_.program.abandon();
-  mirror_.program.abandon();
+  environment_.program.abandon();
+  cubeTextured_.program.abandon();
+  if (skybox_) skybox_->abandon();
+  skybox_.reset();
   for (auto& [index, target] : probes_) target.abandon();
   probes_.clear();
   ownerOf_.clear();

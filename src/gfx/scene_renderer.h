@@ -1,8 +1,10 @@
 // Draws a Scene with GL ES 3.0 as a FramePlan says: each probe's planned cube faces (objects at
-// their planned level of detail), then the main pass, where each reflector samples its own probe.
+// their planned level of detail), then the main pass. Materials: Phong, mirror and glass (an
+// environment lookup), cube-textured (Ex12-1); the skybox is drawn last into every target.
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,9 +14,11 @@
 #include "core/mesh_data.h"
 #include "core/result.h"
 #include "core/scene.h"
+#include "core/skybox_faces.h"
 #include "gfx/cube_capture_target.h"
 #include "gfx/mesh_buffer.h"
 #include "gfx/shader_program.h"
+#include "gfx/skybox_pass.h"
 
 namespace reflect {
 
@@ -41,16 +45,19 @@ class SceneRenderer {
   // Uploads (or replaces) level `lod` of the mesh the scene knows by `name` (0 = full detail;
   // setting level 0 drops the coarser levels, which belonged to the old mesh).
   void setMesh(const std::string& name, int lod, const MeshData& mesh);
+  // The static cube map behind the scene (and the environment of Skybox-lit objects).
+  std::string setSkybox(const CubeFaces& faces);
+  void clearSkybox() { skybox_.reset(); }
 
   // Renders the plan's faces. `lightingEye` is the main camera's eye: the course lights captures
   // as seen from it. Probe targets are created (or resized) on first use.
-  Result<PassCounts> capture(const Scene& scene, double orbitDegrees, const FramePlan& plan,
+  Result<PassCounts> capture(const Scene& scene, double seconds, const FramePlan& plan,
                              const glm::vec3& lightingEye);
-  PassCounts drawMain(const Scene& scene, double orbitDegrees, const ViewParams& camera,
+  PassCounts drawMain(const Scene& scene, double seconds, const ViewParams& camera,
                       unsigned framebuffer, int width, int height);
 
-  // The live cube map that reflective object `reflector` samples (0 if none yet).
-  GLuint environmentTexture(int reflector) const;
+  // The cube map that object `index` samples: its live probe's, or the skybox (0 if none yet).
+  GLuint environmentTexture(const Scene& scene, int index) const;
   // After a lost context: drop every GL name without deleting (the context took them).
   void abandon();
 
@@ -60,24 +67,35 @@ class SceneRenderer {
     GLint viewProjection, model, normalMatrix, colour, lightPosition, viewPosition, ambient,
         diffuse, specular, shininess;
   };
-  struct MirrorProgram {
+  struct EnvironmentProgram {
     ShaderProgram program;
     GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
-        environment;
+        refracts, eta, fresnelF0, fresnel, environment;
   };
+  struct CubeTexturedProgram {
+    ShaderProgram program;
+    GLint viewProjection, model, normalMatrix, environment;
+  };
+  enum class ProgramKind { Phong, Environment, CubeTextured };
 
-  SceneRenderer(PhongProgram phong, MirrorProgram mirror);
-  void usePhong(const Scene& scene, const glm::mat4& viewProj, const glm::vec3& viewPosition);
-  void useMirror(const glm::mat4& viewProj, const glm::vec3& viewPosition);
-  // Draws one object (or the planned ranges of it) with the program in use for its material.
-  PassCounts drawObject(const Scene& scene, const DrawItem& item, double orbitDegrees);
+  SceneRenderer(PhongProgram phong, EnvironmentProgram environment, CubeTexturedProgram cubeTextured);
+  // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
+  PassCounts drawItems(const Scene& scene, double seconds, const std::vector<DrawItem>& draws,
+                       const glm::mat4& viewProj, const glm::vec3& viewPosition,
+                       const glm::vec3& environmentViewPosition);
+  PassCounts drawObject(const Scene& scene, const DrawItem& item, double seconds);
+  void use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
+           const glm::vec3& viewPosition);
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;
-  MirrorProgram mirror_;
-  std::map<int, CubeCaptureTarget> probes_;  // by owning reflector's object index
-  std::map<int, int> ownerOf_;                // reflector -> owner of the probe it samples
-  std::map<std::string, std::vector<MeshBuffer>> meshes_;
+  EnvironmentProgram environment_;
+  CubeTexturedProgram cubeTextured_;
+  std::unique_ptr<SkyboxPass> skybox_;
+  std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
+  std::map<int, int> ownerOf_;                // probed object -> owner of the probe it samples
+  std::map<std::string, std::vector<MeshBuffer>> meshes_;  // levels of detail by mesh name
+  ProgramKind current_ = ProgramKind::Phong;
 };
 
 }  // namespace reflect

@@ -66,7 +66,7 @@ Scene markerScene() {
   SceneObject sphere;
   sphere.mesh = "sphere.obj";
   sphere.placement = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
-  sphere.reflective = true;
+  sphere.material = Material::Mirror;
   sphere.colour = glm::vec3(1.0f);
   scene.objects.push_back(sphere);
   return scene;

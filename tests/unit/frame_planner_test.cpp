@@ -21,7 +21,7 @@ PlannedObject boxAt(glm::vec3 position, float size = 1.0f) {
 
 PlannedObject mirrorAt(glm::vec3 position) {
   PlannedObject o = boxAt(position);
-  o.reflective = true;
+  o.probed = true;
   return o;
 }
 

@@ -27,7 +27,7 @@ int fail(const std::string& message) {
 Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, bool reflectorAsPhong) {
   reflect::Scene scene = reflect::makeDynamicReflectionScene();
   if (reflectorAsPhong) {
-    for (reflect::SceneObject& object : scene.objects) object.reflective = false;
+    for (reflect::SceneObject& object : scene.objects) object.material = reflect::Material::Phong;
   }
   auto demo = std::make_unique<Demo>(scene);
   demo->setCubeFaceSize(o.cubeSize);

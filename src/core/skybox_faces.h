@@ -1,0 +1,31 @@
+// The six square images of a static cube map, checked and in GL face order (+X, -X, +Y, -Y, +Z,
+// -Z), from six separate images or one horizontal cross. Not flipped: cube-map faces are
+// addressed top row first, as images are stored.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/result.h"
+
+namespace reflect {
+
+using CubeFaces = std::array<RgbaImage, 6>;
+
+// The six paths of a skybox named by one path and the suffixes _px _nx _py _ny _pz _nz:
+// "sky/day.png" -> "sky/day_px.png", ...
+std::array<std::string, 6> skyboxSuffixPaths(const std::string& path);
+
+// Six images (names for messages): equal, non-empty squares.
+Result<CubeFaces> facesFromImages(std::vector<RgbaImage> images,
+                                  const std::array<std::string, 6>& names);
+
+// One horizontal cross, 4 squares wide and 3 high:
+//        [+Y]
+//   [-X] [+Z] [+X] [-Z]
+//        [-Y]
+Result<CubeFaces> facesFromCross(const RgbaImage& cross, const std::string& name);
+
+}  // namespace reflect

@@ -1,0 +1,33 @@
+// The static cube map of a scene's skybox and the pass that draws it behind everything.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "core/result.h"
+#include "core/skybox_faces.h"
+#include "gfx/gl_handle.h"
+#include "gfx/shader_program.h"
+
+namespace reflect {
+
+class SkyboxPass {
+ public:
+  // Uploads the faces (CLAMP_TO_EDGE, linear) and builds the program and the cube.
+  static Result<SkyboxPass> create(const CubeFaces& faces);
+
+  // Draws the sky where nothing else is (depth LEQUAL at the far plane). `view` may contain a
+  // translation: only its rotation is used.
+  void draw(const glm::mat4& projection, const glm::mat4& view) const;
+  GLuint texture() const { return texture_.id(); }
+  void abandon();
+
+ private:
+  ShaderProgram program_;
+  GLint viewRotationProjection_ = -1;
+  GLint skybox_ = -1;
+  TextureHandle texture_;
+  VertexArrayHandle vao_;
+  BufferHandle vertices_;
+};
+
+}  // namespace reflect

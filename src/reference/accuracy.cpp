@@ -1,0 +1,90 @@
+#include "reference/accuracy.h"
+
+#include <chrono>
+
+#include "app/headless_frames.h"
+
+namespace reflect {
+
+std::vector<uint8_t> silhouetteMask(const std::vector<int>& objectIds, int width, int height) {
+  std::vector<uint8_t> mask(objectIds.size(), 0);
+  if (width < 1 || height < 1 ||
+      objectIds.size() != static_cast<size_t>(width) * static_cast<size_t>(height)) {
+    return mask;
+  }
+  const auto id = [&](int x, int y) {
+    return objectIds[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)];
+  };
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const int centre = id(x, y);
+      bool edge = false;
+      for (int dy = -1; dy <= 1 && !edge; ++dy) {
+        for (int dx = -1; dx <= 1 && !edge; ++dx) {
+          const int nx = x + dx;
+          const int ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+          edge = id(nx, ny) != centre;
+        }
+      }
+      mask[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)] = edge;
+    }
+  }
+  return mask;
+}
+
+Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
+                                            const ReferenceFrame& reference) {
+  const RgbaImage& exact = reference.image;
+  if (raster.width != exact.width || raster.height != exact.height) {
+    return Result<AccuracyReport>::failure("raster and reference sizes differ");
+  }
+  AccuracyReport report;
+  report.width = exact.width;
+  report.height = exact.height;
+  report.referenceMs = reference.renderMs;
+
+  const std::vector<uint8_t> edges = silhouetteMask(reference.objectIds, exact.width, exact.height);
+  std::vector<uint8_t> off(reference.reflectorMask.size());
+  std::vector<uint8_t> interior(reference.reflectorMask.size());
+  for (size_t i = 0; i < off.size(); ++i) {
+    off[i] = reference.reflectorMask[i] ? 0 : 1;
+    interior[i] = off[i] && !edges[i];
+  }
+  auto reflector = imageErrorMetrics(raster, exact, reference.reflectorMask);
+  if (!reflector) return Result<AccuracyReport>::failure(reflector.error());
+  auto offMetrics = imageErrorMetrics(raster, exact, off);
+  if (!offMetrics) return Result<AccuracyReport>::failure(offMetrics.error());
+  auto interiorMetrics = imageErrorMetrics(raster, exact, interior);
+  if (!interiorMetrics) return Result<AccuracyReport>::failure(interiorMetrics.error());
+  auto angle = meanAngularErrorDegrees(reference.lookupDirs, reference.trueDirs);
+  if (!angle) return Result<AccuracyReport>::failure(angle.error());
+
+  report.reflector = reflector.value();
+  report.offReflector = offMetrics.value();
+  report.offReflectorInterior = interiorMetrics.value();
+  report.meanAngularErrorDeg = angle.value();
+  report.reflectorPixels = report.reflector.pixelCount;
+  report.offReflectorPixels = report.offReflector.pixelCount;
+  return report;
+}
+
+Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int height) {
+  const auto start = std::chrono::steady_clock::now();
+  Result<RgbaImage> raster = renderFrameAt(demo, t, width, height);
+  if (!raster) return Result<AccuracyReport>::failure(raster.error());
+  const double rasterMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = demo.clock().seconds();
+  const MeshLookup meshes = [&demo](const std::string& name) { return demo.meshLevel(name, 0); };
+  Result<ReferenceFrame> reference =
+      renderReference(demo.scene(), meshes, demo.camera(), seconds, width, height);
+  if (!reference) return Result<AccuracyReport>::failure(reference.error());
+  Result<AccuracyReport> report = compareWithReference(raster.value(), reference.value());
+  if (!report) return report;
+  report.value().timeSeconds = t;
+  report.value().rasterMs = rasterMs;
+  return report;
+}
+
+}  // namespace reflect
