@@ -30,7 +30,7 @@ ensure_npm_packages() {
 # Debian's Emscripten needs its JS optimizer's acorn from Debian's node-acorn.
 export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 
-WEB_PACKAGES=(emscripten node-acorn libglm-dev libstb-dev libtinyobjloader-dev cmake make)
-NATIVE_PACKAGES=(g++ cmake make pkg-config libglm-dev libstb-dev libtinyobjloader-dev libgtest-dev libmeshoptimizer-dev
+WEB_PACKAGES=(emscripten node-acorn libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev cmake make)
+NATIVE_PACKAGES=(g++ cmake make pkg-config libglm-dev nlohmann-json3-dev libembree-dev libstb-dev libtinyobjloader-dev libgtest-dev libmeshoptimizer-dev
                  libgles-dev libegl-dev libegl-mesa0 libgl1-mesa-dri)
 BROWSER_PACKAGES=(chromium)

@@ -10,7 +10,7 @@ namespace reflect {
 namespace {
 
 bool sameState(const PlannedObject& a, const PlannedObject& b) {
-  return a.model == b.model && a.colour == b.colour && a.meshRevision == b.meshRevision &&
+  return a.model == b.model && a.colour == b.colour && a.probeCentre == b.probeCentre && a.meshRevision == b.meshRevision &&
          a.probed == b.probed && a.localBounds.min == b.localBounds.min &&
          a.localBounds.max == b.localBounds.max;
 }
@@ -23,6 +23,7 @@ bool contains(const std::vector<int>& list, int value) {
 glm::vec3 probeCentreOf(const std::vector<PlannedObject>& objects, const std::vector<int>& members) {
   if (members.size() == 1) {
     const PlannedObject& o = objects[static_cast<size_t>(members[0])];
+    if (o.probeCentre) return *o.probeCentre;
     return glm::vec3(o.model * glm::vec4(o.localBounds.centre(), 1.0f));
   }
   Bounds joint;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,7 @@ struct PlannedObject {
   // Probed objects with the same group >= 0 share one probe at the centre of their joint bounds
   // (cheaper, less exact: they do not see each other); -1 = a probe of its own.
   int probeGroup = -1;
+  std::optional<glm::vec3> probeCentre;  // overrides the bounds centre (ungrouped probes)
   std::vector<PlannedLevel> levels;  // 0 = full detail; empty: one level, no chunks
 };
 

@@ -57,6 +57,21 @@ Result<MeshData> parseObj(const std::string& text, const std::string& name,
   }
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   const std::vector<tinyobj::shape_t>& shapes = reader.GetShapes();
+  // The pre-pass checked every index, but as it read the text: should tinyobjloader ever read an
+  // index differently, refuse rather than read out of bounds.
+  const size_t positionCount = attrib.vertices.size() / 3;
+  const size_t normalCount = attrib.normals.size() / 3;
+  for (const tinyobj::shape_t& shape : shapes) {
+    if (shape.mesh.indices.size() % 3 != 0) {
+      return Result<MeshData>::failure(name + ": a face did not split into whole triangles");
+    }
+    for (const tinyobj::index_t& corner : shape.mesh.indices) {
+      if (corner.vertex_index < 0 || static_cast<size_t>(corner.vertex_index) >= positionCount ||
+          (corner.normal_index >= 0 && static_cast<size_t>(corner.normal_index) >= normalCount)) {
+        return Result<MeshData>::failure(name + ": a face index is out of range after parsing");
+      }
+    }
+  }
 
   std::vector<glm::vec3> computedNormals;  // filled only if some corner needs it
   auto computedNormal = [&](int positionIndex) {

@@ -53,7 +53,9 @@ std::string checkCorner(std::string_view corner, const ObjCounts& counts) {
     size_t slash = corner.find('/', start);
     std::string_view part =
         corner.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
-    if (!part.empty() || field == 0) {
+    // An empty field is only "v//n"'s texture coordinate: a trailing empty one ("1//", "1/2/")
+    // makes tinyobjloader read the next corner's number as the index.
+    if (!part.empty() || field == 0 || slash == std::string_view::npos) {
       long index = 0;
       if (!parseIndex(part, &index)) return "'" + std::string(corner) + "' is not a face index";
       long count = static_cast<long>(available[field]);
@@ -88,6 +90,12 @@ Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limi
     ++lineNumber;
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
       line.remove_suffix(1);  // CR CR LF endings, as in the course's sphere.obj
+    // tinyobjloader also ends a line at a lone CR: what follows it would be a line this pass
+    // never checked.
+    if (line.find('\r') != std::string_view::npos) {
+      return Result<ObjCounts>::failure(
+          lineError(lineNumber, "a carriage return inside a line (old Mac line ends are not supported)"));
+    }
     std::vector<std::string_view> tokens = splitWhitespace(line);
     if (tokens.empty() || tokens[0][0] == '#') continue;
     const std::string_view keyword = tokens[0];

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,9 @@ struct SceneObject {
   bool fresnel = false;           // Schlick weighting instead of the fixed mix
   // Objects with the same probe group >= 0 share one live probe; -1 = a probe of its own.
   int probeGroup = -1;
+  // Where its live probe captures from, in world space; unset = the centre of the mesh bounds.
+  // (Ex12-1 captures its cube's environment from the origin.)
+  std::optional<glm::vec3> probeCentre;
 
   bool usesEnvironment() const { return material != Material::Phong; }
   bool needsLiveProbe() const { return usesEnvironment() && environment == Environment::LiveProbe; }

@@ -191,12 +191,12 @@ struct Tracer {
     const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
     if (object.material == Material::Mirror) {
       if (depth >= kMaxMirrorBounces) return scene.clearColour;
-      return mirror(hit, glm::normalize(-dir), depth + 1, nullptr, nullptr);
+      return saturate(mirror(hit, glm::normalize(-dir), depth + 1, nullptr, nullptr));
     }
     return saturate(phong(scene, object.colour, hit, eye));
   }
 
-  // shaders/reflect.frag with the exact environment. `toViewer` is V (unit, surface to viewer).
+  // shaders/environment.frag (mirror) with the exact environment. `toViewer` is V (unit, surface to viewer).
   glm::vec3 mirror(const Hit& hit, const glm::vec3& toViewer, int depth, glm::vec3* lookup,
                    Hit* envHit) const {
     const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
@@ -206,8 +206,8 @@ struct Tracer {
     if (object.fresnel) {
       const float n = std::max(object.refractiveIndex, 1e-3f);
       const float f0 = ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f));
-      const float schlick =
-          f0 + (1.0f - f0) * std::pow(1.0f - std::clamp(glm::dot(toViewer, hit.normal), 0.0f, 1.0f), 5.0f);
+      const float cosine = std::clamp(glm::dot(toViewer, hit.normal), 0.0f, 1.0f);
+      const float schlick = f0 + (1.0f - f0) * std::pow(1.0f - cosine, 5.0f);
       return glm::mix(object.colour, env, schlick);
     }
     return object.reflectionWeight * env + object.baseWeight * object.colour;

@@ -3,14 +3,14 @@
 // reflector's environment comes from the true reflected ray from the hit point instead of a cube
 // map looked up from the probe centre.
 //
-// What it mirrors, term by term (shaders/mesh.vert, phong.frag, reflect.frag):
+// What it mirrors, term by term (shaders/mesh.vert, phong.frag, environment.frag):
 //  - one primary ray per pixel centre through camera.projection(w/h) * camera.view(), from the
 //    near plane to the far plane (GL clips there); pixel (x, y) counts rows from the top;
 //  - world position and normal interpolated over the triangle (N = inverse-transpose(model3x3) *
 //    normal per vertex, interpolated, normalised), both sides of every triangle shaded alike;
 //  - Phong: colour * (Ka + Kd max(N.L, 0)) + (N.L > 0 ? Ks pow(clamp(R.V, 0, 1), shininess) : 0),
 //    viewed from the main camera's eye (also in reflections: the course lights its captures so);
-//  - a reflector: reflectionWeight * env(reflect(-V, N)) + baseWeight * colour, where env is the
+//  - a mirror: reflectionWeight * env(reflect(-V, N)) + baseWeight * colour, where env is the
 //    Phong colour of what the reflected ray from the hit point meets first among the other
 //    objects, or the clear colour; output clamped to [0, 1] and rounded to 8 bits.
 // A mirror met by a reflected ray is shaded as a mirror again (its own reflected ray, up to
