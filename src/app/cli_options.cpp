@@ -47,6 +47,9 @@ const char* cliHelp() {
          "  --size WxH       frame size in pixels (default 800x800)\n"
          "  --time T         scene time in seconds (default 0); the figures orbit 27 deg/s\n"
          "  --out FILE       PNG to write (render; default frame.png)\n"
+         "  --scene S        a scene: a name from assets/scenes (ex12-2, ex12-1, glass-sphere,\n"
+         "                   two-mirrors, shared-probe, skybox, ex12-2-fresnel) or a .json file\n"
+         "                   (default ex12-2)\n"
          "  --assets DIR     take the models from DIR by the course's file names\n"
          "                   (mario.obj sonic.obj sphere.obj quad.obj)\n"
          "  --cube N         cube-map face size (default 256)\n"
@@ -95,6 +98,8 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       ok = parseNumber(value, &o.time);
     } else if (flag == "--out") {
       o.out = value;
+    } else if (flag == "--scene") {
+      o.scene = value;
     } else if (flag == "--assets") {
       o.assets = value;
     } else if (flag == "--frames") {
@@ -103,6 +108,7 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       ok = parseInt(value, 0, 1000000, &o.warmup);
     } else if (flag == "--cube") {
       ok = parseInt(value, 1, 16384, &o.cubeSize);
+      o.cubeSizeSet = true;
     } else if (flag == "--accuracy-frames") {
       ok = parseInt(value, 0, 100000, &o.accuracyFrames);
     } else if (flag == "--policy") {

@@ -16,9 +16,11 @@ struct CliOptions {
   double time = 0.0;
   std::string out = "frame.png";
   std::string assets;     // a folder with the course's models, by their file names
+  std::string scene = "ex12-2";  // a scene name from assets/scenes, or a .json path
   int frames = 120;       // bench: frames to time
   int warmup = 10;        // bench: frames not timed
   int cubeSize = 256;
+  bool cubeSizeSet = false;  // otherwise the scene's capture.faceSize
   float yawDeg = 0.0f;
   float pitchDeg = 0.0f;
   // Capture planning. `policySet`: bench times just this policy instead of comparing them all.

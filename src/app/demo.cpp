@@ -61,6 +61,16 @@ std::string Demo::addLodLevel(const std::string& name, const std::vector<uint32_
   return {};
 }
 
+std::string Demo::setSkybox(CubeFaces faces) {
+  if (renderer_) {
+    std::string error = renderer_->setSkybox(faces);
+    if (!error.empty()) return error;
+  }
+  skybox_ = std::move(faces);
+  ++optionsRevision_;  // captures show the sky
+  return {};
+}
+
 const MeshData* Demo::meshLevel(const std::string& name, int lod) const {
   auto it = meshes_.find(name);
   if (it == meshes_.end() || lod < 0 || lod >= static_cast<int>(it->second.size())) return nullptr;
@@ -106,6 +116,10 @@ std::string Demo::initGraphics() {
       renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
     }
   }
+  if (skybox_) {
+    std::string error = renderer_->setSkybox(*skybox_);
+    if (!error.empty()) return error;
+  }
   return checkGlError("init graphics") ? std::string() : "GL error while creating resources";
 }
 
@@ -135,6 +149,7 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
     p.colour = object.colour;
     p.probed = object.needsLiveProbe();
     p.probeGroup = object.probeGroup;
+    p.probeCentre = object.probeCentre;
     planned.push_back(p);
   }
   return planned;

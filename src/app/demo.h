@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "core/frame_planner.h"
 #include "core/mesh_data.h"
 #include "core/scene.h"
+#include "core/skybox_faces.h"
 #include "gfx/gpu_timer.h"
 #include "gfx/scene_renderer.h"
 
@@ -38,6 +40,10 @@ class Demo {
   // simplifies with npm's meshoptimizer). Returns "" or a message.
   std::string addLodLevel(const std::string& name, const std::vector<uint32_t>& indices);
   const MeshData* meshLevel(const std::string& name, int lod) const;
+
+  // The static cube map of the scene's skybox (kept on the CPU for a context restore).
+  std::string setSkybox(CubeFaces faces);
+  bool hasSkybox() const { return skybox_.has_value(); }
 
   // Creates the GL resources from the CPU-side data. Call once a context is current, and again
   // after a lost context is restored. Returns "" or a message.
@@ -68,6 +74,7 @@ class Demo {
   Scene scene_;
   std::map<std::string, std::vector<MeshData>> meshes_;  // levels of detail, 0 = as loaded
   std::map<std::string, uint32_t> meshRevisions_;
+  std::optional<CubeFaces> skybox_;
   LookCamera camera_;
   AnimationClock clock_;
   FramePlanner planner_;

@@ -12,6 +12,29 @@
 namespace reflect {
 namespace {
 
+constexpr uint8_t kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+uint32_t readBigEndian32(const uint8_t* p) {
+  return (uint32_t{p[0]} << 24) | (uint32_t{p[1]} << 16) | (uint32_t{p[2]} << 8) | uint32_t{p[3]};
+}
+
+// stb_image trusts chunk lengths: a 100-byte file whose IDAT claims a gigabyte makes it allocate
+// one. Walks the chunks up to IEND and returns "" or what is wrong.
+std::string checkPngChunks(const uint8_t* data, size_t size) {
+  size_t pos = sizeof(kPngSignature);
+  while (pos < size) {
+    if (size - pos < 12) return "truncated chunk header";
+    const size_t length = readBigEndian32(data + pos);
+    const std::string type(reinterpret_cast<const char*>(data + pos + 4), 4);
+    if (length > size - pos - 12) {
+      return "chunk of " + std::to_string(length) + " bytes runs past the end of the file";
+    }
+    if (type == "IEND") return {};
+    pos += 12 + length;
+  }
+  return "no IEND chunk";
+}
+
 std::string decodeFailure() {
   const char* reason = stbi_failure_reason();
   return reason ? reason : "unknown reason";
@@ -37,6 +60,13 @@ Result<RgbaImage> decodeImage(const uint8_t* data, size_t size, const std::strin
   if (size > static_cast<size_t>(std::numeric_limits<int>::max())) {
     return Result<RgbaImage>::failure(name + ": cannot read image (file of " +
                                       std::to_string(size) + " bytes is too large)");
+  }
+  if (size < sizeof(kPngSignature) || std::memcmp(data, kPngSignature, sizeof(kPngSignature)) != 0) {
+    return Result<RgbaImage>::failure(name + ": cannot read image (not a PNG file)");
+  }
+  const std::string chunkProblem = checkPngChunks(data, size);
+  if (!chunkProblem.empty()) {
+    return Result<RgbaImage>::failure(name + ": cannot read image (" + chunkProblem + ")");
   }
   const int length = static_cast<int>(size);
   int w = 0, h = 0, channels = 0;

@@ -25,9 +25,10 @@ void flipRows(RgbaImage& image);
 // The largest width or height decodeImage accepts by default (8192 x 8192 RGBA8 is 256 MB).
 inline constexpr int kMaxImageDimension = 8192;
 
-// Decodes an image file held in memory (PNG, or another format stb_image reads) to RGBA8.
-// Images wider or taller than `maxDimension` are rejected before any pixel is decoded. `name`
-// is used in every message (usually the path the bytes came from).
+// Decodes a PNG file held in memory to RGBA8 (stb_image's other formats are refused: the project
+// reads only PNG, and only the PNG decoder is fuzzed). Chunk lengths are checked against the
+// data, and images wider or taller than `maxDimension` are rejected, before any pixel memory is
+// allocated. `name` is used in every message (usually the path the bytes came from).
 Result<RgbaImage> decodeImage(const uint8_t* data, size_t size, const std::string& name,
                               int maxDimension = kMaxImageDimension);
 // Reads the file's bytes and decodes them with decodeImage.

@@ -68,7 +68,7 @@ Result<MeshData> parseObj(const std::string& text, const std::string& name,
     for (const tinyobj::index_t& corner : shape.mesh.indices) {
       if (corner.vertex_index < 0 || static_cast<size_t>(corner.vertex_index) >= positionCount ||
           (corner.normal_index >= 0 && static_cast<size_t>(corner.normal_index) >= normalCount)) {
-        return Result<MeshData>::failure(name + ": a face index is out of range after parsing");
+        return Result<MeshData>::failure(name + ": a face refers to a vertex or normal that does not exist");
       }
     }
   }

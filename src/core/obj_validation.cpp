@@ -113,6 +113,10 @@ Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limi
         }
       }
       ++(keyword == "v" ? counts.positions : counts.normals);
+    } else if (keyword == "vw") {
+      // tinyobjloader's skin-weight extension converts its numbers to int unchecked.
+      return Result<ObjCounts>::failure(
+          lineError(lineNumber, "'vw' (skin weights) is not supported"));
     } else if (keyword == "vt") {
       ++counts.texcoords;
     } else if (keyword == "f") {

@@ -50,7 +50,7 @@ Result<SceneRenderer> SceneRenderer::create() {
   environmentProgram.program = environment.take();
   const ShaderProgram& c = cubeTextured.value();
   CubeTexturedProgram cubeTexturedProgram{ShaderProgram{}, c.uniform("u_viewProjection"),
-                                          c.uniform("u_model"), c.uniform("u_normalMatrix"),
+                                          c.uniform("u_model"), c.optionalUniform("u_normalMatrix"),
                                           c.uniform("u_environment")};
   cubeTexturedProgram.program = cubeTextured.take();
   return SceneRenderer(std::move(phongProgram), std::move(environmentProgram),

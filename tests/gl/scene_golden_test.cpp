@@ -9,41 +9,19 @@
 
 #include "app/headless_frames.h"
 #include "gl_fixture.h"
+#include "golden_compare.h"
 
 namespace reflect {
 namespace {
 
 constexpr int kSize = 512;
 
-// Thresholds against the golden image. The renderer is deterministic on one Mesa version (the
-// difference is 0 here); these leave room for another llvmpipe's rounding, and are far below what
-// a moved object, a flipped face or a missing reflection changes (thousands of pixels by >100).
-constexpr int kPixelTolerance = 16;        // per channel, 0..255
-constexpr double kMaxFractionOver = 0.002; // of pixels beyond the tolerance
-constexpr double kMaxMeanDifference = 0.5; // mean absolute channel difference
-
-void expectMatchesGolden(const RgbaImage& image, const std::string& name) {
-  const std::string output = testing::saveOutput(image, name);
-  const std::string golden = std::string(GOLDEN_DIR) + "/" + name;
-  if (std::getenv("REFLECT_UPDATE_GOLDEN")) {
-    std::filesystem::copy_file(output, golden, std::filesystem::copy_options::overwrite_existing);
-  }
-  auto expected = readPng(golden);
-  ASSERT_TRUE(expected) << expected.error() << " (REFLECT_UPDATE_GOLDEN=1 writes it)";
-  auto d = compareImages(image, expected.value(), kPixelTolerance);
-  ASSERT_TRUE(d) << d.error();
-  EXPECT_LE(d.value().fractionOver, kMaxFractionOver) << "see " << output;
-  EXPECT_LE(d.value().meanChannel, kMaxMeanDifference) << "see " << output;
-  std::printf("%s: max %d, mean %.4f, over %.5f\n", name.c_str(), d.value().maxChannel,
-              d.value().meanChannel, d.value().fractionOver);
-}
-
 TEST(DefaultScene, MatchesGoldenAtTwoTimes) {
   auto demo = testing::makeDemo(makeDynamicReflectionScene());
   for (double t : {0.0, 5.0}) {
     auto image = renderFrameAt(*demo, t, kSize, kSize);
     ASSERT_TRUE(image) << image.error();
-    expectMatchesGolden(image.value(), "ex12_2_t" + std::to_string(static_cast<int>(t)) + ".png");
+    testing::expectMatchesGolden(image.value(), "ex12_2_t" + std::to_string(static_cast<int>(t)) + ".png");
   }
 }
 

@@ -25,12 +25,14 @@ int fail(const std::string& message) {
 }
 
 Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, bool reflectorAsPhong) {
-  reflect::Scene scene = reflect::makeDynamicReflectionScene();
+  Result<reflect::Scene> loaded = reflect::loadNamedScene(o.scene);
+  if (!loaded) return Result<std::unique_ptr<Demo>>::failure(loaded.error());
+  reflect::Scene scene = loaded.take();
   if (reflectorAsPhong) {
     for (reflect::SceneObject& object : scene.objects) object.material = reflect::Material::Phong;
   }
   auto demo = std::make_unique<Demo>(scene);
-  demo->setCubeFaceSize(o.cubeSize);
+  if (o.cubeSizeSet) demo->setCubeFaceSize(o.cubeSize);
   demo->setPlannerSettings(o.planner);
   demo->camera().setAngles(o.yawDeg, o.pitchDeg);
   std::string error = reflect::loadSceneModels(*demo, o.assets);

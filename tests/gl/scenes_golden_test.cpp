@@ -1,0 +1,43 @@
+// Every shipped scene (assets/scenes/*.json) rendered headless at a fixed time against its golden
+// PNG, with the same thresholds as the default scene's test (see golden_compare.h).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "app/headless_frames.h"
+#include "gl_fixture.h"
+#include "golden_compare.h"
+#include "platform/native/model_paths.h"
+
+namespace reflect {
+namespace {
+
+class ShippedScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedScene, MatchesGoldenAtTwoSeconds) {
+  Result<Scene> scene = loadNamedScene(GetParam());
+  ASSERT_TRUE(scene) << scene.error();
+  auto demo = testing::makeDemo(scene.take());
+  auto image = renderFrameAt(*demo, 2.0, 320, 240);
+  ASSERT_TRUE(image) << image.error();
+  testing::expectMatchesGolden(image.value(), "scene_" + GetParam() + ".png");
+}
+
+std::vector<std::string> shippedScenes() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(builtInAssetDirectory() + "/scenes")) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllScenes, ShippedScene, ::testing::ValuesIn(shippedScenes()),
+                         [](const auto& param) {
+                           std::string name = param.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace reflect
