@@ -1,6 +1,6 @@
 // The page: loads the wasm module, feeds it the models, runs the frame loop, turns pointer and
 // key input into camera moves, shows stats and messages, and exposes window.demo for tests.
-import { loadModels } from './models.js';
+import { loadScene, sceneUrl } from './scene_loader.js';
 import { attachInput } from './input.js';
 import { showMessage } from './messages.js';
 import { StatsLine } from './stats.js';
@@ -18,9 +18,14 @@ async function start() {
   const Module = await createReflectModule({ canvas });
   const api = {
     create: Module.cwrap('rf_create', 'string', []),
-    meshNames: Module.cwrap('rf_mesh_names', 'string', []),
-    loadMesh: Module.cwrap('rf_load_mesh', 'string', ['string', 'number', 'number', 'string']),
-    initGraphics: Module.cwrap('rf_init_graphics', 'string', ['number']),
+    beginScene: Module.cwrap('rf_begin_scene', 'string', ['number', 'number', 'string']),
+    pendingFiles: Module.cwrap('rf_pending_files', 'string', []),
+    loadMesh: Module.cwrap('rf_load_mesh', 'string', ['number', 'string', 'number', 'number', 'string']),
+    skyboxImage: Module.cwrap('rf_pending_skybox_image', 'string', ['number', 'number', 'number', 'string']),
+    commitScene: Module.cwrap('rf_commit_scene', 'string', ['number']),
+    sceneJson: Module.cwrap('rf_scene_json', 'string', []),
+    setPlanner: Module.cwrap('rf_set_planner', 'string', ['string', 'number', 'number', 'number']),
+    planner: Module.cwrap('rf_planner_json', 'string', []),
     frame: Module.cwrap('rf_frame', 'string', ['number', 'number']),
     setTime: Module.cwrap('rf_set_time', null, ['number']),
     drag: Module.cwrap('rf_drag', null, ['number', 'number', 'number']),
@@ -34,16 +39,21 @@ async function start() {
   sizeCanvasToDisplay();
   new ResizeObserver(sizeCanvasToDisplay).observe(canvas);
 
-  const loadText = (name, bytes, source) => {
-    const ptr = Module._malloc(bytes.length);
-    Module.HEAPU8.set(bytes, ptr);
-    try { return api.loadMesh(name, ptr, bytes.length, source); } finally { Module._free(ptr); }
-  };
-  await loadModels(JSON.parse(api.meshNames()), params.get('assets'), loadText);
-
-  const cubeSize = Number(params.get('cube') || 256);
-  const initError = api.initGraphics(cubeSize);
-  if (initError) throw new Error(initError);
+  let cubeSize = 0;  // 0: the scene's own capture.faceSize
+  if (params.has('cube')) {
+    cubeSize = Number(params.get('cube'));
+    if (!Number.isInteger(cubeSize) || cubeSize < 1) {
+      showMessage(`cube=${params.get('cube')}: expected a whole number of pixels; using the scene's size`);
+      cubeSize = 0;
+    }
+  }
+  await loadScene(Module, api, sceneUrl(params.get('scene') || 'ex12-2'),
+                  { userPrefix: params.get('assets'), cubeSize });
+  if (params.has('policy')) {
+    const error = api.setPlanner(params.get('policy'), Number(params.get('slice') || 2),
+                                 Number(params.get('every') || 4), Number(params.get('lod') || 0));
+    if (error) showMessage(error);
+  }
 
   let paused = params.has('paused');
   if (params.has('t')) api.setTime(Number(params.get('t')));
@@ -58,11 +68,14 @@ async function start() {
   });
 
   let previous = null;
+  let lastError;
   const tick = (now) => {
     // Clamp the step so a tab that was hidden does not jump the animation.
     const dt = previous === null ? 0 : Math.min((now - previous) / 1000, 0.1);
     previous = now;
     lastStats = JSON.parse(api.frame(paused ? 0 : dt, 0));
+    if (lastStats.error && lastStats.error !== lastError) showMessage(lastStats.error);
+    lastError = lastStats.error;
     statsLine.update(now, lastStats, paused);
     requestAnimationFrame(tick);
   };
@@ -73,6 +86,18 @@ async function start() {
   window.demo.setTime = (t) => api.setTime(t);
   window.demo.pause = (on = true) => { paused = on; };
   window.demo.camera = () => JSON.parse(api.camera());
+  window.demo.scene = () => JSON.parse(api.sceneJson());
+  window.demo.planner = () => JSON.parse(api.planner());
+  window.demo.setPlanner = (policy, slice = 2, every = 4, lod = 0) => api.setPlanner(policy, slice, every, lod);
+  // Loads another scene; the current one stays on screen if it fails (the error is shown and thrown).
+  window.demo.loadScene = async (nameOrUrl) => {
+    try {
+      return await loadScene(Module, api, sceneUrl(nameOrUrl), { userPrefix: params.get('assets'), cubeSize });
+    } catch (e) {
+      showMessage(e.message);
+      throw e;
+    }
+  };
   resolveReady();
 }
 

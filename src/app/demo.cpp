@@ -1,5 +1,6 @@
 #include "app/demo.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -97,7 +98,12 @@ void Demo::setPlannerSettings(const PlannerSettings& settings) {
   plannerSettings_ = settings;
 }
 
-void Demo::setCubeFaceSize(int size) { scene_.capture.faceSize = size; }
+std::string Demo::setCubeFaceSize(int size) {
+  scene_.capture.faceSize = std::clamp(size, 1, kMaxCubeFaceSize);
+  if (scene_.capture.faceSize == size) return {};
+  return "cube size " + std::to_string(size) + " is outside 1.." +
+         std::to_string(kMaxCubeFaceSize) + "; using " + std::to_string(scene_.capture.faceSize);
+}
 
 unsigned Demo::environmentTexture() const {
   const int reflector = scene_.reflectorIndex();
@@ -110,6 +116,10 @@ std::string Demo::initGraphics() {
   Result<SceneRenderer> renderer = SceneRenderer::create();
   if (!renderer) return renderer.error();
   renderer_ = std::make_unique<SceneRenderer>(renderer.take());
+  // The GL may allow less than kMaxCubeFaceSize; capture targets are made at what it allows.
+  GLint maxCubeSize = 0;
+  glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &maxCubeSize);
+  scene_.capture.faceSize = std::clamp(scene_.capture.faceSize, 1, std::max(1, maxCubeSize));
   gpuTimer_ = std::make_unique<GpuTimer>();
   for (const auto& [name, levels] : meshes_) {
     for (size_t lod = 0; lod < levels.size(); ++lod) {
@@ -121,6 +131,12 @@ std::string Demo::initGraphics() {
     if (!error.empty()) return error;
   }
   return checkGlError("init graphics") ? std::string() : "GL error while creating resources";
+}
+
+void Demo::releaseGraphics() {
+  renderer_.reset();
+  gpuTimer_.reset();
+  planner_.invalidate();
 }
 
 void Demo::loseGraphics() {
@@ -176,7 +192,8 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
       renderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
   gpuTimer_->end();
   if (!capture) {
-    std::fprintf(stderr, "capture failed: %s\n", capture.error().c_str());
+    stats_.error = "capture failed: " + capture.error();
+    std::fprintf(stderr, "%s\n", stats_.error.c_str());
     planner_.invalidate();  // nothing it planned was drawn
   } else {
     stats_.captureDrawCalls = capture.value().drawCalls;

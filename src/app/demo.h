@@ -50,6 +50,8 @@ class Demo {
   std::string initGraphics();
   // The context is gone: forget GL names without calling GL.
   void loseGraphics();
+  // Frees the GL resources (the context stays); initGraphics makes them again.
+  void releaseGraphics();
   bool graphicsReady() const { return renderer_ != nullptr; }
 
   // Advances the clock by dt seconds and renders one complete frame (planned capture, then main
@@ -63,7 +65,10 @@ class Demo {
   const FrameStats& lastStats() const { return stats_; }
   const PlannerSettings& plannerSettings() const { return plannerSettings_; }
   void setPlannerSettings(const PlannerSettings& settings);
-  void setCubeFaceSize(int size);
+  // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;
+  // returns a message when it had to clamp.
+  std::string setCubeFaceSize(int size);
+  static constexpr int kMaxCubeFaceSize = 4096;  // 6 x 4096^2 x 4 bytes = 400 MB already
   // The live cube map of the scene's first reflector (0 before the first capture), for tests.
   unsigned environmentTexture() const;
 

@@ -4,6 +4,23 @@
 
 namespace reflect {
 
+std::string jsonQuote(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string FrameStats::toJson() const {
   char buffer[768];
   std::snprintf(buffer, sizeof buffer,
@@ -15,7 +32,9 @@ std::string FrameStats::toJson() const {
                 frameMs, captureMs, timing, gpuFrameMs, gpuCaptureMs, policy, probes, facesCaptured, drawCalls(),
                 triangles(), captureDrawCalls, captureTriangles, mainDrawCalls, mainTriangles,
                 cubeFaceSize, timeSeconds, orbitDegrees);
-  return buffer;
+  std::string json = buffer;
+  if (!error.empty()) json.insert(json.size() - 1, ",\"error\":" + jsonQuote(error));
+  return json;
 }
 
 }  // namespace reflect

@@ -25,10 +25,14 @@ struct FrameStats {
   int cubeFaceSize = 0;
   double timeSeconds = 0;
   double orbitDegrees = 0;
+  std::string error;  // what went wrong this frame (the page shows it), or empty
 
   int drawCalls() const { return captureDrawCalls + mainDrawCalls; }
   size_t triangles() const { return captureTriangles + mainTriangles; }
   std::string toJson() const;
 };
+
+// s as a JSON string literal, quotes included.
+std::string jsonQuote(const std::string& s);
 
 }  // namespace reflect

@@ -20,6 +20,10 @@ void LookCamera::setAngles(float yawDeg, float pitchDeg) {
   pitchDeg_ = glm::clamp(pitchDeg, -kMaxPitchDeg, kMaxPitchDeg);
 }
 
+void LookCamera::setEye(const glm::vec3& eye) {
+  if (std::isfinite(eye.x) && std::isfinite(eye.y) && std::isfinite(eye.z)) eye_ = eye;
+}
+
 void LookCamera::move(float steps) {
   if (!std::isfinite(steps)) return;
   eye_ += viewDirection() * (steps * kMoveStep);

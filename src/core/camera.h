@@ -33,6 +33,8 @@ class LookCamera {
   float yawDeg() const { return yawDeg_; }
   float pitchDeg() const { return pitchDeg_; }
   void setAngles(float yawDeg, float pitchDeg);
+  // Ignored when not finite (a shared link with garbage in it keeps the current eye).
+  void setEye(const glm::vec3& eye);
   glm::vec3 viewDirection() const;
   glm::mat4 view() const;
   // aspect = width / height of the target; a non-finite or non-positive aspect falls back to 1.

@@ -32,7 +32,10 @@ Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, bool reflectorAsPhon
     for (reflect::SceneObject& object : scene.objects) object.material = reflect::Material::Phong;
   }
   auto demo = std::make_unique<Demo>(scene);
-  if (o.cubeSizeSet) demo->setCubeFaceSize(o.cubeSize);
+  if (o.cubeSizeSet) {
+    const std::string notice = demo->setCubeFaceSize(o.cubeSize);
+    if (!notice.empty()) std::fprintf(stderr, "reflect: %s\n", notice.c_str());
+  }
   demo->setPlannerSettings(o.planner);
   demo->camera().setAngles(o.yawDeg, o.pitchDeg);
   std::string error = reflect::loadSceneModels(*demo, o.assets);
