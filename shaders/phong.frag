@@ -10,6 +10,10 @@ uniform float u_ambient;
 uniform float u_diffuse;
 uniform float u_specular;
 uniform float u_shininess;
+// Distance-corrected captures store each texel's distance from the probe centre in alpha
+// (u_storeDistance = 1); otherwise alpha is 1.
+uniform int u_storeDistance;
+uniform vec3 u_probeCentre;
 
 out vec4 fragColour;
 
@@ -23,5 +27,6 @@ void main() {
     vec3 R = reflect(-L, N);
     colour += vec3(u_specular * pow(clamp(dot(R, V), 0.0, 1.0), u_shininess));
   }
-  fragColour = vec4(colour, 1.0);
+  float alpha = u_storeDistance == 1 ? length(v_worldPosition - u_probeCentre) : 1.0;
+  fragColour = vec4(colour, alpha);
 }

@@ -59,6 +59,18 @@ const char* cliHelp() {
          "  --warmup N       bench: frames before timing (default 10)\n"
          "  --growth         bench: frame ms for 1/4/16 reflectors x 10k/100k/1M triangles,\n"
          "                   with a probe each and with neighbours sharing probes\n"
+         "accuracy (see README, Speed and accuracy):\n"
+         "  --distance K     distance-corrected lookup with K iterations (0 = plain, the course)\n"
+         "  --origin         capture at (0,0,0) as the course does, not the reflector's centre\n"
+         "  --depth B        capture depth bits, 16 or 24 (default 24)\n"
+         "  --mipmaps        trilinear lookup from mipmapped captures\n"
+         "  --half-float     RGBA16F captures (distance correction implies it)\n"
+         "  --mediump        fragment shaders at mediump precision\n"
+         "  --sweep          bench: every accuracy setting (capture point, distance-corrected\n"
+         "                   lookup, face size, depth bits, filtering, RGBA16F, precision):\n"
+         "                   frame ms and error against the ray-traced reference\n"
+         "  --csv FILE       sweep: write the rows as CSV (name, ms, psnr_db, rmse, p95, ...)\n"
+         "  --svg FILE       sweep: write a plot of error against time with the Pareto front\n"
          "  --accuracy-frames N  bench: frames compared with every-frame (default 60)\n"
          "  --policy P       capture update policy: every-frame (the course), when-changed\n"
          "                   (default), time-sliced, every-n\n"
@@ -84,8 +96,16 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       o.command = "help";
       continue;
     }
-    if (flag == "--growth") {
-      o.growth = true;
+    if (flag == "--growth" || flag == "--sweep") {
+      (flag == "--growth" ? o.growth : o.sweep) = true;
+      continue;
+    }
+    if (flag == "--origin" || flag == "--mipmaps" || flag == "--half-float" || flag == "--mediump") {
+      bool& on = flag == "--origin"    ? o.accuracy.captureAtOrigin
+                 : flag == "--mipmaps" ? o.accuracy.mipmaps
+                 : flag == "--half-float" ? o.accuracy.halfFloat
+                                          : o.accuracy.mediump;
+      on = true;
       continue;
     }
     if (i + 1 >= args.size()) return Out::failure(flag + ": missing value");
@@ -98,6 +118,15 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       ok = parseNumber(value, &o.time);
     } else if (flag == "--out") {
       o.out = value;
+    } else if (flag == "--distance") {
+      ok = parseInt(value, 0, 16, &o.accuracy.distanceIterations);
+    } else if (flag == "--depth") {
+      ok = parseInt(value, 16, 24, &o.accuracy.depthBits) &&
+           (o.accuracy.depthBits == 16 || o.accuracy.depthBits == 24);
+    } else if (flag == "--csv") {
+      o.csv = value;
+    } else if (flag == "--svg") {
+      o.svg = value;
     } else if (flag == "--scene") {
       o.scene = value;
     } else if (flag == "--assets") {

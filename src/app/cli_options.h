@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/accuracy_settings.h"
 #include "core/frame_planner.h"
 #include "core/result.h"
 
@@ -25,9 +26,13 @@ struct CliOptions {
   float pitchDeg = 0.0f;
   // Capture planning. `policySet`: bench times just this policy instead of comparing them all.
   PlannerSettings planner;
+  AccuracySettings accuracy;
   bool policySet = false;
   int accuracyFrames = 60;
-  bool growth = false;  // bench: frame time against reflectors and triangles  // bench: frames compared against the every-frame policy
+  bool growth = false;  // bench: frame time against reflectors and triangles
+  bool sweep = false;   // bench: accuracy settings against the ray-traced reference
+  std::string csv;      // sweep: CSV output
+  std::string svg;      // sweep: SVG plot output  // bench: frames compared against the every-frame policy
 };
 
 Result<CliOptions> parseCli(const std::vector<std::string>& args);

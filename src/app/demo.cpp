@@ -113,7 +113,7 @@ unsigned Demo::environmentTexture() const {
 std::string Demo::initGraphics() {
   renderer_.reset();
   planner_.invalidate();  // a new renderer has no captures yet
-  Result<SceneRenderer> renderer = SceneRenderer::create();
+  Result<SceneRenderer> renderer = SceneRenderer::create(accuracy_);
   if (!renderer) return renderer.error();
   renderer_ = std::make_unique<SceneRenderer>(renderer.take());
   // The GL may allow less than kMaxCubeFaceSize; capture targets are made at what it allows.
@@ -131,6 +131,25 @@ std::string Demo::initGraphics() {
     if (!error.empty()) return error;
   }
   return checkGlError("init graphics") ? std::string() : "GL error while creating resources";
+}
+
+std::string Demo::setAccuracySettings(const AccuracySettings& settings) {
+  if (settings.depthBits != 16 && settings.depthBits != 24) return "depth bits must be 16 or 24";
+  if (settings.distanceIterations < 0 || settings.distanceIterations > 16) {
+    return "distance iterations must be 0..16";
+  }
+  if (settings == accuracy_) return {};
+  accuracy_ = settings;
+  ++optionsRevision_;
+  return renderer_ ? initGraphics() : std::string();
+}
+
+void Demo::renderLookupDirections(unsigned framebuffer, int width, int height) {
+  if (!renderer_ || width < 1 || height < 1) return;
+  const ViewParams view{camera_.view(),
+                        camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
+                        camera_.eye()};
+  renderer_->drawMain(scene_, clock_.seconds(), view, framebuffer, width, height, true);
 }
 
 void Demo::releaseGraphics() {
@@ -166,6 +185,7 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
     p.probed = object.needsLiveProbe();
     p.probeGroup = object.probeGroup;
     p.probeCentre = object.probeCentre;
+    if (accuracy_.captureAtOrigin) p.probeCentre = glm::vec3(0.0f);  // where the course captures
     planned.push_back(p);
   }
   return planned;

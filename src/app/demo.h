@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/frame_stats.h"
+#include "core/accuracy_settings.h"
 #include "core/animation_clock.h"
 #include "core/camera.h"
 #include "core/frame_planner.h"
@@ -64,6 +65,13 @@ class Demo {
   const Scene& scene() const { return scene_; }
   const FrameStats& lastStats() const { return stats_; }
   const PlannerSettings& plannerSettings() const { return plannerSettings_; }
+  const AccuracySettings& accuracySettings() const { return accuracy_; }
+  // Rebuilds the GL resources when they exist (programs and capture targets depend on it).
+  // Returns "" or a message.
+  std::string setAccuracySettings(const AccuracySettings& settings);
+  // Renders the main view with mirrors and glass writing the direction they look up (RGB) into
+  // `framebuffer` (a float target), for the accuracy measurement. Time does not advance.
+  void renderLookupDirections(unsigned framebuffer, int width, int height);
   void setPlannerSettings(const PlannerSettings& settings);
   // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;
   // returns a message when it had to clamp.
@@ -84,6 +92,7 @@ class Demo {
   AnimationClock clock_;
   FramePlanner planner_;
   PlannerSettings plannerSettings_;
+  AccuracySettings accuracy_;
   uint32_t optionsRevision_ = 0;
   std::unique_ptr<SceneRenderer> renderer_;
   std::unique_ptr<GpuTimer> gpuTimer_;

@@ -10,11 +10,13 @@ class AnimationClock {
  public:
   static constexpr double kOrbitDegreesPerSecond = 27.0;
 
+  // Times whose angle would overflow (beyond DBL_MAX / 27 seconds) are refused like non-finite
+  // ones: fmod(inf, 360) is NaN.
   void advance(double dtSeconds) {
-    if (std::isfinite(dtSeconds) && dtSeconds > 0.0) seconds_ += dtSeconds;
+    if (std::isfinite(dtSeconds) && dtSeconds > 0.0) set(seconds_ + dtSeconds);
   }
   void set(double seconds) {
-    if (std::isfinite(seconds)) seconds_ = seconds;
+    if (std::isfinite(seconds * kOrbitDegreesPerSecond)) seconds_ = seconds;
   }
   double seconds() const { return seconds_; }
   // Wrapped into [0, 360) in double precision before it becomes a float angle.

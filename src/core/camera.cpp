@@ -45,7 +45,10 @@ glm::vec3 LookCamera::viewDirection() const {
 }
 
 glm::mat4 LookCamera::view() const {
-  return glm::lookAt(eye_, eye_ + viewDirection(), glm::vec3(0.0f, 1.0f, 0.0f));
+  // Turned at the origin, then moved: lookAt(eye, eye + d) subtracts two nearly equal vectors and
+  // loses d's low bits far from the origin (0.13 degrees off at 1e5 units, NaN by 1e8).
+  return glm::lookAt(glm::vec3(0.0f), viewDirection(), glm::vec3(0.0f, 1.0f, 0.0f)) *
+         glm::translate(glm::mat4(1.0f), -eye_);
 }
 
 glm::mat4 LookCamera::projection(float aspect) const {

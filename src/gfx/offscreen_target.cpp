@@ -4,7 +4,7 @@
 
 namespace reflect {
 
-Result<OffscreenTarget> OffscreenTarget::create(int width, int height) {
+Result<OffscreenTarget> OffscreenTarget::create(int width, int height, bool floatColour) {
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
   if (width < 1 || height < 1 || width > maxSize || height > maxSize) {
@@ -17,7 +17,7 @@ Result<OffscreenTarget> OffscreenTarget::create(int width, int height) {
   t.height_ = height;
   t.colour_ = RenderbufferHandle(genRenderbuffer());
   glBindRenderbuffer(GL_RENDERBUFFER, t.colour_.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glRenderbufferStorage(GL_RENDERBUFFER, floatColour ? GL_RGBA32F : GL_RGBA8, width, height);
   t.depth_ = RenderbufferHandle(genRenderbuffer());
   glBindRenderbuffer(GL_RENDERBUFFER, t.depth_.id());
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
@@ -45,6 +45,22 @@ RgbaImage OffscreenTarget::readPixels() const {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   flipRows(image);
   return image;
+}
+
+std::vector<glm::vec3> OffscreenTarget::readFloats() const {
+  std::vector<float> rgba(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  std::vector<glm::vec3> out(static_cast<size_t>(width_) * static_cast<size_t>(height_));
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      const size_t from = (static_cast<size_t>(height_ - 1 - y) * static_cast<size_t>(width_) + static_cast<size_t>(x)) * 4;
+      out[static_cast<size_t>(y) * static_cast<size_t>(width_) + static_cast<size_t>(x)] =
+          {rgba[from], rgba[from + 1], rgba[from + 2]};
+    }
+  }
+  return out;
 }
 
 }  // namespace reflect

@@ -2,6 +2,10 @@
 // the GL tests); readPixels returns what was drawn, top row first.
 #pragma once
 
+#include <vector>
+
+#include <glm/glm.hpp>
+
 #include "core/image.h"
 #include "core/result.h"
 #include "gfx/gl_handle.h"
@@ -10,12 +14,15 @@ namespace reflect {
 
 class OffscreenTarget {
  public:
-  static Result<OffscreenTarget> create(int width, int height);
+  // floatColour: RGBA32F (needs EXT_color_buffer_float), read with readFloats.
+  static Result<OffscreenTarget> create(int width, int height, bool floatColour = false);
 
   GLuint framebuffer() const { return framebuffer_.id(); }
   int width() const { return width_; }
   int height() const { return height_; }
   RgbaImage readPixels() const;
+  // RGB of every pixel of a float target, top row first.
+  std::vector<glm::vec3> readFloats() const;
 
  private:
   RenderbufferHandle colour_;

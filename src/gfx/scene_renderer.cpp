@@ -17,19 +17,21 @@ void setObjectMatrices(GLint model, GLint normalMatrix, const glm::mat4& m) {
   glUniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normal));
 }
 
-void clearTo(const glm::vec3& colour) {
-  glClearColor(colour.r, colour.g, colour.b, 1.0f);
+void clearTo(const glm::vec3& colour, float alpha = 1.0f) {
+  glClearColor(colour.r, colour.g, colour.b, alpha);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
 }  // namespace
 
-Result<SceneRenderer> SceneRenderer::create() {
-  Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag");
+Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
+  const bool mediump = accuracy.mediump;
+  Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag", mediump);
   if (!phong) return Result<SceneRenderer>::failure(phong.error());
-  Result<ShaderProgram> environment = ShaderProgram::build("mesh.vert", "environment.frag");
+  Result<ShaderProgram> environment = ShaderProgram::build("mesh.vert", "environment.frag", mediump);
   if (!environment) return Result<SceneRenderer>::failure(environment.error());
-  Result<ShaderProgram> cubeTextured = ShaderProgram::build("mesh.vert", "cube_textured.frag");
+  Result<ShaderProgram> cubeTextured =
+      ShaderProgram::build("mesh.vert", "cube_textured.frag", mediump);
   if (!cubeTextured) return Result<SceneRenderer>::failure(cubeTextured.error());
 
   const ShaderProgram& p = phong.value();
@@ -38,7 +40,8 @@ Result<SceneRenderer> SceneRenderer::create() {
                             p.uniform("u_colour"),  p.uniform("u_lightPosition"),
                             p.uniform("u_viewPosition"), p.uniform("u_ambient"),
                             p.uniform("u_diffuse"), p.uniform("u_specular"),
-                            p.uniform("u_shininess")};
+                            p.uniform("u_shininess"), p.uniform("u_storeDistance"),
+                            p.uniform("u_probeCentre")};
   phongProgram.program = phong.take();
   const ShaderProgram& e = environment.value();
   EnvironmentProgram environmentProgram{
@@ -46,7 +49,8 @@ Result<SceneRenderer> SceneRenderer::create() {
       e.uniform("u_normalMatrix"), e.uniform("u_colour"), e.uniform("u_viewPosition"),
       e.uniform("u_reflectionWeight"), e.uniform("u_baseWeight"), e.uniform("u_refracts"),
       e.uniform("u_eta"),     e.uniform("u_fresnelF0"), e.uniform("u_fresnel"),
-      e.uniform("u_environment")};
+      e.uniform("u_environment"), e.uniform("u_distanceIterations"), e.uniform("u_probeCentre"),
+      e.uniform("u_outputDirection")};
   environmentProgram.program = environment.take();
   const ShaderProgram& c = cubeTextured.value();
   CubeTexturedProgram cubeTexturedProgram{ShaderProgram{}, c.uniform("u_viewProjection"),
@@ -54,14 +58,21 @@ Result<SceneRenderer> SceneRenderer::create() {
                                           c.uniform("u_environment")};
   cubeTexturedProgram.program = cubeTextured.take();
   return SceneRenderer(std::move(phongProgram), std::move(environmentProgram),
-                       std::move(cubeTexturedProgram));
+                       std::move(cubeTexturedProgram), accuracy);
 }
 
 SceneRenderer::SceneRenderer(PhongProgram phong, EnvironmentProgram environment,
-                             CubeTexturedProgram cubeTextured)
+                             CubeTexturedProgram cubeTextured, const AccuracySettings& accuracy)
     : phong_(std::move(phong)),
       environment_(std::move(environment)),
-      cubeTextured_(std::move(cubeTextured)) {}
+      cubeTextured_(std::move(cubeTextured)),
+      accuracy_(accuracy) {}
+
+glm::vec3 SceneRenderer::probeCentreOf(int index) const {
+  auto owner = ownerOf_.find(index);
+  auto it = centres_.find(owner == ownerOf_.end() ? index : owner->second);
+  return it == centres_.end() ? glm::vec3(0.0f) : it->second;
+}
 
 void SceneRenderer::setMesh(const std::string& name, int lod, const MeshData& mesh) {
   std::vector<MeshBuffer>& levels = meshes_[name];
@@ -93,7 +104,8 @@ GLuint SceneRenderer::environmentTexture(const Scene& scene, int index) const {
 }
 
 void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
-                        const glm::vec3& viewPosition) {
+                        const glm::vec3& viewPosition, const glm::vec3* distanceCentre,
+                        bool outputDirections) {
   current_ = kind;
   switch (kind) {
     case ProgramKind::Phong:
@@ -105,12 +117,15 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
       glUniform1f(phong_.diffuse, scene.light.diffuse);
       glUniform1f(phong_.specular, scene.light.specular);
       glUniform1f(phong_.shininess, scene.light.shininess);
+      glUniform1i(phong_.storeDistance, distanceCentre ? 1 : 0);
+      if (distanceCentre) glUniform3fv(phong_.probeCentre, 1, glm::value_ptr(*distanceCentre));
       break;
     case ProgramKind::Environment:
       glUseProgram(environment_.program.id());
       glUniformMatrix4fv(environment_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
       glUniform3fv(environment_.viewPosition, 1, glm::value_ptr(viewPosition));
       glUniform1i(environment_.environment, kEnvironmentTextureUnit);
+      glUniform1i(environment_.outputDirection, outputDirections ? 1 : 0);
       break;
     case ProgramKind::CubeTextured:
       glUseProgram(cubeTextured_.program.id());
@@ -140,6 +155,10 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item, d
       glUniform1f(environment_.eta, 1.0f / n);
       glUniform1f(environment_.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
       glUniform1i(environment_.fresnel, object.fresnel ? 1 : 0);
+      // Only a live probe has distances (and a centre); the skybox is at infinity.
+      const bool live = object.environment == Environment::LiveProbe;
+      glUniform1i(environment_.distanceIterations, live ? accuracy_.distanceIterations : 0);
+      glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(probeCentreOf(item.object)));
       break;
     }
     case ProgramKind::CubeTextured:
@@ -158,7 +177,8 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item, d
 PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds,
                                     const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
                                     const glm::vec3& viewPosition,
-                                    const glm::vec3& environmentViewPosition) {
+                                    const glm::vec3& environmentViewPosition,
+                                    const glm::vec3* distanceCentre, bool outputDirections) {
   PassCounts counts;
   // One program switch per material kind present: Phong first, then the environment users.
   for (ProgramKind kind : {ProgramKind::Phong, ProgramKind::Environment, ProgramKind::CubeTextured}) {
@@ -170,8 +190,8 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds,
                                                                : ProgramKind::Environment;
       if (wanted != kind) continue;
       if (!inUse) {
-        use(kind, scene, viewProj,
-            kind == ProgramKind::Phong ? viewPosition : environmentViewPosition);
+        use(kind, scene, viewProj, kind == ProgramKind::Phong ? viewPosition : environmentViewPosition,
+            distanceCentre, outputDirections);
       }
       inUse = true;
       counts += drawObject(scene, d, seconds);
@@ -189,25 +209,32 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
   ownerOf_.clear();
   for (const ProbePlan& probe : plan.probes) {
     for (int member : probe.members) ownerOf_[member] = probe.reflector;
+    centres_[probe.reflector] = probe.centre;
   }
+  const CaptureFormat format{scene.capture.faceSize, accuracy_.usesHalfFloat(),
+                             accuracy_.depthBits, accuracy_.mipmaps};
+  const bool storeDistance = accuracy_.distanceIterations > 0;
   for (const ProbePlan& probe : plan.probes) {
     if (probe.faces.empty()) continue;
     auto target = probes_.find(probe.reflector);
-    if (target == probes_.end() || target->second.faceSize() != scene.capture.faceSize) {
-      Result<CubeCaptureTarget> created = CubeCaptureTarget::create(scene.capture.faceSize);
+    if (target == probes_.end() || !(target->second.format() == format)) {
+      Result<CubeCaptureTarget> created = CubeCaptureTarget::create(format);
       if (!created) return Result<PassCounts>::failure(created.error());
       probes_.erase(probe.reflector);
       target = probes_.emplace(probe.reflector, created.take()).first;
     }
     for (const FacePlan& face : probe.faces) {
       target->second.bindFace(face.face);
-      clearTo(scene.clearColour);
+      // Where nothing is drawn the stored distance is the far plane's (the background).
+      clearTo(scene.clearColour, storeDistance ? scene.capture.far : 1.0f);
       const glm::mat4 view = cubeFaceView(probe.centre, face.face);
       // Other mirrors in view use their cube as it was before this frame's capture of them
       // (one bounce); they are seen from the probe centre.
-      counts += drawItems(scene, seconds, face.draws, projection * view, lightingEye, probe.centre);
-      if (skybox_) skybox_->draw(projection, view);
+      counts += drawItems(scene, seconds, face.draws, projection * view, lightingEye, probe.centre,
+                          storeDistance ? &probe.centre : nullptr, false);
+      if (skybox_) skybox_->draw(projection, view, storeDistance ? scene.capture.far : 1.0f);
     }
+    target->second.finish();
   }
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -216,7 +243,8 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
 }
 
 PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const ViewParams& camera,
-                                   unsigned framebuffer, int width, int height) {
+                                   unsigned framebuffer, int width, int height,
+                                   bool outputDirections) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
@@ -224,8 +252,8 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Vie
   clearTo(scene.clearColour);
   std::vector<DrawItem> all;
   for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) all.push_back({i, 0, {}, 0});
-  PassCounts counts =
-      drawItems(scene, seconds, all, camera.projection * camera.view, camera.eye, camera.eye);
+  PassCounts counts = drawItems(scene, seconds, all, camera.projection * camera.view, camera.eye,
+                                camera.eye, nullptr, outputDirections);
   if (skybox_) skybox_->draw(camera.projection, camera.view);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindVertexArray(0);
@@ -242,6 +270,7 @@ void SceneRenderer::abandon() {
   for (auto& [index, target] : probes_) target.abandon();
   probes_.clear();
   ownerOf_.clear();
+  centres_.clear();
   for (auto& [name, levels] : meshes_) {
     for (MeshBuffer& level : levels) level.abandon();
   }

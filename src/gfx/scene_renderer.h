@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/accuracy_settings.h"
 #include "core/frame_planner.h"
 #include "core/mesh_data.h"
 #include "core/result.h"
@@ -40,7 +41,8 @@ struct PassCounts {
 
 class SceneRenderer {
  public:
-  static Result<SceneRenderer> create();
+  static Result<SceneRenderer> create(const AccuracySettings& accuracy = {});
+  const AccuracySettings& accuracy() const { return accuracy_; }
 
   // Uploads (or replaces) level `lod` of the mesh the scene knows by `name` (0 = full detail;
   // setting level 0 drops the coarser levels, which belonged to the old mesh).
@@ -53,8 +55,10 @@ class SceneRenderer {
   // as seen from it. Probe targets are created (or resized) on first use.
   Result<PassCounts> capture(const Scene& scene, double seconds, const FramePlan& plan,
                              const glm::vec3& lightingEye);
+  // With `outputDirections`, mirrors and glass write the direction they look up (unit vector in
+  // RGB) instead of a colour: the accuracy measurement reads it back from a float target.
   PassCounts drawMain(const Scene& scene, double seconds, const ViewParams& camera,
-                      unsigned framebuffer, int width, int height);
+                      unsigned framebuffer, int width, int height, bool outputDirections = false);
 
   // The cube map that object `index` samples: its live probe's, or the skybox (0 if none yet).
   GLuint environmentTexture(const Scene& scene, int index) const;
@@ -65,12 +69,13 @@ class SceneRenderer {
   struct PhongProgram {
     ShaderProgram program;
     GLint viewProjection, model, normalMatrix, colour, lightPosition, viewPosition, ambient,
-        diffuse, specular, shininess;
+        diffuse, specular, shininess, storeDistance, probeCentre;
   };
   struct EnvironmentProgram {
     ShaderProgram program;
     GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
-        refracts, eta, fresnelF0, fresnel, environment;
+        refracts, eta, fresnelF0, fresnel, environment, distanceIterations, probeCentre,
+        outputDirection;
   };
   struct CubeTexturedProgram {
     ShaderProgram program;
@@ -78,14 +83,18 @@ class SceneRenderer {
   };
   enum class ProgramKind { Phong, Environment, CubeTextured };
 
-  SceneRenderer(PhongProgram phong, EnvironmentProgram environment, CubeTexturedProgram cubeTextured);
+  SceneRenderer(PhongProgram phong, EnvironmentProgram environment, CubeTexturedProgram cubeTextured,
+                const AccuracySettings& accuracy);
   // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
+  // `distanceCentre`: the probe centre whose distances a capture stores (null in the main pass).
   PassCounts drawItems(const Scene& scene, double seconds, const std::vector<DrawItem>& draws,
                        const glm::mat4& viewProj, const glm::vec3& viewPosition,
-                       const glm::vec3& environmentViewPosition);
+                       const glm::vec3& environmentViewPosition, const glm::vec3* distanceCentre,
+                       bool outputDirections);
   PassCounts drawObject(const Scene& scene, const DrawItem& item, double seconds);
   void use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
-           const glm::vec3& viewPosition);
+           const glm::vec3& viewPosition, const glm::vec3* distanceCentre, bool outputDirections);
+  glm::vec3 probeCentreOf(int index) const;
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;
@@ -94,6 +103,8 @@ class SceneRenderer {
   std::unique_ptr<SkyboxPass> skybox_;
   std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
   std::map<int, int> ownerOf_;                // probed object -> owner of the probe it samples
+  std::map<int, glm::vec3> centres_;          // owner -> where its probe captured from
+  AccuracySettings accuracy_;
   std::map<std::string, std::vector<MeshBuffer>> meshes_;  // levels of detail by mesh name
   ProgramKind current_ = ProgramKind::Phong;
 };

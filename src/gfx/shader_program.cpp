@@ -8,7 +8,8 @@
 namespace reflect {
 namespace {
 
-constexpr const char* kPrelude = "#version 300 es\nprecision highp float;\n";
+constexpr const char* kHighp = "#version 300 es\nprecision highp float;\n";
+constexpr const char* kMediump = "#version 300 es\nprecision mediump float;\n";
 
 std::string infoLog(GLuint object, bool isProgram) {
   GLint length = 0;
@@ -26,11 +27,13 @@ std::string infoLog(GLuint object, bool isProgram) {
   return log.data();
 }
 
-Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* body) {
+Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* body,
+                             bool mediump) {
   const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
   if (!body) return Result<ShaderHandle>::failure("shader " + file + ": not embedded in this build");
   ShaderHandle shader(glCreateShader(stage));
-  const char* sources[2] = {kPrelude, body};
+  // Vertex shaders stay highp (positions); fragments may trade precision for speed.
+  const char* sources[2] = {stage == GL_FRAGMENT_SHADER && mediump ? kMediump : kHighp, body};
   glShaderSource(shader.id(), 2, sources, nullptr);
   glCompileShader(shader.id());
   GLint ok = GL_FALSE;
@@ -45,18 +48,18 @@ Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* 
 }  // namespace
 
 Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile,
-                                           const std::string& fragmentFile) {
+                                           const std::string& fragmentFile, bool mediump) {
   return buildFromSource(vertexFile, embeddedShader(vertexFile), fragmentFile,
-                         embeddedShader(fragmentFile));
+                         embeddedShader(fragmentFile), mediump);
 }
 
 Result<ShaderProgram> ShaderProgram::buildFromSource(const std::string& vertexFile,
                                                      const char* vertexSource,
                                                      const std::string& fragmentFile,
-                                                     const char* fragmentSource) {
-  Result<ShaderHandle> vs = compile(GL_VERTEX_SHADER, vertexFile, vertexSource);
+                                                     const char* fragmentSource, bool mediump) {
+  Result<ShaderHandle> vs = compile(GL_VERTEX_SHADER, vertexFile, vertexSource, false);
   if (!vs) return Result<ShaderProgram>::failure(vs.error());
-  Result<ShaderHandle> fs = compile(GL_FRAGMENT_SHADER, fragmentFile, fragmentSource);
+  Result<ShaderHandle> fs = compile(GL_FRAGMENT_SHADER, fragmentFile, fragmentSource, mediump);
   if (!fs) return Result<ShaderProgram>::failure(fs.error());
 
   ShaderProgram result;

@@ -14,14 +14,16 @@ inline constexpr GLuint kAttribNormal = 1;
 
 class ShaderProgram {
  public:
-  // Prepends "#version 300 es" and the float precision in one place. Failure carries the stage,
+  // Prepends "#version 300 es" and the float precision in one place (fragment shaders mediump
+  // when asked). Failure carries the stage,
   // the file name and the driver's log.
-  static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile);
+  static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
+                                     bool mediump = false);
   // The same from GLSL text (without #version); the names label messages. For tools and tests.
   static Result<ShaderProgram> buildFromSource(const std::string& vertexName,
                                                const char* vertexSource,
                                                const std::string& fragmentName,
-                                               const char* fragmentSource);
+                                               const char* fragmentSource, bool mediump = false);
 
   GLuint id() const { return program_.id(); }
   // -1 (and a message on stderr) for a uniform the program does not have.

@@ -17,7 +17,7 @@ class SkyboxPass {
 
   // Draws the sky where nothing else is (depth LEQUAL at the far plane). `view` may contain a
   // translation: only its rotation is used.
-  void draw(const glm::mat4& projection, const glm::mat4& view) const;
+  void draw(const glm::mat4& projection, const glm::mat4& view, float alpha = 1.0f) const;
   GLuint texture() const { return texture_.id(); }
   void abandon();
 
@@ -25,6 +25,7 @@ class SkyboxPass {
   ShaderProgram program_;
   GLint viewRotationProjection_ = -1;
   GLint skybox_ = -1;
+  GLint alpha_ = -1;
   TextureHandle texture_;
   VertexArrayHandle vao_;
   BufferHandle vertices_;

@@ -1,8 +1,10 @@
 #include "reference/accuracy.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "app/headless_frames.h"
+#include "gfx/offscreen_target.h"
 
 namespace reflect {
 
@@ -77,10 +79,32 @@ Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int heig
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const double seconds = demo.clock().seconds();
   const MeshLookup meshes = [&demo](const std::string& name) { return demo.meshLevel(name, 0); };
+  // The true directions are measured from where the probe really captured.
+  Scene scene = demo.scene();
+  if (demo.accuracySettings().captureAtOrigin) {
+    for (SceneObject& o : scene.objects) {
+      if (o.needsLiveProbe()) o.probeCentre = glm::vec3(0.0f);
+    }
+  }
   Result<ReferenceFrame> reference =
-      renderReference(demo.scene(), meshes, demo.camera(), seconds, width, height);
+      renderReference(scene, meshes, demo.camera(), seconds, width, height);
   if (!reference) return Result<AccuracyReport>::failure(reference.error());
-  Result<AccuracyReport> report = compareWithReference(raster.value(), reference.value());
+  // What the raster really looked up (plain or distance-corrected), per pixel, from the GPU.
+  Result<OffscreenTarget> directions = OffscreenTarget::create(width, height, true);
+  if (!directions) return Result<AccuracyReport>::failure(directions.error());
+  demo.renderLookupDirections(directions.value().framebuffer(), width, height);
+  const std::vector<glm::vec3> looked = directions.value().readFloats();
+  ReferenceFrame& ref = reference.value();
+  size_t k = 0;
+  for (size_t p = 0; p < ref.reflectorMask.size(); ++p) {
+    if (!ref.reflectorMask[p]) continue;
+    const glm::vec3 d = looked[p];
+    // Only unit vectors are directions: a pixel the raster's mirror does not cover (silhouette;
+    // a colour or the background there) keeps the analytic R.
+    if (k < ref.lookupDirs.size() && std::abs(glm::length(d) - 1.0f) < 1e-3f) ref.lookupDirs[k] = d;
+    ++k;
+  }
+  Result<AccuracyReport> report = compareWithReference(raster.value(), ref);
   if (!report) return report;
   report.value().timeSeconds = t;
   report.value().rasterMs = rasterMs;

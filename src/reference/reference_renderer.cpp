@@ -239,6 +239,7 @@ glm::vec3 probeCentre(const Scene& scene, const MeshLookup& meshes, double secon
     }
   }
   if (members.size() == 1) {
+    if (self.probeCentre) return *self.probeCentre;
     const MeshData* mesh = meshes(self.mesh);
     if (!mesh) return glm::vec3(scene.modelMatrix(self, seconds)[3]);
     return glm::vec3(scene.modelMatrix(self, seconds) * glm::vec4(mesh->bounds.centre(), 1.0f));

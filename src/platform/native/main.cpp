@@ -10,6 +10,7 @@
 #include "app/headless_frames.h"
 #include "app/policy_bench.h"
 #include "core/image.h"
+#include "reference/sweep.h"
 #include "platform/native/egl_context.h"
 #include "platform/native/model_paths.h"
 
@@ -37,6 +38,8 @@ Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, bool reflectorAsPhon
     if (!notice.empty()) std::fprintf(stderr, "reflect: %s\n", notice.c_str());
   }
   demo->setPlannerSettings(o.planner);
+  std::string accuracyError = demo->setAccuracySettings(o.accuracy);
+  if (!accuracyError.empty()) return Result<std::unique_ptr<Demo>>::failure(accuracyError);
   demo->camera().setAngles(o.yawDeg, o.pitchDeg);
   std::string error = reflect::loadSceneModels(*demo, o.assets);
   if (error.empty()) error = demo->initGraphics();
@@ -134,6 +137,50 @@ int runPolicyBench(const CliOptions& o) {
   return 0;
 }
 
+// Every accuracy setting against the ray-traced reference: table, CSV, SVG.
+int runSweepBench(const CliOptions& o) {
+  reflect::SweepOptions options;
+  options.frames = o.frames == 120 ? 30 : o.frames;  // 120 is the bench default; 30 is enough here
+  CliOptions plain = o;
+  plain.accuracy = {};
+  const reflect::SweepDemoFactory factory = [&]() { return makeDemo(plain, false); };
+  auto rows = reflect::runSweep(factory, reflect::sweepSettings(), options);
+  if (!rows) return fail(rows.error());
+  std::printf("sweep: scene %s, %dx%d, every-frame capture, %d timed frames per setting, errors "
+              "over the reflector at t = 0, 2, 4 s against the Embree reference\n\n%s",
+              o.scene.c_str(), options.width, options.height, options.frames,
+              reflect::sweepTable(rows.value()).c_str());
+  const reflect::SweepRow* original = nullptr;
+  const reflect::SweepRow* byDefault = nullptr;
+  const reflect::SweepRow* centre = nullptr;
+  for (const auto& r : rows.value()) {
+    if (r.setting.name == "original") original = &r;
+    if (r.setting.name == "default") byDefault = &r;
+    if (r.setting.name == "centre") centre = &r;
+  }
+  if (original && byDefault && centre) {
+    std::printf("\ndefault vs original: %+.2f dB reflector PSNR at %.2fx the frame time\n",
+                byDefault->psnrDb - original->psnrDb, byDefault->medianMs / original->medianMs);
+    std::printf("distance-corrected (default) mean angular error %.3f deg = %.2fx the plain "
+                "lookup's (centre) %.3f deg\n",
+                byDefault->meanAngularErrorDeg,
+                byDefault->meanAngularErrorDeg / centre->meanAngularErrorDeg,
+                centre->meanAngularErrorDeg);
+  }
+  auto write = [](const std::string& path, const std::string& text) {
+    if (path.empty()) return true;
+    FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) return false;
+    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    return std::fclose(f) == 0 && ok;
+  };
+  if (!write(o.csv, reflect::sweepCsv(rows.value()))) return fail(o.csv + ": cannot write");
+  if (!write(o.svg, reflect::sweepSvg(rows.value()))) return fail(o.svg + ": cannot write");
+  if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
+  if (!o.svg.empty()) std::printf("wrote %s\n", o.svg.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -148,6 +195,7 @@ int main(int argc, char** argv) {
   if (!context) return fail(context.error());
   if (o.command == "render") return runRender(o);
   std::printf("GL: %s\n", context.value()->description().c_str());
+  if (o.sweep) return runSweepBench(o);
   if (o.growth) {
     reflect::GrowthOptions options;
     options.width = o.width;

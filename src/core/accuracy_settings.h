@@ -1,0 +1,32 @@
+// The knobs that trade speed for accuracy in the capture and the lookup (measured by
+// `reflect bench --sweep` against the ray-traced reference).
+#pragma once
+
+#include <string>
+
+namespace reflect {
+
+struct AccuracySettings {
+  bool captureAtOrigin = false;  // the course's capture point (0,0,0), not the reflector's centre
+  // 0: plain lookup along R (the course). k > 0: distance-corrected lookup, the "distance
+  // impostor" of Szirmay-Kalos et al. (2005): the capture stores each texel's distance from the
+  // probe centre, and the reflected ray from the surface point is intersected with that depth
+  // in k Newton steps before the lookup. Needs RGBA16F captures.
+  int distanceIterations = 0;
+  int depthBits = 24;        // capture depth buffer: 16 or 24
+  bool mipmaps = false;      // trilinear lookup from a mip chain rebuilt after each capture
+  bool halfFloat = false;    // RGBA16F capture colour instead of RGBA8
+  bool mediump = false;      // fragment shaders at mediump instead of highp
+
+  bool usesHalfFloat() const { return halfFloat || distanceIterations > 0; }
+  bool operator==(const AccuracySettings& o) const {
+    return captureAtOrigin == o.captureAtOrigin && distanceIterations == o.distanceIterations &&
+           depthBits == o.depthBits && mipmaps == o.mipmaps && halfFloat == o.halfFloat &&
+           mediump == o.mediump;
+  }
+  bool operator!=(const AccuracySettings& o) const { return !(*this == o); }
+  // e.g. "centre, distance x2, depth 24, linear, RGBA16F, highp"
+  std::string describe() const;
+};
+
+}  // namespace reflect

@@ -1,0 +1,220 @@
+#include "reference/sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "app/headless_frames.h"
+#include "gfx/offscreen_target.h"
+#include "reference/accuracy.h"
+
+namespace reflect {
+
+std::vector<SweepSetting> sweepSettings() {
+  AccuracySettings course;  // the course: captured at the origin, 16-bit depth, plain lookup
+  course.captureAtOrigin = true;
+  course.depthBits = 16;
+  AccuracySettings centre;  // plain lookup from the reflector's centre
+  AccuracySettings corrected = centre;  // the shipped default: see README "Speed and accuracy"
+  corrected.distanceIterations = 2;
+
+  std::vector<SweepSetting> s = {{"original", course, 256}, {"default", corrected, 256},
+                                 {"centre", centre, 256}};
+  for (int size : {32, 64, 128, 512, 1024}) s.push_back({"size-" + std::to_string(size), centre, size});
+  for (int k : {1, 2, 4}) {
+    AccuracySettings a = centre;
+    a.distanceIterations = k;
+    s.push_back({"distance-" + std::to_string(k), a, 256});
+  }
+  for (int size : {64, 128, 512}) s.push_back({"distance-2-size-" + std::to_string(size), corrected, size});
+  AccuracySettings a = centre;
+  a.depthBits = 16;
+  s.push_back({"depth-16", a, 256});
+  a = centre;
+  a.mipmaps = true;
+  s.push_back({"mipmapped", a, 256});
+  a = centre;
+  a.halfFloat = true;
+  s.push_back({"rgba16f", a, 256});
+  a = centre;
+  a.mediump = true;
+  s.push_back({"mediump", a, 256});
+  a = corrected;
+  a.mediump = true;
+  s.push_back({"distance-2-mediump", a, 256});
+  return s;
+}
+
+Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
+                                       const std::vector<SweepSetting>& settings,
+                                       const SweepOptions& o) {
+  using Out = Result<std::vector<SweepRow>>;
+  std::vector<std::unique_ptr<Demo>> demos;
+  for (const SweepSetting& s : settings) {
+    auto demo = makeDemo();
+    if (!demo) return Out::failure(demo.error());
+    PlannerSettings everyFrame;  // capture cost fully counted in every row
+    everyFrame.policy = UpdatePolicy::EveryFrame;
+    demo.value()->setPlannerSettings(everyFrame);
+    demo.value()->setCubeFaceSize(s.faceSize);
+    std::string error = demo.value()->setAccuracySettings(s.accuracy);
+    if (error.empty()) error = demo.value()->initGraphics();
+    if (!error.empty()) return Out::failure(s.name + ": " + error);
+    demos.push_back(demo.take());
+  }
+
+  // Timing, interleaved frame by frame.
+  Result<OffscreenTarget> target = OffscreenTarget::create(o.width, o.height);
+  if (!target) return Out::failure(target.error());
+  std::vector<std::vector<double>> ms(settings.size());
+  for (int frame = 0; frame < o.frames + 3; ++frame) {
+    for (size_t i = 0; i < demos.size(); ++i) {
+      const FrameStats& s =
+          demos[i]->frame(1.0 / 60.0, target.value().framebuffer(), o.width, o.height, true);
+      if (frame >= 3) ms[i].push_back(s.frameMs);
+    }
+  }
+
+  std::vector<SweepRow> rows;
+  for (size_t i = 0; i < settings.size(); ++i) {
+    SweepRow row;
+    row.setting = settings[i];
+    row.medianMs = median(ms[i]);
+    row.p10Ms = percentile(ms[i], 0.1);
+    row.p90Ms = percentile(ms[i], 0.9);
+    double mse = 0, p95 = 0, maxError = 0, angle = 0, offMse = 0;
+    for (double t : o.times) {
+      auto report = measureAccuracy(*demos[i], t, o.width, o.height);
+      if (!report) return Out::failure(settings[i].name + ": " + report.error());
+      const AccuracyReport& r = report.value();
+      mse += r.reflector.rmse * r.reflector.rmse;
+      offMse += r.offReflector.rmse * r.offReflector.rmse;
+      p95 += r.reflector.p95PixelError;
+      maxError = std::max(maxError, static_cast<double>(r.reflector.maxPixelError));
+      angle += r.meanAngularErrorDeg;
+    }
+    const double n = static_cast<double>(o.times.size());
+    auto psnr = [](double meanSquare) {
+      return meanSquare <= 0 ? 99.0 : std::min(99.0, 20.0 * std::log10(255.0 / std::sqrt(meanSquare)));
+    };
+    row.rmse = std::sqrt(mse / n);
+    row.psnrDb = psnr(mse / n);
+    row.offReflectorPsnrDb = psnr(offMse / n);
+    row.p95 = p95 / n;
+    row.maxError = maxError;
+    row.meanAngularErrorDeg = angle / n;
+    rows.push_back(row);
+    demos[i].reset();
+  }
+  for (SweepRow& r : rows) {
+    r.pareto = std::none_of(rows.begin(), rows.end(), [&](const SweepRow& other) {
+      return &other != &r && other.medianMs <= r.medianMs && other.psnrDb >= r.psnrDb &&
+             (other.medianMs < r.medianMs || other.psnrDb > r.psnrDb);
+    });
+  }
+  return rows;
+}
+
+std::string sweepTable(const std::vector<SweepRow>& rows) {
+  std::string out =
+      "| name | setting | face | frame ms median (p10-p90) | reflector PSNR dB | RMSE | p95 | max "
+      "| mean angular error deg | off-reflector PSNR dB | Pareto |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  char line[512];
+  for (const SweepRow& r : rows) {
+    std::snprintf(line, sizeof line,
+                  "| %s | %s | %d | %.2f (%.2f-%.2f) | %.2f | %.2f | %.1f | %.0f | %.3f | %.1f | %s |\n",
+                  r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
+                  r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95, r.maxError,
+                  r.meanAngularErrorDeg, r.offReflectorPsnrDb, r.pareto ? "yes" : "");
+    out += line;
+  }
+  return out;
+}
+
+std::string sweepCsv(const std::vector<SweepRow>& rows) {
+  std::string out =
+      "name,setting,face_size,ms,ms_p10,ms_p90,psnr_db,rmse,p95,max,mean_angular_error_deg,"
+      "off_reflector_psnr_db,pareto\n";
+  char line[512];
+  for (const SweepRow& r : rows) {
+    std::snprintf(line, sizeof line, "%s,\"%s\",%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.0f,%.4f,%.3f,%d\n",
+                  r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
+                  r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95, r.maxError,
+                  r.meanAngularErrorDeg, r.offReflectorPsnrDb, r.pareto ? 1 : 0);
+    out += line;
+  }
+  return out;
+}
+
+std::string sweepSvg(const std::vector<SweepRow>& rows) {
+  const double width = 760, height = 460, left = 70, right = 200, top = 30, bottom = 60;
+  double minMs = 1e9, maxMs = 0, minDb = 1e9, maxDb = 0;
+  for (const SweepRow& r : rows) {
+    minMs = std::min(minMs, r.medianMs);
+    maxMs = std::max(maxMs, r.medianMs);
+    minDb = std::min(minDb, r.psnrDb);
+    maxDb = std::max(maxDb, r.psnrDb);
+  }
+  minMs *= 0.9;
+  maxMs *= 1.05;
+  minDb = std::floor(minDb - 1);
+  maxDb = std::ceil(maxDb + 1);
+  auto x = [&](double ms) { return left + (ms - minMs) / (maxMs - minMs) * (width - left - right); };
+  auto y = [&](double db) { return height - bottom - (db - minDb) / (maxDb - minDb) * (height - top - bottom); };
+  std::string svg;
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+                "font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%%\" height=\"100%%\" "
+                "fill=\"white\"/>\n",
+                width, height);
+  svg += buf;
+  std::snprintf(buf, sizeof buf,
+                "<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"black\"/>\n"
+                "<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"black\"/>\n"
+                "<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">frame ms (median, every-frame "
+                "capture, lower is faster)</text>\n"
+                "<text x=\"16\" y=\"%.0f\" transform=\"rotate(-90 16 %.0f)\" text-anchor=\"middle\">"
+                "reflector PSNR vs ray-traced reference, dB (higher is better)</text>\n",
+                left, height - bottom, width - right, height - bottom, left, top, left,
+                height - bottom, (left + width - right) / 2, height - 20, (top + height - bottom) / 2,
+                (top + height - bottom) / 2);
+  svg += buf;
+  for (int i = 0; i <= 5; ++i) {
+    const double ms = minMs + (maxMs - minMs) * i / 5.0, db = minDb + (maxDb - minDb) * i / 5.0;
+    std::snprintf(buf, sizeof buf,
+                  "<text x=\"%.1f\" y=\"%.0f\" text-anchor=\"middle\">%.1f</text>\n"
+                  "<text x=\"%.0f\" y=\"%.1f\" text-anchor=\"end\">%.1f</text>\n",
+                  x(ms), height - bottom + 16, ms, left - 6, y(db) + 4, db);
+    svg += buf;
+  }
+  std::vector<const SweepRow*> front;
+  for (const SweepRow& r : rows) {
+    if (r.pareto) front.push_back(&r);
+  }
+  std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->medianMs < b->medianMs; });
+  std::string points;
+  for (const SweepRow* r : front) {
+    std::snprintf(buf, sizeof buf, "%.1f,%.1f ", x(r->medianMs), y(r->psnrDb));
+    points += buf;
+  }
+  svg += "<polyline fill=\"none\" stroke=\"#d33\" stroke-width=\"2\" points=\"" + points + "\"/>\n";
+  for (const SweepRow& r : rows) {
+    const bool special = r.setting.name == "original" || r.setting.name == "default";
+    std::snprintf(buf, sizeof buf,
+                  "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%d\" fill=\"%s\"/>\n"
+                  "<text x=\"%.1f\" y=\"%.1f\"%s>%s</text>\n",
+                  x(r.medianMs), y(r.psnrDb), special ? 5 : 3,
+                  r.pareto ? "#d33" : "#557", x(r.medianMs) + 6, y(r.psnrDb) - 4,
+                  special ? " font-weight=\"bold\"" : "", r.setting.name.c_str());
+    svg += buf;
+  }
+  std::snprintf(buf, sizeof buf,
+                "<text x=\"%.0f\" y=\"%.0f\" fill=\"#d33\">red line: Pareto front</text>\n</svg>\n",
+                width - right + 10, top + 10);
+  svg += buf;
+  return svg;
+}
+
+}  // namespace reflect
