@@ -15,7 +15,8 @@ uniform float u_eta;         // n1 / n2 for refract(): air to the material
 uniform float u_fresnelF0;   // ((n - 1) / (n + 1))^2
 uniform int u_fresnel;       // 0 fixed mix, 1 Schlick
 uniform samplerCube u_environment;
-// Distance-corrected lookup: the capture's alpha holds each texel's distance from u_probeCentre.
+// Distance-corrected lookup: the capture's alpha holds each texel's distance d from u_probeCentre,
+// encoded as d / (d + 1).
 uniform int u_distanceIterations;  // 0 = plain lookup along the ray direction (the course)
 uniform vec3 u_probeCentre;
 uniform int u_outputDirection;     // 1: write the looked-up direction instead (for measuring)
@@ -23,20 +24,55 @@ uniform int u_outputDirection;     // 1: write the looked-up direction instead (
 out vec4 fragColour;
 
 // The direction from the probe centre to where the ray from the surface point x along d meets
-// the captured surroundings: Newton steps on f(t) = dist(x + t d) - |x + t d| = 0, starting from
-// the distance seen along d itself. With no iterations it is d, the course's plain lookup.
+// the captured surroundings (the capture's alpha holds each texel's distance from the centre).
+// As in the distance-impostor method: a linear search along the ray, parametrised so that a in
+// [0, 1) covers the whole ray (t = a / (1 - a) units), finds the first sample behind the stored
+// surface (so thin, near objects are not skipped), then u_distanceIterations secant steps refine
+// the crossing. With no iterations it is d, the course's plain lookup.
+const int kLinearSteps = 24;
+
+float storedDistance(vec3 direction) {
+  float a = min(texture(u_environment, direction).a, 0.9999);
+  return a / (1.0 - a);
+}
+
+float behind(vec3 x, vec3 d, float a) {  // > 0 in front of the stored surface, < 0 behind it
+  vec3 p = x + (a / (1.0 - a)) * d;
+  return storedDistance(p) - length(p);
+}
+
 vec3 lookupDirection(vec3 d) {
   if (u_distanceIterations == 0) return d;
   vec3 x = v_worldPosition - u_probeCentre;
-  float t = texture(u_environment, d).a;
-  for (int i = 0; i < u_distanceIterations; ++i) {
-    vec3 p = x + t * d;
-    float len = max(length(p), 1e-4);
-    // d|p|/dt = dot(p/|p|, d); keep the step sane where the ray runs across the view.
-    t += (texture(u_environment, p).a - len) / max(dot(p / len, d), 0.2);
-    t = max(t, 0.0);
+  float previousA = 0.0;
+  float previousF = behind(x, d, 0.0);
+  float a = 0.0;
+  float f = previousF;
+  bool crossed = false;
+  for (int i = 1; i <= kLinearSteps; ++i) {
+    a = float(i) / float(kLinearSteps + 1);
+    f = behind(x, d, a);
+    if (f < 0.0) {
+      crossed = true;
+      break;
+    }
+    previousA = a;
+    previousF = f;
   }
-  return x + t * d;
+  if (!crossed) return d;  // nothing stored along the ray: the far background, seen along d
+  for (int i = 0; i < u_distanceIterations; ++i) {
+    float middle = previousA + (a - previousA) * previousF / max(previousF - f, 1e-6);
+    float fm = behind(x, d, middle);
+    if (fm < 0.0) {
+      a = middle;
+      f = fm;
+    } else {
+      previousA = middle;
+      previousF = fm;
+    }
+  }
+  float hit = previousA + (a - previousA) * previousF / max(previousF - f, 1e-6);
+  return x + (hit / (1.0 - hit)) * d;
 }
 
 void main() {

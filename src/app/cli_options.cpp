@@ -50,6 +50,8 @@ const char* cliHelp() {
          "  --scene S        a scene: a name from assets/scenes (ex12-2, ex12-1, glass-sphere,\n"
          "                   two-mirrors, shared-probe, skybox, ex12-2-fresnel) or a .json file\n"
          "                   (default ex12-2)\n"
+         "  --reference FILE render: also write the exact (ray-traced, Embree) frame and print the\n"
+         "                   reflector's error against it\n"
          "  --assets DIR     take the models from DIR by the course's file names\n"
          "                   (mario.obj sonic.obj sphere.obj quad.obj)\n"
          "  --cube N         cube-map face size (default 256)\n"
@@ -60,11 +62,12 @@ const char* cliHelp() {
          "  --growth         bench: frame ms for 1/4/16 reflectors x 10k/100k/1M triangles,\n"
          "                   with a probe each and with neighbours sharing probes\n"
          "accuracy (see README, Speed and accuracy):\n"
-         "  --distance K     distance-corrected lookup with K iterations (0 = plain, the course)\n"
+         "  --distance K     distance-corrected lookup with K secant steps (default 2;\n"
+         "                   0 = plain lookup, the course's)\n"
          "  --origin         capture at (0,0,0) as the course does, not the reflector's centre\n"
          "  --depth B        capture depth bits, 16 or 24 (default 24)\n"
          "  --mipmaps        trilinear lookup from mipmapped captures\n"
-         "  --half-float     RGBA16F captures (distance correction implies it)\n"
+         "  --half-float     RGBA16F captures instead of RGBA8\n"
          "  --mediump        fragment shaders at mediump precision\n"
          "  --sweep          bench: every accuracy setting (capture point, distance-corrected\n"
          "                   lookup, face size, depth bits, filtering, RGBA16F, precision):\n"
@@ -123,6 +126,8 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
     } else if (flag == "--depth") {
       ok = parseInt(value, 16, 24, &o.accuracy.depthBits) &&
            (o.accuracy.depthBits == 16 || o.accuracy.depthBits == 24);
+    } else if (flag == "--reference") {
+      o.referenceOut = value;
     } else if (flag == "--csv") {
       o.csv = value;
     } else if (flag == "--svg") {

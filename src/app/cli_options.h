@@ -31,6 +31,7 @@ struct CliOptions {
   int accuracyFrames = 60;
   bool growth = false;  // bench: frame time against reflectors and triangles
   bool sweep = false;   // bench: accuracy settings against the ray-traced reference
+  std::string referenceOut;  // render: also write the ray-traced reference of the same frame
   std::string csv;      // sweep: CSV output
   std::string svg;      // sweep: SVG plot output  // bench: frames compared against the every-frame policy
 };

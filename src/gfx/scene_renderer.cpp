@@ -214,6 +214,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
   const CaptureFormat format{scene.capture.faceSize, accuracy_.usesHalfFloat(),
                              accuracy_.depthBits, accuracy_.mipmaps};
   const bool storeDistance = accuracy_.distanceIterations > 0;
+  const float farAlpha = scene.capture.far / (scene.capture.far + 1.0f);  // d / (d + 1) at far
   for (const ProbePlan& probe : plan.probes) {
     if (probe.faces.empty()) continue;
     auto target = probes_.find(probe.reflector);
@@ -226,13 +227,13 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
     for (const FacePlan& face : probe.faces) {
       target->second.bindFace(face.face);
       // Where nothing is drawn the stored distance is the far plane's (the background).
-      clearTo(scene.clearColour, storeDistance ? scene.capture.far : 1.0f);
+      clearTo(scene.clearColour, storeDistance ? farAlpha : 1.0f);
       const glm::mat4 view = cubeFaceView(probe.centre, face.face);
       // Other mirrors in view use their cube as it was before this frame's capture of them
       // (one bounce); they are seen from the probe centre.
       counts += drawItems(scene, seconds, face.draws, projection * view, lightingEye, probe.centre,
                           storeDistance ? &probe.centre : nullptr, false);
-      if (skybox_) skybox_->draw(projection, view, storeDistance ? scene.capture.far : 1.0f);
+      if (skybox_) skybox_->draw(projection, view, storeDistance ? farAlpha : 1.0f);
     }
     target->second.finish();
   }

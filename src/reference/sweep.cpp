@@ -14,9 +14,10 @@ std::vector<SweepSetting> sweepSettings() {
   AccuracySettings course;  // the course: captured at the origin, 16-bit depth, plain lookup
   course.captureAtOrigin = true;
   course.depthBits = 16;
-  AccuracySettings centre;  // plain lookup from the reflector's centre
-  AccuracySettings corrected = centre;  // the shipped default: see README "Speed and accuracy"
-  corrected.distanceIterations = 2;
+  course.distanceIterations = 0;
+  const AccuracySettings corrected;  // the shipped default (distance-corrected, RGBA8)
+  AccuracySettings centre = corrected;  // plain lookup from the reflector's centre
+  centre.distanceIterations = 0;
 
   std::vector<SweepSetting> s = {{"original", course, 256}, {"default", corrected, 256},
                                  {"centre", centre, 256}};
@@ -36,6 +37,9 @@ std::vector<SweepSetting> sweepSettings() {
   a = centre;
   a.halfFloat = true;
   s.push_back({"rgba16f", a, 256});
+  a = corrected;
+  a.halfFloat = true;
+  s.push_back({"distance-2-rgba16f", a, 256});
   a = centre;
   a.mediump = true;
   s.push_back({"mediump", a, 256});

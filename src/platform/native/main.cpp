@@ -10,6 +10,8 @@
 #include "app/headless_frames.h"
 #include "app/policy_bench.h"
 #include "core/image.h"
+#include "reference/accuracy.h"
+#include "reference/reference_renderer.h"
 #include "reference/sweep.h"
 #include "platform/native/egl_context.h"
 #include "platform/native/model_paths.h"
@@ -55,6 +57,28 @@ int runRender(const CliOptions& o) {
   std::string error = reflect::writePng(image.value(), o.out);
   if (!error.empty()) return fail(error);
   std::printf("wrote %s (%dx%d, t=%.3f s)\n", o.out.c_str(), o.width, o.height, o.time);
+  if (o.referenceOut.empty()) return 0;
+  const reflect::MeshLookup meshes = [&](const std::string& name) {
+    return demo.value()->meshLevel(name, 0);
+  };
+  reflect::Scene scene = demo.value()->scene();
+  if (o.accuracy.captureAtOrigin) {
+    for (auto& object : scene.objects) {
+      if (object.needsLiveProbe()) object.probeCentre = glm::vec3(0.0f);
+    }
+  }
+  auto reference = reflect::renderReference(scene, meshes, demo.value()->camera(),
+                                            demo.value()->clock().seconds(), o.width, o.height);
+  if (!reference) return fail(reference.error());
+  error = reflect::writePng(reference.value().image, o.referenceOut);
+  if (!error.empty()) return fail(error);
+  auto report = reflect::measureAccuracy(*demo.value(), o.time, o.width, o.height);
+  if (!report) return fail(report.error());
+  std::printf("wrote %s; reflector: PSNR %.2f dB, RMSE %.2f, p95 %d, max %d, mean angular error "
+              "%.3f deg\n",
+              o.referenceOut.c_str(), report.value().reflector.psnrDb, report.value().reflector.rmse,
+              report.value().reflector.p95PixelError, report.value().reflector.maxPixelError,
+              report.value().meanAngularErrorDeg);
   return 0;
 }
 
