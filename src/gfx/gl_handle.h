@@ -7,11 +7,16 @@
 
 namespace reflect {
 
+// GL objects owned by handles right now, for leak checks (a long run must not grow it).
+inline long gLiveGlObjects = 0;
+
 template <void (*Delete)(GLuint)>
 class GlHandle {
  public:
   GlHandle() = default;
-  explicit GlHandle(GLuint id) : id_(id) {}
+  explicit GlHandle(GLuint id) : id_(id) {
+    if (id_ != 0) ++gLiveGlObjects;
+  }
   ~GlHandle() { reset(); }
   GlHandle(const GlHandle&) = delete;
   GlHandle& operator=(const GlHandle&) = delete;
@@ -27,11 +32,17 @@ class GlHandle {
   GLuint id() const { return id_; }
   explicit operator bool() const { return id_ != 0; }
   void reset() {
-    if (id_ != 0) Delete(id_);
+    if (id_ != 0) {
+      Delete(id_);
+      --gLiveGlObjects;
+    }
     id_ = 0;
   }
   // After a lost context the names are already gone: forget them without calling GL.
-  void abandon() { id_ = 0; }
+  void abandon() {
+    if (id_ != 0) --gLiveGlObjects;
+    id_ = 0;
+  }
 
  private:
   GLuint id_ = 0;
