@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Builds native and web and runs every test: ctest (unit + headless GL), then Playwright in
-# Debian's Chromium. Installs what is missing first. Exits non-zero on any failure.
+# Builds native and web and runs every test: ctest (unit, headless GL, reference, extremes, the
+# 100,000-frame run), the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the
+# libFuzzer targets for a bounded time, then Playwright in Debian's Chromium.
+# Installs what is missing first. Exits non-zero on any failure.
+#   FUZZ_SECONDS=60 (per fuzz target)   SKIP_SANITIZERS=1 / SKIP_FUZZ=1 for a quicker local run
 set -euo pipefail
 cd "$(dirname "$0")"
 source tools/setup.sh
@@ -11,6 +14,18 @@ echo "== native build and ctest"
 cmake --preset native >/dev/null
 cmake --build --preset native
 ctest --preset native
+
+if [ -z "${SKIP_SANITIZERS:-}" ]; then
+  echo "== the ctest suite under ASan + UBSan (the long run is left out: it is slow there)"
+  cmake --preset asan >/dev/null
+  cmake --build --preset asan
+  ctest --preset asan -LE longrun
+fi
+
+if [ -z "${SKIP_FUZZ:-}" ]; then
+  echo "== fuzzers (${FUZZ_SECONDS:-60} s each)"
+  tools/run_fuzzers.sh "${FUZZ_SECONDS:-60}"
+fi
 
 echo "== web build and Playwright"
 cmake --preset web >/dev/null
