@@ -1,22 +1,26 @@
 #!/usr/bin/env node
-// A 900x600 screenshot of the demo for the README, from Debian's Chromium (headless, Playwright).
+// 900x600 screenshots of the demo for the README, from Debian's Chromium (headless, Playwright).
 //
-//   node tools/screenshot.mjs [OUT.png] [query]      (defaults: docs/screenshot.png '?paused&t=2')
+//   node tools/screenshot.mjs                        docs/screenshot.png (default scene, the panel
+//                                                    open) and docs/scene-NAME.png for every
+//                                                    scene in build/web/site/scenes (paused at
+//                                                    t=2, the panel closed)
+//   node tools/screenshot.mjs OUT.png [query]        one picture (query default '?paused&t=2')
 //
 // Serves build/web/site with tools/serve.mjs on a free port, waits for demo.ready, renders the
 // frame at the query's time and saves the page (canvas and its overlays) as a PNG.
 import { spawn } from 'node:child_process';
 import { createServer } from 'node:net';
-import { existsSync, mkdirSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from '@playwright/test';
 
 const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const site = join(repo, 'build/web/site');
-const out = resolve(process.argv[2] || join(repo, 'docs/screenshot.png'));
-let query = process.argv[3] || '?paused&t=2';
-if (!query.startsWith('?')) query = `?${query}`;
+const single = process.argv[2] ? resolve(process.argv[2]) : null;
+let singleQuery = process.argv[3] || '?paused&t=2';
+if (!singleQuery.startsWith('?')) singleQuery = `?${singleQuery}`;
 
 function freePort() {
   return new Promise((resolvePort, reject) => {
@@ -53,16 +57,35 @@ async function main() {
              '--disable-sync', '--no-first-run', '--disable-default-apps'],
     });
     const page = await browser.newPage({ viewport: { width: 900, height: 600 } });
-    await page.goto(url + query);
-    await page.waitForFunction(() => window.demo !== undefined);
-    await page.evaluate(() => window.demo.ready);
-    // Let the stats line fill in (it shows after a couple of display frames).
-    await page.waitForFunction(() => /fps/.test(document.getElementById('stats').textContent), null,
-                               { timeout: 10_000 });
-    await page.waitForTimeout(500);
-    mkdirSync(dirname(out), { recursive: true });
-    await page.screenshot({ path: out });
-    console.log(`wrote ${out} (900x600, ${query})`);
+    const problems = [];
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
+    const shoot = async (out, query, { panelOpen }) => {
+      await page.goto(url + query);
+      await page.waitForFunction(() => window.demo !== undefined);
+      await page.evaluate(() => window.demo.ready);
+      await page.evaluate((open) => window.demo.panel()?.open(open), panelOpen);
+      // Let the stats line fill in (it shows after a couple of display frames).
+      await page.waitForFunction(() => /fps/.test(document.getElementById('stats').textContent), null,
+                                 { timeout: 10_000 });
+      await page.waitForTimeout(500);
+      const errors = await page.locator('#messages .message.error').allTextContents();
+      if (errors.length) throw new Error(`${query}: the page shows an error: ${errors.join(' / ')}`);
+      mkdirSync(dirname(out), { recursive: true });
+      await page.screenshot({ path: out });
+      console.log(`wrote ${out} (900x600, ${query}${panelOpen ? ', panel open' : ', panel closed'})`);
+    };
+    if (single) {
+      await shoot(single, singleQuery, { panelOpen: true });
+    } else {
+      await shoot(join(repo, 'docs/screenshot.png'), '?paused&t=2', { panelOpen: true });
+      const scenes = readdirSync(join(site, 'scenes')).filter((f) => f.endsWith('.json')).sort();
+      for (const file of scenes) {
+        const name = file.replace(/\.json$/, '');
+        await shoot(join(repo, `docs/scene-${name}.png`), `?scene=${name}&paused&t=2`, { panelOpen: false });
+      }
+    }
+    for (const p of problems) console.log(`note: ${p}`);
   } finally {
     if (browser) await browser.close();
     server.kill();

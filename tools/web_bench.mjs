@@ -1,13 +1,21 @@
 #!/usr/bin/env node
-// Frame-time benchmark of the web build in Debian's Chromium (headless, via Playwright). Not a test:
-// it prints numbers and exits 0.
+// Benchmarks of the web build in Debian's Chromium (headless, via Playwright). Not a test: it
+// prints numbers and exits 0.
 //
-//   node tools/web_bench.mjs [--frames N] [--warmup N] [--size WxH] [--query '?paused&cube=128']
+//   node tools/web_bench.mjs [--scene NAME] [--frames N] [--size WxH] [--query '&cube=128']
+//   node tools/web_bench.mjs --raw [--frames N] [--warmup N] [--size WxH] [--query '?paused&cube=128']
 //
-// Serves build/web/site with tools/serve.mjs on a free port, loads the page (default ?paused) in an
-// 800x800 viewport, warms up, then times N calls of demo.frame(1/60) (each renders the cube capture
-// and the main pass and waits for the GPU). Reports the page's own frameMs / captureMs and the wall
-// time of each call: median, p10, p90; triangles and draw calls per frame; the GL renderer.
+// Default: the page's bench mode (?bench): on the scene, for each capture policy (every-frame,
+// when-changed, when-changed + LOD 0.5, time-sliced 2, every-n 4) it resets the time to 0 and
+// renders N frames of demo.frame(1/60), then prints frame ms (median, p10, p90), faces, draw calls
+// and triangles per frame, and the largest pixel difference from every-frame over the same
+// animation. --query adds to the page's query (e.g. '&cube=128').
+//
+// --raw: times N calls of demo.frame(1/60) under the page's own settings (default ?paused) after
+// a warm-up: the page's frameMs / captureMs and the wall time of each call (median, p10, p90);
+// triangles and draw calls per frame.
+//
+// Either way: serves build/web/site with tools/serve.mjs on a free port, 800x800 viewport.
 import { spawn } from 'node:child_process';
 import { createServer } from 'node:net';
 import { existsSync } from 'node:fs';
@@ -19,7 +27,7 @@ const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const site = join(repo, 'build/web/site');
 
 function parseArgs(argv) {
-  const options = { frames: 60, warmup: 10, width: 800, height: 800, query: '?paused' };
+  const options = { frames: 60, warmup: 10, width: 800, height: 800, query: null, scene: null, raw: false };
   for (let i = 0; i < argv.length; ++i) {
     const arg = argv[i];
     const value = () => {
@@ -29,19 +37,31 @@ function parseArgs(argv) {
     if (arg === '--frames') options.frames = Number(value());
     else if (arg === '--warmup') options.warmup = Number(value());
     else if (arg === '--query') options.query = value();
+    else if (arg === '--scene') options.scene = value();
+    else if (arg === '--raw') options.raw = true;
     else if (arg === '--size') {
       const m = /^(\d+)x(\d+)$/.exec(value());
       if (!m) throw new Error('--size wants WIDTHxHEIGHT');
       options.width = Number(m[1]);
       options.height = Number(m[2]);
     } else if (arg === '--help' || arg === '-h') {
-      console.log('usage: node tools/web_bench.mjs [--frames N] [--warmup N] [--size WxH] [--query Q]');
+      console.log('usage: node tools/web_bench.mjs [--scene NAME] [--frames N] [--size WxH] [--query Q]\n' +
+                  '       node tools/web_bench.mjs --raw [--frames N] [--warmup N] [--size WxH] [--query Q]');
       process.exit(0);
     } else throw new Error(`unknown argument ${arg}`);
   }
   if (!(Number.isInteger(options.frames) && options.frames > 0)) throw new Error('--frames wants a positive integer');
   if (!(Number.isInteger(options.warmup) && options.warmup >= 0)) throw new Error('--warmup wants an integer >= 0');
-  if (!options.query.startsWith('?')) options.query = `?${options.query}`;
+  if (options.scene !== null && !/^[\w.-]+$/.test(options.scene)) throw new Error('--scene wants a scene name like ex12-2');
+  if (options.raw) {
+    if (options.query === null) options.query = '?paused';
+    if (options.scene) options.query += `&scene=${options.scene}`;
+    if (!options.query.startsWith('?')) options.query = `?${options.query}`;
+  } else {
+    const extra = (options.query || '').replace(/^[?&]+/, '');
+    options.query = `?bench&frames=${options.frames}` + (options.scene ? `&scene=${options.scene}` : '') +
+                    (extra ? `&${extra}` : '');
+  }
   return options;
 }
 
@@ -124,6 +144,24 @@ async function main() {
       }
       return { renderer, vendor, width: canvas.width, height: canvas.height, userAgent: navigator.userAgent };
     });
+
+    if (!options.raw) {
+      // The page runs the bench itself after demo.ready; each policy's frames in one task.
+      const limitMs = Math.max(120_000, options.frames * 5 * 2000);
+      await page.waitForFunction(() => window.demo.benchResults || document.querySelector('#messages .message.error'),
+                                 null, { timeout: limitMs, polling: 500 });
+      const results = await page.evaluate(() => window.demo.benchResults);
+      if (!results) {
+        throw new Error(await page.locator('#messages .message.error').first().textContent());
+      }
+      console.log(`renderer:        ${info.renderer} (${info.vendor})`);
+      console.log(`browser:         ${info.userAgent}`);
+      console.log(`page:            ${options.query} at ${options.width}x${options.height} CSS px`);
+      console.log('');
+      console.log(results.table);
+      for (const p of problems) console.log(`note: ${p}`);
+      return;
+    }
 
     // All frames in one task: the page's own rAF loop cannot slip frames in between.
     const frames = await page.evaluate(({ warmup, count }) => {

@@ -1,20 +1,53 @@
-// The page: loads the wasm module, feeds it the models, runs the frame loop, turns pointer and
-// key input into camera moves, shows stats and messages, and exposes window.demo for tests.
-import { loadScene, sceneUrl } from './scene_loader.js';
-import { attachInput } from './input.js';
+// The page: loads the wasm module, feeds it the scenes and models, runs the frame loop, turns
+// pointer and key input into camera moves, shows the controls panel, live numbers and messages,
+// mirrors its settings in the URL, and exposes window.demo for tests and tools.
+import { runBench } from './bench.js';
+import { filesFromDrop, filesFromList, sortFiles } from './drop.js';
+import { attachInput, cameraBasis } from './input.js';
+import { buildLods } from './lod.js';
 import { showMessage } from './messages.js';
-import { StatsLine } from './stats.js';
+import { buildPanel, materialRows } from './panel.js';
+import {
+  loadScene, MAX_MODEL_BYTES, readFileBytes, sceneUrl, tooLargeMessage, withBytes,
+} from './scene_loader.js';
+import { frameTimes, Progress, Sparkline, StatsLine } from './stats.js';
+import { buildQuery, parseQuery } from './url_state.js';
 
-const params = new URLSearchParams(location.search);
+// The shipped scenes (assets/scenes/*.json), in the picker's order; titles come from the files.
+export const SCENES = ['ex12-2', 'ex12-1', 'ex12-2-fresnel', 'glass-sphere', 'two-mirrors',
+                       'shared-probe', 'skybox', 'skybox-grid'];
+const STEP = 0.1;  // scene units per key press (the C++ camera's move step)
+
 const canvas = document.getElementById('canvas');
 let resolveReady, rejectReady;
 const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });
 ready.catch(() => {});  // failures are shown on the page; tests await it themselves
 
+async function sceneTitles() {
+  return Promise.all(SCENES.map(async (name) => {
+    try {
+      const response = await fetch(sceneUrl(name));
+      const json = response.ok ? await response.json() : {};
+      return { name, title: json.title || name, description: json.description || '' };
+    } catch {
+      return { name, title: name, description: '' };
+    }
+  }));
+}
+
 async function start() {
   if (typeof WebGL2RenderingContext === 'undefined') {
     throw new Error('WebGL2 is not available in this browser, so the demo cannot run.');
   }
+  const { state: initial, problems } = parseQuery(location.search);
+  for (const problem of problems) showMessage(problem);
+  const titlesPromise = sceneTitles();
+  const guiPromise = import('./vendor/lil-gui.esm.js').then((m) => m.GUI, (e) => {
+    showMessage(`The controls panel could not be loaded (vendor/lil-gui.esm.js: ${e.message}); ` +
+                'keys and mouse still work.');
+    return null;
+  });
+
   const Module = await createReflectModule({ canvas });
   const api = {
     create: Module.cwrap('rf_create', 'string', []),
@@ -31,7 +64,12 @@ async function start() {
     drag: Module.cwrap('rf_drag', null, ['number', 'number', 'number']),
     move: Module.cwrap('rf_move', null, ['number']),
     resetCamera: Module.cwrap('rf_reset_camera', null, []),
+    setCamera: Module.cwrap('rf_set_camera', null, ['number', 'number', 'number', 'number', 'number']),
     camera: Module.cwrap('rf_camera_json', 'string', []),
+    meshVertices: Module.cwrap('rf_mesh_vertices', 'number', ['string', 'number']),
+    meshIndices: Module.cwrap('rf_mesh_indices', 'number', ['string', 'number']),
+    lodSettings: Module.cwrap('rf_lod_settings_json', 'string', []),
+    addLod: Module.cwrap('rf_add_lod', 'string', ['string', 'number', 'number']),
   };
   const createError = api.create();
   if (createError) throw new Error(createError);
@@ -39,66 +77,408 @@ async function start() {
   sizeCanvasToDisplay();
   new ResizeObserver(sizeCanvasToDisplay).observe(canvas);
 
-  let cubeSize = 0;  // 0: the scene's own capture.faceSize
-  if (params.has('cube')) {
-    cubeSize = Number(params.get('cube'));
-    if (!Number.isInteger(cubeSize) || cubeSize < 1) {
-      showMessage(`cube=${params.get('cube')}: expected a whole number of pixels; using the scene's size`);
-      cubeSize = 0;
-    }
-  }
-  await loadScene(Module, api, sceneUrl(params.get('scene') || 'ex12-2'),
-                  { userPrefix: params.get('assets'), cubeSize });
-  if (params.has('policy')) {
-    const error = api.setPlanner(params.get('policy'), Number(params.get('slice') || 2),
-                                 Number(params.get('every') || 4), Number(params.get('lod') || 0));
-    if (error) showMessage(error);
+  // --- state ------------------------------------------------------------------------------
+  const progress = new Progress(document.getElementById('progress'));
+  const overrides = new Map();  // mesh file name -> { bytes, source }: the user's dropped models
+  let cubeSize = initial.cube;  // 0: the scene's own capture.faceSize
+  let paused = initial.paused;
+  let sceneInfo = { name: initial.scene, title: '', json: null };
+  let homeCamera = null;  // the scene's own camera: cam= stays out of the URL while it is there
+  let lodLevels = {};
+  let lodReady = Promise.resolve({});
+  let suspended = false;  // the bench holds the frame loop
+  let lastStats = {};
+  let panel = null;
+  const settings = {
+    scene: initial.scene, cube: 0, policy: 'when-changed', slice: 2, every: 4, lod: 0,
+    staleness: '', lodLevels: '', paused,
+  };
+
+  // Scene changes, model replacements and the bench run one at a time (one pending scene).
+  let queue = Promise.resolve();
+  const serial = (job) => {
+    const run = queue.then(job);
+    queue = run.catch(() => {});
+    return run;
+  };
+
+  const camera = () => JSON.parse(api.camera());
+  const planner = () => JSON.parse(api.planner());
+
+  function syncSettings() {
+    const p = planner();
+    settings.scene = sceneInfo.name;
+    settings.cube = lastStats.cubeFaceSize || cubeSize || settings.cube;
+    settings.policy = p.policy;
+    settings.slice = p.facesPerFrame;
+    settings.every = p.everyN;
+    settings.lod = p.lod;
+    settings.staleness = p.maxStalenessFrames > 0
+      ? `up to ${p.maxStalenessFrames} frame${p.maxStalenessFrames > 1 ? 's' : ''} behind` : 'none: always current';
+    settings.lodLevels = Object.entries(lodLevels).filter(([, t]) => t.length > 1)
+      .map(([n, t]) => `${n.replace(/\.obj$/, '')} ${t.length}`).join(', ') || 'none built';
+    settings.paused = paused;
+    panel?.refresh();
   }
 
-  let paused = params.has('paused');
-  if (params.has('t')) api.setTime(Number(params.get('t')));
+  function rebuildLods(names = null) {
+    lodReady = buildLods(Module, api, names).then((built) => {
+      lodLevels = names ? { ...lodLevels, ...built } : built;
+      syncSettings();
+      return lodLevels;
+    });
+    return lodReady;
+  }
+
+  // Loads scene `name` (keepView: the same camera and time, for a cube-size change or a model
+  // reset). Throws with the message already shown; the old scene stays.
+  async function switchScene(name, { keepView = false } = {}) {
+    let view = null;
+    const beforeCommit = () => {
+      if (keepView) view = { camera: camera(), time: lastStats.time };
+    };
+    let loaded;
+    try {
+      loaded = await loadScene(Module, api, sceneUrl(name),
+                               { userPrefix: initial.assets, cubeSize, overrides, progress, beforeCommit });
+    } catch (e) {
+      showMessage(e.message);
+      e.shown = true;
+      syncSettings();
+      throw e;
+    }
+    const scene = JSON.parse(api.sceneJson());
+    sceneInfo = { name: scene.name, title: loaded.title, json: loaded.json };
+    homeCamera = camera();
+    if (view) {
+      api.setCamera(...view.camera.eye, view.camera.yaw, view.camera.pitch);
+      if (view.time !== undefined) api.setTime(view.time);
+    }
+    lastStats = JSON.parse(api.frame(0, 0));
+    lodLevels = {};
+    syncSettings();
+    panel?.showMaterials();
+    await rebuildLods();
+    return loaded.title;
+  }
+
+  function setPlanner(policy, slice, every, lod) {
+    const error = api.setPlanner(policy, slice, every, lod);
+    if (error) showMessage(error);
+    syncSettings();
+    return error;
+  }
+
+  // --- first scene, then the URL's settings -------------------------------------------------
+  await switchScene(initial.scene);
+  if (initial.policy !== null || initial.slice !== null || initial.every !== null || initial.lod !== null) {
+    const p = planner();
+    setPlanner(initial.policy ?? p.policy, initial.slice ?? p.facesPerFrame, initial.every ?? p.everyN,
+               initial.lod ?? p.lod);
+  }
+  if (initial.cam) api.setCamera(...initial.cam);
+  if (initial.t !== null) api.setTime(initial.t);
+
   const statsLine = new StatsLine(document.getElementById('stats'));
-  let lastStats = JSON.parse(api.frame(0, 1));
+  const sparkline = new Sparkline(document.getElementById('spark'));
+  lastStats = JSON.parse(api.frame(0, 1));
+
+  // --- actions -------------------------------------------------------------------------------
+  const help = document.getElementById('help-overlay');
+  const toggleHelp = (show = help.hidden) => { help.hidden = !show; };
+  const setPaused = (on) => { paused = on; settings.paused = on; };
+  const shift = (dx, dy, dz) => {
+    const c = camera();
+    api.setCamera(c.eye[0] + dx, c.eye[1] + dy, c.eye[2] + dz, c.yaw, c.pitch);
+  };
+  const strafe = (steps) => {
+    const { right } = cameraBasis(camera().yaw, camera().pitch);
+    shift(right[0] * STEP * steps, 0, right[2] * STEP * steps);
+  };
+  const rise = (steps) => shift(0, STEP * steps, 0);
+
+  function readPixels() {
+    const gl = canvas.getContext('webgl2');
+    const readBinding = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
+    const packBinding = gl.getParameter(gl.PIXEL_PACK_BUFFER_BINDING);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+    gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
+    const width = gl.drawingBufferWidth, height = gl.drawingBufferHeight;
+    const data = new Uint8Array(width * height * 4);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, data);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, readBinding);
+    gl.bindBuffer(gl.PIXEL_PACK_BUFFER, packBinding);
+    return { width, height, data };
+  }
+
+  // Renders a frame and saves the canvas as a PNG (read in the same task: the drawing buffer is
+  // not preserved). Resolves to the file name.
+  function screenshot() {
+    lastStats = JSON.parse(api.frame(0, 1));
+    const copy = document.createElement('canvas');
+    copy.width = canvas.width;
+    copy.height = canvas.height;
+    copy.getContext('2d').drawImage(canvas, 0, 0);
+    const name = `reflect-${sceneInfo.name}-t${(lastStats.time ?? 0).toFixed(2)}.png`;
+    return new Promise((resolve, reject) => copy.toBlob((blob) => {
+      if (!blob) { reject(new Error('the canvas could not be encoded as PNG')); return; }
+      const a = document.createElement('a');
+      a.href = URL.createObjectURL(blob);
+      a.download = name;
+      document.body.appendChild(a);
+      a.click();
+      a.remove();
+      setTimeout(() => URL.revokeObjectURL(a.href), 60_000);
+      resolve(name);
+    }, 'image/png'));
+  }
+
+  const currentQuery = () => buildQuery({
+    scene: sceneInfo.name, cube: cubeSize, planner: planner(), paused, time: lastStats.time,
+    camera: camera(), home: homeCamera, assets: initial.assets,
+  });
+  const syncUrl = () => {
+    const query = currentQuery();
+    if (query !== location.search) history.replaceState(null, '', location.pathname + query);
+  };
+
+  async function copyLink() {
+    syncUrl();
+    const link = location.href;
+    try {
+      if (!navigator.clipboard?.writeText) throw new Error('no clipboard');
+      await navigator.clipboard.writeText(link);
+      showMessage(`Link copied:\n${link}`, 'info', 5000);
+    } catch {
+      const box = showMessage('Copy this link (the clipboard is not available here):\n', 'info link');
+      const field = document.createElement('input');
+      field.value = link;
+      field.readOnly = true;
+      field.className = 'link-field';
+      box.insertBefore(field, box.lastChild);
+      field.select();
+    }
+    return link;
+  }
+
+  // The user's .obj files: those named like a model of the scene replace it; the rest are named.
+  function handleFiles(files) {
+    return serial(async () => {
+      const meshes = JSON.parse(api.sceneJson()).meshes || [];
+      const { replace, extra, ignored } = sortFiles(files, meshes);
+      const list = (fs) => fs.map((f) => f.path).join(', ');
+      if (ignored.length) showMessage(`${list(ignored)}: not .obj files; ignored`, 'info', 8000);
+      if (extra.length) {
+        showMessage(`${list(extra)}: no model of this scene has that name (${meshes.join(', ')}). ` +
+                    'Adding a new figure needs an add-object call the renderer does not have yet; ' +
+                    'name a file like one of these to replace it.', 'info');
+      }
+      const replaced = [];
+      for (const f of replace) {
+        if (f.file.size > MAX_MODEL_BYTES) {
+          showMessage(tooLargeMessage(f.path, f.file.size));
+          continue;
+        }
+        let bytes;
+        try {
+          bytes = await readFileBytes(f.file, progress.track(f.path));
+        } catch (e) {
+          showMessage(`${f.path}: could not be read (${e.message})`);
+          continue;
+        } finally {
+          progress.clear();
+        }
+        const error = withBytes(Module, bytes, (ptr, n) => api.loadMesh(0, f.mesh, ptr, n, f.path));
+        if (error) {
+          showMessage(`${error.includes(f.path) ? error : `${f.path}: ${error}`}\n(keeping the ${f.mesh} it had)`);
+          continue;
+        }
+        overrides.set(f.mesh, { bytes, source: f.path });
+        replaced.push(f);
+      }
+      if (replaced.length) {
+        lastStats = JSON.parse(api.frame(0, 0));
+        showMessage(replaced.map((f) => `${f.mesh} replaced by ${f.path}`).join('\n'), 'info', 5000);
+        await rebuildLods(replaced.map((f) => f.mesh));
+      }
+      return { replaced: replaced.map((f) => f.mesh), extra: extra.map((f) => f.path),
+               ignored: ignored.map((f) => f.path) };
+    });
+  }
+
+  const filesInput = document.getElementById('file-input');
+  const folderInput = document.getElementById('folder-input');
+  for (const input of [filesInput, folderInput]) {
+    input.addEventListener('change', () => {
+      const files = filesFromList(input.files);
+      input.value = '';
+      handleFiles(files);
+    });
+  }
+  const dropHint = document.getElementById('drop-hint');
+  let dragDepth = 0;
+  window.addEventListener('dragenter', (e) => {
+    if (![...(e.dataTransfer?.types || [])].includes('Files')) return;
+    ++dragDepth;
+    dropHint.hidden = false;
+  });
+  window.addEventListener('dragleave', () => {
+    dragDepth = Math.max(0, dragDepth - 1);
+    if (!dragDepth) dropHint.hidden = true;
+  });
+  window.addEventListener('dragover', (e) => { e.preventDefault(); });
+  window.addEventListener('drop', (e) => {
+    e.preventDefault();
+    dragDepth = 0;
+    dropHint.hidden = true;
+    filesFromDrop(e.dataTransfer).then(handleFiles);
+  });
+
+  let benchResults = null;
+  const benchBox = document.getElementById('bench-box');
+  function bench(frames = initial.frames || 60) {
+    return serial(async () => {
+      await lodReady;
+      const saved = { planner: planner(), time: lastStats.time };
+      suspended = true;
+      const status = document.getElementById('progress');
+      try {
+        benchResults = await runBench({
+          frame: (dt) => (lastStats = JSON.parse(api.frame(dt, 1))),
+          setTime: (t) => api.setTime(t),
+          setPlanner: (...args) => api.setPlanner(...args),
+          readPixels,
+          scene: () => JSON.parse(api.sceneJson()),
+        }, { frames, onProgress: (text) => { status.hidden = false; status.textContent = text; } });
+        document.getElementById('bench').textContent = benchResults.table;
+        benchBox.hidden = false;
+        console.info(benchResults.table);
+        window.demo.benchResults = benchResults;
+        return benchResults;
+      } catch (e) {
+        showMessage(e.message);
+        throw e;
+      } finally {
+        status.hidden = true;
+        status.textContent = '';
+        api.setPlanner(saved.planner.policy, saved.planner.facesPerFrame, saved.planner.everyN, saved.planner.lod);
+        if (saved.time !== undefined) api.setTime(saved.time);
+        suspended = false;
+        syncSettings();
+      }
+    });
+  }
+  document.getElementById('bench-close').onclick = () => { benchBox.hidden = true; };
 
   attachInput(canvas, {
     drag: (dx, dy) => api.drag(dx, dy, canvas.clientHeight),
     move: (steps) => api.move(steps),
+    strafe,
+    rise,
     reset: () => api.resetCamera(),
-    togglePause: () => { paused = !paused; },
+    togglePause: () => setPaused(!paused),
+    toggleHelp: () => toggleHelp(),
+    closeHelp: () => {
+      if (help.hidden) return false;
+      toggleHelp(false);
+      return true;
+    },
   });
+  document.getElementById('help-close').onclick = () => toggleHelp(false);
 
+  // --- the panel -----------------------------------------------------------------------------
+  const scenes = await titlesPromise;
+  const GUI = await guiPromise;
+  const panelApp = {
+    settings,
+    scenes,
+    materialRows: () => materialRows(sceneInfo.json),
+    setScene: (name) => serial(() => switchScene(name)).catch(() => {}),
+    setCube: (size) => {
+      cubeSize = size;
+      serial(() => switchScene(sceneInfo.name, { keepView: true })).catch(() => {});
+    },
+    setPlanner: () => setPlanner(settings.policy, settings.slice, settings.every, settings.lod),
+    setPaused,
+    step: () => { lastStats = JSON.parse(api.frame(1 / 60, 1)); },
+    resetCamera: () => api.resetCamera(),
+    screenshot,
+    copyLink,
+    pickFiles: () => filesInput.click(),
+    pickFolder: () => folderInput.click(),
+    builtInModels: () => {
+      if (!overrides.size) return;
+      overrides.clear();
+      serial(() => switchScene(sceneInfo.name, { keepView: true })).catch(() => {});
+    },
+    bench: () => bench().catch(() => {}),
+    toggleHelp: () => toggleHelp(),
+  };
+  if (GUI) {
+    panel = buildPanel(GUI, panelApp);
+    syncSettings();
+  }
+  const sceneDescription = document.getElementById('scene-description');
+  const describe = () => {
+    const s = scenes.find((x) => x.name === sceneInfo.name);
+    sceneDescription.textContent = s ? `${s.title}: ${s.description}` : sceneInfo.title;
+  };
+  describe();
+
+  // --- the frame loop ------------------------------------------------------------------------
   let previous = null;
   let lastError;
+  let lastUrlSync = 0;
   const tick = (now) => {
+    requestAnimationFrame(tick);
     // Clamp the step so a tab that was hidden does not jump the animation.
     const dt = previous === null ? 0 : Math.min((now - previous) / 1000, 0.1);
     previous = now;
+    if (suspended) return;
     lastStats = JSON.parse(api.frame(paused ? 0 : dt, 0));
     if (lastStats.error && lastStats.error !== lastError) showMessage(lastStats.error);
     lastError = lastStats.error;
-    statsLine.update(now, lastStats, paused);
-    requestAnimationFrame(tick);
+    const interval = statsLine.update(now, lastStats, paused);
+    sparkline.push(interval, frameTimes(lastStats).frameMs);
+    if (lastStats.cubeFaceSize && lastStats.cubeFaceSize !== settings.cube) syncSettings();
+    if (now - lastUrlSync > 250) {
+      lastUrlSync = now;
+      syncUrl();
+      describe();
+    }
   };
   requestAnimationFrame(tick);
 
-  window.demo.frame = (dt) => { lastStats = JSON.parse(api.frame(dt, 1)); return lastStats; };
-  window.demo.stats = () => ({ ...lastStats, fps: statsLine.fps });
-  window.demo.setTime = (t) => api.setTime(t);
-  window.demo.pause = (on = true) => { paused = on; };
-  window.demo.camera = () => JSON.parse(api.camera());
-  window.demo.scene = () => JSON.parse(api.sceneJson());
-  window.demo.planner = () => JSON.parse(api.planner());
-  window.demo.setPlanner = (policy, slice = 2, every = 4, lod = 0) => api.setPlanner(policy, slice, every, lod);
-  // Loads another scene; the current one stays on screen if it fails (the error is shown and thrown).
-  window.demo.loadScene = async (nameOrUrl) => {
-    try {
-      return await loadScene(Module, api, sceneUrl(nameOrUrl), { userPrefix: params.get('assets'), cubeSize });
-    } catch (e) {
-      showMessage(e.message);
-      throw e;
-    }
-  };
+  Object.assign(window.demo, {
+    frame: (dt) => { lastStats = JSON.parse(api.frame(dt, 1)); return lastStats; },
+    stats: () => ({ ...lastStats, fps: statsLine.fps }),
+    setTime: (t) => api.setTime(t),
+    pause: (on = true) => setPaused(on),
+    paused: () => paused,
+    camera,
+    setCamera: (x, y, z, yaw, pitch) => api.setCamera(x, y, z, yaw, pitch),
+    scene: () => JSON.parse(api.sceneJson()),
+    planner,
+    setPlanner: (policy, slice = 2, every = 4, lod = 0) => setPlanner(policy, slice, every, lod),
+    // Loads another scene; the current one stays on screen if it fails (the error is shown and thrown).
+    loadScene: (nameOrUrl) => serial(() => switchScene(nameOrUrl)),
+    // Triangles of each level of detail of mesh `name` ([level 0] when none was built).
+    lodLevels: (name) => lodLevels[name] || null,
+    lodReady: () => lodReady,
+    readPixels,
+    screenshot,
+    copyLink,
+    loadFiles: (files) => handleFiles(filesFromList(files)),
+    runBench: (frames) => bench(frames),
+    benchResults: null,
+    query: currentQuery,
+    sparkSamples: () => sparkline.samples,
+    progressHistory: () => [...progress.history],
+    panel: () => panel?.gui || null,
+    settings,
+  });
   resolveReady();
+  if (initial.bench) bench().catch(() => {});
 }
 
 function sizeCanvasToDisplay() {
@@ -115,7 +495,7 @@ window.demo = { ready };
 canvas.addEventListener('webglcontextlost', () => showMessage('WebGL context lost; restoring…', 'info'));
 canvas.addEventListener('webglcontextrestored', () => showMessage('WebGL context restored.', 'info'));
 start().catch((error) => {
-  showMessage(error.message || String(error));
+  if (!error.shown) showMessage(error.message || String(error));
   document.getElementById('stats').textContent = 'not running';
   rejectReady(error);
 });

@@ -1,31 +1,93 @@
-// Pointer and keyboard input to camera actions. Pointer events cover mouse, pen and touch; the
-// canvas has touch-action: none so a one-finger drag turns the view instead of scrolling.
+// Pointer, wheel and keyboard input to camera actions. Pointer events cover mouse, pen and touch;
+// the canvas has touch-action: none so a one-finger drag turns the view instead of scrolling, and
+// two fingers pinch to move along the view.
+//
+// actions: drag(dx, dy), move(steps), strafe(steps), rise(steps), reset(), togglePause(),
+// toggleHelp(), closeHelp()
+
+// Typing in a control moves nothing; Space and Enter on a focused button press the button.
+function isTextField(target) {
+  return target instanceof HTMLInputElement || target instanceof HTMLSelectElement ||
+         target instanceof HTMLTextAreaElement || (target instanceof HTMLElement && target.isContentEditable);
+}
+
+// Wheel distance to move steps (one step is 0.1 scene units): a mouse notch is 100 px.
+export function wheelSteps(e) {
+  const scale = e.deltaMode === 1 ? 1 / 3 : e.deltaMode === 2 ? 1 : 1 / 100;
+  // Trackpad pinches arrive as wheel events with ctrlKey and small deltas.
+  return -e.deltaY * scale * (e.ctrlKey ? 4 : 1);
+}
+
+export const PINCH_PIXELS_PER_STEP = 20;
+
 export function attachInput(canvas, actions) {
-  let last = null;
+  const pointers = new Map();  // pointerId -> { x, y }
+  let pinchDistance = null;
+  const distance = () => {
+    const [a, b] = [...pointers.values()];
+    return Math.hypot(a.x - b.x, a.y - b.y);
+  };
+
   canvas.addEventListener('pointerdown', (e) => {
-    last = { x: e.clientX, y: e.clientY, id: e.pointerId };
+    pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
     canvas.setPointerCapture(e.pointerId);
     canvas.focus();
+    pinchDistance = pointers.size === 2 ? distance() : null;
   });
   canvas.addEventListener('pointermove', (e) => {
-    if (!last || e.pointerId !== last.id) return;
-    actions.drag(e.clientX - last.x, e.clientY - last.y);
-    last = { x: e.clientX, y: e.clientY, id: e.pointerId };
+    const p = pointers.get(e.pointerId);
+    if (!p) return;
+    const dx = e.clientX - p.x, dy = e.clientY - p.y;
+    p.x = e.clientX;
+    p.y = e.clientY;
+    if (pointers.size === 1) {
+      actions.drag(dx, dy);
+    } else if (pointers.size === 2 && pinchDistance !== null) {
+      const d = distance();
+      actions.move((d - pinchDistance) / PINCH_PIXELS_PER_STEP);  // spreading the fingers moves in
+      pinchDistance = d;
+    }
   });
-  const end = (e) => { if (last && e.pointerId === last.id) last = null; };
+  const end = (e) => {
+    if (!pointers.delete(e.pointerId)) return;
+    pinchDistance = pointers.size === 2 ? distance() : null;
+  };
   canvas.addEventListener('pointerup', end);
   canvas.addEventListener('pointercancel', end);
 
+  canvas.addEventListener('wheel', (e) => {
+    e.preventDefault();  // neither scroll nor zoom the page
+    const steps = wheelSteps(e);
+    if (steps) actions.move(steps);
+  }, { passive: false });
+
   window.addEventListener('keydown', (e) => {
-    if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement ||
-        e.target instanceof HTMLTextAreaElement) return;  // typing in a control moves nothing
+    if (isTextField(e.target)) return;
     if (e.ctrlKey || e.metaKey || e.altKey) return;  // browser shortcuts (Ctrl+R, Ctrl+S) stay the browser's
     const key = e.key.toLowerCase();
+    if ((key === ' ' || key === 'enter') && e.target instanceof HTMLButtonElement) return;
     if (key === 'w' || key === 'arrowup') actions.move(1);
     else if (key === 's' || key === 'arrowdown') actions.move(-1);
+    else if (key === 'a' || key === 'arrowleft') actions.strafe(-1);
+    else if (key === 'd' || key === 'arrowright') actions.strafe(1);
+    else if (key === 'q') actions.rise(-1);
+    else if (key === 'e') actions.rise(1);
     else if (key === 'r') actions.reset();
     else if (key === ' ') actions.togglePause();
+    else if (key === '?' || key === 'h') actions.toggleHelp();
+    else if (key === 'escape') { if (!actions.closeHelp()) return; }
     else return;
     e.preventDefault();
   });
+}
+
+// The camera's right and forward vectors from yaw and pitch in degrees (the C++ LookCamera's
+// convention: yaw 0 looks down -Z, positive yaw turns left, positive pitch looks up).
+export function cameraBasis(yawDeg, pitchDeg) {
+  const yaw = (yawDeg * Math.PI) / 180, pitch = (pitchDeg * Math.PI) / 180;
+  const view = [-Math.sin(yaw) * Math.cos(pitch), Math.sin(pitch), -Math.cos(yaw) * Math.cos(pitch)];
+  // right = normalize(cross(view, up)) with up = +Y
+  const rx = -view[2], rz = view[0];
+  const length = Math.hypot(rx, rz) || 1;
+  return { view, right: [rx / length, 0, rz / length] };
 }

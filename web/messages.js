@@ -1,5 +1,6 @@
 // Visible, dismissible messages: load failures and missing WebGL2 must not be console-only.
-export function showMessage(text, kind = 'error') {
+// `timeoutMs` (optional) removes the message by itself after that long (used for confirmations).
+export function showMessage(text, kind = 'error', timeoutMs = 0) {
   const box = document.createElement('div');
   box.className = `message ${kind}`;
   box.textContent = text;
@@ -9,5 +10,7 @@ export function showMessage(text, kind = 'error') {
   close.onclick = () => box.remove();
   box.appendChild(close);
   document.getElementById('messages').appendChild(box);
+  if (timeoutMs > 0) setTimeout(() => box.remove(), timeoutMs);
   (kind === 'error' ? console.warn : console.info)(text);
+  return box;
 }

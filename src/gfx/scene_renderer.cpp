@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/cube_faces.h"
+#include "core/normal_matrix.h"
 
 namespace reflect {
 namespace {
@@ -13,7 +14,7 @@ constexpr GLint kEnvironmentTextureUnit = 0;
 
 void setObjectMatrices(GLint model, GLint normalMatrix, const glm::mat4& m) {
   glUniformMatrix4fv(model, 1, GL_FALSE, glm::value_ptr(m));
-  const glm::mat3 normal = glm::inverseTranspose(glm::mat3(m));
+  const glm::mat3 normal = normalMatrixOf(glm::mat3(m));
   glUniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normal));
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/camera.h"
@@ -88,6 +89,32 @@ TEST(LookCamera, ProjectionFollowsAspectAndRejectsBadAspect) {
   EXPECT_FLOAT_EQ(wide[1][1], square[1][1]);
   EXPECT_EQ(camera.projection(0.0f), square);
   EXPECT_EQ(camera.projection(std::numeric_limits<float>::quiet_NaN()), square);
+}
+
+}  // namespace
+}  // namespace reflect
+
+#include "core/normal_matrix.h"
+
+namespace reflect {
+namespace {
+
+TEST(NormalMatrix, IsTheInverseTransposeUpToScaleAndStaysFiniteWhenSingular) {
+  const glm::mat3 m(glm::scale(glm::rotate(glm::mat4(1.0f), 0.7f, glm::vec3(1, 2, 3)), {100, 1, 100}));
+  const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 0.9f, -0.2f));
+  const glm::vec3 expected = glm::normalize(glm::inverseTranspose(m) * n);
+  const glm::vec3 got = glm::normalize(normalMatrixOf(m) * n);
+  EXPECT_NEAR(glm::distance(expected, got), 0.0f, 1e-5f);
+  // A mirror keeps the normal pointing the same way as the inverse-transpose does.
+  const glm::mat3 mirror(glm::scale(glm::mat4(1.0f), {-1, 1, 1}));
+  EXPECT_NEAR(glm::distance(glm::normalize(normalMatrixOf(mirror) * n),
+                            glm::normalize(glm::inverseTranspose(mirror) * n)), 0.0f, 1e-6f);
+  // S(1, 0, 1) flattens a plane in y = 0: its normal must stay +Y, finite.
+  const glm::mat3 flat(glm::scale(glm::mat4(1.0f), {1, 0, 1}));
+  EXPECT_EQ(glm::normalize(normalMatrixOf(flat) * glm::vec3(0, 1, 0)), glm::vec3(0, 1, 0));
+  // All zero: a zero matrix (finite); the object covers no pixel anyway.
+  const glm::mat3 zero(0.0f);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(normalMatrixOf(zero)[c], glm::vec3(0));
 }
 
 }  // namespace

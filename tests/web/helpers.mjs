@@ -59,9 +59,12 @@ export async function renderAndRead(page, t) {
   return { width: result.width, height: result.height, data, stats: result.stats };
 }
 
-// A PNG screenshot of the canvas element, decoded.
+// The page's overlays (panel, numbers, messages, help, bench table): hidden for canvas screenshots.
+export const OVERLAYS = '#panel, #left, #help, #help-overlay, #bench-box, #drop-hint';
+
+// A PNG screenshot of the canvas element (without the overlays drawn over it), decoded.
 export async function canvasScreenshot(page) {
-  return decodePng(await page.locator('#canvas').screenshot());
+  return decodePng(await page.locator('#canvas').screenshot({ style: `${OVERLAYS} { visibility: hidden !important; }` }));
 }
 
 export function pixel(image, x, y) {

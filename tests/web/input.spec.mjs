@@ -149,3 +149,88 @@ test('Space toggles pause', async ({ page }) => {
   await page.waitForTimeout(300);
   expect((await page.evaluate(() => window.demo.stats())).time).toBe(t);
 });
+
+test('A / D strafe and Q / E go down / up by 0.1, also when turned', async ({ page }) => {
+  await openDemo(page, '?paused');
+  await page.locator('#canvas').focus();
+  await page.keyboard.press('d');
+  await page.keyboard.press('d');
+  let c = await camera(page);
+  expect(c.eye[0]).toBeCloseTo(0.2, 4);
+  expect(c.eye[1]).toBeCloseTo(1, 4);
+  expect(c.eye[2]).toBeCloseTo(7, 4);
+  await page.keyboard.press('a');
+  await page.keyboard.press('ArrowLeft');
+  await page.keyboard.press('ArrowLeft');
+  expect((await camera(page)).eye[0]).toBeCloseTo(-0.1, 4);
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('e');
+  await page.keyboard.press('e');
+  await page.keyboard.press('q');
+  c = await camera(page);
+  expect(c.eye[0]).toBeCloseTo(0, 4);
+  expect(c.eye[1]).toBeCloseTo(1.1, 4);
+  expect([c.yaw, c.pitch]).toEqual([0, 0]);  // moving does not turn
+
+  // Turned 90 degrees left (looking down -X), right is -Z; looking down 30 degrees, strafing
+  // stays level.
+  await page.evaluate(() => window.demo.setCamera(0, 1, 7, 90, -30));
+  await page.keyboard.press('d');
+  c = await camera(page);
+  expect(c.eye[0]).toBeCloseTo(0, 4);
+  expect(c.eye[1]).toBeCloseTo(1, 4);
+  expect(c.eye[2]).toBeCloseTo(6.9, 4);
+  expect(c.yaw).toBeCloseTo(90, 3);
+  expect(c.pitch).toBeCloseTo(-30, 3);
+});
+
+test('keys typed into a panel field move nothing', async ({ page }) => {
+  await openDemo(page, '?paused');
+  const field = page.locator('#control-lod input');
+  await field.focus();
+  for (const key of ['w', 'a', 's', 'd', 'q', 'e', 'r', ' ', 'ArrowUp']) await field.press(key);
+  expect(await camera(page)).toEqual({ eye: [0, 1, 7], yaw: 0, pitch: 0 });
+  expect(await page.evaluate(() => window.demo.paused())).toBe(true);
+  await expect(page.locator('#help-overlay')).toBeHidden();
+  await page.locator('#control-policy select').focus();
+  await page.keyboard.press('w');
+  expect(await camera(page)).toEqual({ eye: [0, 1, 7], yaw: 0, pitch: 0 });
+});
+
+test('the mouse wheel moves along the view, and does not scroll the page', async ({ page }) => {
+  await openDemo(page, '?paused');
+  await page.mouse.move(300, 300);
+  await page.mouse.wheel(0, -100);  // one notch away from the user: forward one step
+  await expect.poll(async () => (await camera(page)).eye[2]).toBeCloseTo(6.9, 4);
+  await page.mouse.wheel(0, -300);
+  await expect.poll(async () => (await camera(page)).eye[2]).toBeCloseTo(6.6, 4);
+  await page.mouse.wheel(0, 200);
+  await expect.poll(async () => (await camera(page)).eye[2]).toBeCloseTo(6.8, 4);
+  expect(await page.evaluate(() => [window.scrollX, window.scrollY])).toEqual([0, 0]);
+});
+
+test.describe('touch pinch', () => {
+  test.use({ hasTouch: true });
+
+  test('spreading two fingers moves forward, pinching them moves back; no turn', async ({ page }) => {
+    await openDemo(page, '?paused');
+    const cdp = await page.context().newCDPSession(page);
+    const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', {
+      type, touchPoints: points.map(([x, y], i) => ({ x, y, id: i + 1 })),
+    });
+    // 100 px apart -> 200 px apart: 100 px / 20 px a step = 5 steps of 0.1.
+    await touch('touchStart', [[250, 300], [350, 300]]);
+    for (let i = 1; i <= 5; ++i) await touch('touchMove', [[250 - 10 * i, 300], [350 + 10 * i, 300]]);
+    await touch('touchEnd', []);
+    let c = await camera(page);
+    expect(c.eye[2]).toBeCloseTo(6.5, 3);
+    expect([c.yaw, c.pitch]).toEqual([0, 0]);
+    await touch('touchStart', [[200, 300], [400, 300]]);
+    for (let i = 1; i <= 4; ++i) await touch('touchMove', [[200 + 10 * i, 300], [400 - 10 * i, 300]]);
+    await touch('touchEnd', []);
+    await cdp.detach();
+    c = await camera(page);
+    expect(c.eye[2]).toBeCloseTo(6.9, 3);
+    expect([c.yaw, c.pitch]).toEqual([0, 0]);
+  });
+});

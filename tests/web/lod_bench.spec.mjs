@@ -1,0 +1,75 @@
+// Capture levels of detail built in the browser with meshoptimizer, and the page's bench mode.
+import { test, expect } from '@playwright/test';
+import { openDemo } from './helpers.mjs';
+
+test('LOD levels are built for every mesh after the scene loads, by the native rules', async ({ page }) => {
+  const infos = [];
+  page.on('console', (m) => { if (m.type() === 'info') infos.push(m.text()); });
+  await openDemo(page, '?paused');
+  await page.evaluate(() => window.demo.lodReady());
+  const levels = await page.evaluate(() => Object.fromEntries(
+    window.demo.scene().meshes.map((name) => [name, window.demo.lodLevels(name)])));
+  expect(levels['quad.obj']).toEqual([2]);  // under minTriangles: no coarser level
+  for (const name of ['mario.obj', 'sonic.obj']) {
+    const t = levels[name];
+    expect(t.length, `${name}: levels ${t}`).toBe(3);  // maxLevels 3
+    for (let k = 1; k < t.length; ++k) {
+      expect(t[k], `${name} level ${k}`).toBeLessThanOrEqual(t[k - 1] * 0.75);
+      expect(t[k], `${name} level ${k}`).toBeGreaterThan(0);
+    }
+  }
+  expect(infos.some((line) => line.startsWith('capture LOD levels (triangles):') && line.includes('mario.obj 7258 > ')))
+    .toBe(true);
+  await expect(page.locator('#control-lod-levels input')).toHaveValue(/mario 3/);
+});
+
+test('with lod=0.5 the capture draws fewer triangles than with lod=0 (skybox scene)', async ({ page }) => {
+  await openDemo(page, '?paused&scene=skybox&lod=0.25');
+  expect((await page.evaluate(() => window.demo.planner())).lod).toBe(0.25);
+  await page.evaluate(() => window.demo.lodReady());
+  // A new LOD setting makes when-changed recapture every face, so both frames capture all of them.
+  const captureTriangles = (lod) => page.evaluate((l) => {
+    window.demo.setPlanner('when-changed', 2, 4, l);
+    window.demo.setTime(1);
+    return window.demo.frame(0);
+  }, lod);
+  const full = await captureTriangles(0);
+  const coarse = await captureTriangles(0.5);
+  expect(full.facesCaptured).toBe(6);
+  expect(coarse.facesCaptured).toBe(6);
+  expect(coarse.captureTriangles, `capture triangles ${coarse.captureTriangles} vs ${full.captureTriangles}`)
+    .toBeLessThan(full.captureTriangles * 0.75);
+});
+
+test('?bench runs every policy and prints the table; when-changed matches every-frame exactly', async ({ page }) => {
+  test.setTimeout(120_000);
+  const infos = [];
+  page.on('console', (m) => { if (m.type() === 'info') infos.push(m.text()); });
+  await openDemo(page, '?bench&frames=8');
+  await page.waitForFunction(() => window.demo.benchResults, null, { timeout: 100_000 });
+  const results = await page.evaluate(() => window.demo.benchResults);
+  expect(results.scene).toBe('ex12-2');
+  expect(results.frames).toBe(8);
+  expect(results.rows.map((r) => r.label)).toEqual(
+    ['every-frame', 'when-changed', 'when-changed+LOD 0.5', 'time-sliced 2', 'every-n 4']);
+  const row = Object.fromEntries(results.rows.map((r) => [r.label, r]));
+  expect(row['every-frame'].facesPerFrame).toBe(6);
+  expect(row['every-frame'].drawCallsPerFrame).toBe(22);
+  expect(row['when-changed'].maxDiff).toBe(0);
+  expect(row['when-changed'].comparedFrames).toBe(8);
+  expect(row['time-sliced 2'].facesPerFrame).toBeLessThanOrEqual(2);
+  expect(row['every-n 4'].facesPerFrame).toBeLessThan(6);
+  expect(row['every-n 4'].maxDiff).toBeGreaterThan(0);  // stale faces show
+  for (const r of results.rows) {
+    expect(r.frameMs.median).toBeGreaterThan(0);
+    expect(r.frameMs.p10).toBeLessThanOrEqual(r.frameMs.median);
+    expect(r.frameMs.p90).toBeGreaterThanOrEqual(r.frameMs.median);
+    expect(r.trianglesPerFrame).toBeGreaterThan(0);
+  }
+  const table = page.locator('#bench');
+  await expect(table).toBeVisible();
+  for (const r of results.rows) await expect(table).toContainText(r.label);
+  expect(infos.some((line) => line.startsWith('bench: scene ex12-2'))).toBe(true);
+  // The user's settings come back afterwards.
+  expect((await page.evaluate(() => window.demo.planner())).policy).toBe('when-changed');
+});
