@@ -7,6 +7,7 @@
 #include "core/mesh_chunks.h"
 #include "core/mesh_lod.h"
 #include "core/obj_loader.h"
+#include "core/scene_file.h"
 #include "gfx/gl.h"
 
 namespace reflect {
@@ -60,6 +61,24 @@ std::string Demo::addLodLevel(const std::string& name, const std::vector<uint32_
   it->second.push_back(std::move(level));
   ++optionsRevision_;  // faces drawn before may have used a coarser level than now exists
   return {};
+}
+
+std::string Demo::addObject(const SceneObject& object) {
+  if (meshes_.count(object.mesh) == 0) return object.mesh + ": not loaded";
+  if (scene_.objects.size() >= kMaxSceneObjects) {
+    return "the scene already has " + std::to_string(kMaxSceneObjects) + " objects";
+  }
+  scene_.objects.push_back(object);
+  return {};
+}
+
+std::string Demo::setMaterialJson(int index, const std::string& json) {
+  if (index < 0 || index >= static_cast<int>(scene_.objects.size())) {
+    return "no object " + std::to_string(index);
+  }
+  std::string error = applyMaterialJson(json, "material", scene_.objects[static_cast<size_t>(index)]);
+  if (error.empty()) ++optionsRevision_;  // other probes may show this object
+  return error;
 }
 
 std::string Demo::setSkybox(CubeFaces faces) {

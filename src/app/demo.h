@@ -42,6 +42,11 @@ class Demo {
   std::string addLodLevel(const std::string& name, const std::vector<uint32_t>& indices);
   const MeshData* meshLevel(const std::string& name, int lod) const;
 
+  // Adds an object (its mesh must be loaded first, e.g. with loadMeshText). Returns "" or why not.
+  std::string addObject(const SceneObject& object);
+  // Changes object `index`'s material from a scene-file "material" object. Returns "" or an error.
+  std::string setMaterialJson(int index, const std::string& json);
+
   // The static cube map of the scene's skybox (kept on the CPU for a context restore).
   std::string setSkybox(CubeFaces faces);
   bool hasSkybox() const { return skybox_.has_value(); }

@@ -216,6 +216,28 @@ Result<Scene> parseSceneJson(const std::string& text, const std::string& source)
   return scene;
 }
 
+Result<SceneObject> parseSceneObjectJson(const std::string& text, const std::string& source) {
+  Result<nlohmann::json> json = parseJson(text, source);
+  if (!json) return Result<SceneObject>::failure(json.error());
+  std::string error;
+  std::vector<std::string> groups;
+  SceneObject object = readObject(JsonReader(json.value(), "", &error), groups);
+  if (!error.empty()) return Result<SceneObject>::failure(source + ": " + error);
+  return object;
+}
+
+std::string applyMaterialJson(const std::string& text, const std::string& source,
+                              SceneObject& object) {
+  Result<nlohmann::json> json = parseJson(text, source);
+  if (!json) return json.error();
+  std::string error;
+  SceneObject changed = object;
+  readMaterial(JsonReader(json.value(), "material", &error), changed);
+  if (!error.empty()) return source + ": " + error;
+  object = changed;
+  return {};
+}
+
 Result<Scene> loadSceneFile(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) return Result<Scene>::failure(path + ": cannot open file");

@@ -14,6 +14,11 @@ constexpr size_t kMaxSceneFileBytes = 1u << 20;
 constexpr size_t kMaxSceneObjects = 256;
 
 Result<Scene> parseSceneJson(const std::string& text, const std::string& source);
+// One entry of "objects" (the page adds a dropped model with it), and one "material".
+Result<SceneObject> parseSceneObjectJson(const std::string& text, const std::string& source);
+// Applies a "material" object (the keys given) to `object`.
+std::string applyMaterialJson(const std::string& text, const std::string& source,
+                              SceneObject& object);
 Result<Scene> loadSceneFile(const std::string& path);
 
 }  // namespace reflect

@@ -4,6 +4,7 @@
 #include <emscripten/emscripten.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -116,8 +117,9 @@ EMSCRIPTEN_KEEPALIVE const char* rf_commit_scene(int cubeSize) {
   std::string notice;
   if (cubeSize > 0) notice = pending.demo->setCubeFaceSize(cubeSize);
   if (state().demo) {
-    // The user's capture settings carry over to the new scene.
+    // The user's capture and accuracy settings carry over to the new scene.
     pending.demo->setPlannerSettings(state().demo->plannerSettings());
+    pending.demo->setAccuracySettings(state().demo->accuracySettings());
   }
   error = pending.demo->initGraphics();
   if (!error.empty()) return returnText(error);
@@ -161,6 +163,85 @@ EMSCRIPTEN_KEEPALIVE const char* rf_add_lod(const char* name, const uint32_t* in
   if (!state().demo) return returnText("no scene loaded");
   return returnText(state().demo->addLodLevel(
       name, std::vector<uint32_t>(indices, indices + std::max(count, 0))));
+}
+
+}  // extern "C"
+
+extern "C" {
+
+// Adds an object to the current scene: an entry of a scene file's "objects" (its mesh loaded
+// first with rf_load_mesh(0, ...)). Returns "" or the error.
+EMSCRIPTEN_KEEPALIVE const char* rf_add_object(const char* json) {
+  if (!state().demo) return returnText("no scene loaded");
+  reflect::Result<reflect::SceneObject> object = reflect::parseSceneObjectJson(json, "object");
+  if (!object) return returnText(object.error());
+  return returnText(state().demo->addObject(object.value()));
+}
+
+// Object-space bounds of a loaded mesh of the current scene: {"min":[..],"max":[..]} or {}.
+EMSCRIPTEN_KEEPALIVE const char* rf_mesh_bounds_json(const char* name) {
+  const reflect::MeshData* mesh = state().demo ? state().demo->meshLevel(name, 0) : nullptr;
+  if (!mesh) return returnText("{}");
+  char buffer[200];
+  std::snprintf(buffer, sizeof buffer, "{\"min\":[%g,%g,%g],\"max\":[%g,%g,%g]}", mesh->bounds.min.x,
+                mesh->bounds.min.y, mesh->bounds.min.z, mesh->bounds.max.x, mesh->bounds.max.y,
+                mesh->bounds.max.z);
+  return returnText(buffer);
+}
+
+// Changes object `index`'s material: a scene file's "material" object, e.g.
+// {"type":"mirror","reflection":0.78,"base":0.3,"fresnel":true,"ior":1.52}.
+EMSCRIPTEN_KEEPALIVE const char* rf_set_material(int index, const char* json) {
+  if (!state().demo) return returnText("no scene loaded");
+  return returnText(state().demo->setMaterialJson(index, json));
+}
+
+// The current scene's objects and materials, as JSON.
+EMSCRIPTEN_KEEPALIVE const char* rf_objects_json() {
+  if (!state().demo) return returnText("[]");
+  std::string json = "[";
+  const char* names[] = {"phong", "mirror", "glass", "cube-textured"};
+  for (const reflect::SceneObject& o : state().demo->scene().objects) {
+    char buffer[320];
+    std::snprintf(buffer, sizeof buffer,
+                  "%s{\"mesh\":%s,\"material\":{\"type\":\"%s\",\"reflection\":%g,\"base\":%g,"
+                  "\"ior\":%g,\"fresnel\":%s,\"environment\":\"%s\"}}",
+                  json.size() > 1 ? "," : "", reflect::jsonQuote(o.mesh).c_str(),
+                  names[static_cast<int>(o.material)], o.reflectionWeight, o.baseWeight,
+                  o.refractiveIndex, o.fresnel ? "true" : "false",
+                  o.environment == reflect::Environment::Skybox ? "skybox" : "live");
+    json += buffer;
+  }
+  return returnText(json + "]");
+}
+
+// Accuracy mode: {"distance":2,"origin":false,"depth":24,"mipmaps":false,"halfFloat":false,
+// "mediump":false} (missing keys keep their value). Rebuilds the GL resources. "" or an error.
+EMSCRIPTEN_KEEPALIVE const char* rf_set_accuracy(int distanceIterations, int captureAtOrigin,
+                                                 int depthBits, int mipmaps, int halfFloat,
+                                                 int mediump) {
+  if (!state().demo) return returnText("no scene loaded");
+  reflect::AccuracySettings a;
+  a.distanceIterations = distanceIterations;
+  a.captureAtOrigin = captureAtOrigin != 0;
+  a.depthBits = depthBits;
+  a.mipmaps = mipmaps != 0;
+  a.halfFloat = halfFloat != 0;
+  a.mediump = mediump != 0;
+  return returnText(state().demo->setAccuracySettings(a));
+}
+
+EMSCRIPTEN_KEEPALIVE const char* rf_accuracy_json() {
+  if (!state().demo) return returnText("{}");
+  const reflect::AccuracySettings& a = state().demo->accuracySettings();
+  char buffer[200];
+  std::snprintf(buffer, sizeof buffer,
+                "{\"distance\":%d,\"origin\":%s,\"depth\":%d,\"mipmaps\":%s,\"halfFloat\":%s,"
+                "\"mediump\":%s,\"describe\":%s}",
+                a.distanceIterations, a.captureAtOrigin ? "true" : "false", a.depthBits,
+                a.mipmaps ? "true" : "false", a.halfFloat ? "true" : "false",
+                a.mediump ? "true" : "false", reflect::jsonQuote(a.describe()).c_str());
+  return returnText(buffer);
 }
 
 }  // extern "C"
