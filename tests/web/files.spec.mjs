@@ -5,7 +5,7 @@ import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'nod
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { collectErrors, openDemo, readyOutcome } from './helpers.mjs';
+import { collectErrors, colourSummary, openDemo, readyOutcome, renderAndRead } from './helpers.mjs';
 
 const MODELS = fileURLToPath(new URL('../../assets/models/', import.meta.url));
 const real = (name) => readFileSync(MODELS + name, 'utf8');
@@ -63,15 +63,74 @@ test('a broken file is named in a message and the scene keeps its model', async 
   expect(image.drawCalls).toBeGreaterThan(0);
 });
 
-test('other .obj files and non-.obj files are reported, not loaded; files over 64 MB are refused unread', async ({ page }) => {
+test('non-.obj files are reported, not loaded; files over 64 MB are refused unread', async ({ page }) => {
   await openDemo(page, '?paused');
   const before = await triangles(page);
-  await drop(page, [{ name: 'teapot.obj', text: CUBE }, { name: 'notes.txt', text: 'hello' }]);
-  await expect(page.locator('#messages .message', { hasText: 'teapot.obj: no model of this scene has that name' })).toBeVisible();
+  const objects = await page.evaluate(() => window.demo.objects().length);
+  await drop(page, [{ name: 'notes.txt', text: 'hello' }]);
   await expect(page.locator('#messages .message', { hasText: 'notes.txt: not .obj files' })).toBeVisible();
   await drop(page, [{ name: 'Sonic.OBJ', size: 65 * 1024 * 1024 }]);
   await expect(page.locator('#messages .message.error', { hasText: 'Sonic.OBJ: 65.0 MB is over the 64 MB limit' })).toBeVisible();
+  await drop(page, [{ name: 'teapot.obj', size: 65 * 1024 * 1024 }]);
+  await expect(page.locator('#messages .message.error', { hasText: 'teapot.obj: 65.0 MB is over the 64 MB limit' })).toBeVisible();
   expect(await triangles(page)).toBe(before);
+  expect(await page.evaluate(() => window.demo.objects().length)).toBe(objects);
+});
+
+// Orange pixels (the first added figure's colour is 0.95/0.55/0.15): red over green over blue by
+// clear steps. Few others in the default scene look like that (some shading on the figures).
+function orangePixels(image) {
+  let n = 0;
+  for (let i = 0; i < image.data.length; i += 4) {
+    const r = image.data[i], g = image.data[i + 1], b = image.data[i + 2];
+    if (r - g > 25 && g - b > 25) ++n;
+  }
+  return n;
+}
+
+test('dropping a new .obj adds it as an orbiting figure scaled to fit', async ({ page }) => {
+  const errors = collectErrors(page);
+  await openDemo(page, '?paused&policy=every-frame');
+  const before = await page.evaluate(() => ({ objects: window.demo.objects(), stats: window.demo.frame(0) }));
+  const imageBefore = await renderAndRead(page);
+  await drop(page, [{ name: 'teapot.obj', text: CUBE }]);
+  await expect(page.locator('#messages .message.info', { hasText: 'added teapot.obj as an orbiting figure' })).toBeVisible();
+  const after = await page.evaluate(() => ({ objects: window.demo.objects(), figures: window.demo.figures() }));
+  expect(after.objects.length).toBe(before.objects.length + 1);
+  expect(after.objects.at(-1).mesh).toBe('teapot.obj');
+  expect(await page.evaluate(() => window.demo.scene().meshes)).toContain('teapot.obj');
+  // The cube is 2 units wide: scaled to 1.5, its bottom at y = -1.8, on the ring of radius 3.
+  const object = after.figures[0].object;
+  expect(object.scale).toBeCloseTo(0.75, 6);
+  expect(object.translate[1]).toBeCloseTo(-1.05, 6);
+  expect(Math.hypot(object.translate[0], object.translate[2])).toBeCloseTo(3, 6);
+  expect(object.animation).toEqual({ type: 'orbit', degreesPerSecond: 27, axis: [0, 1, 0] });
+  const image = await renderAndRead(page);
+  expect(image.stats.triangles).toBeGreaterThan(before.stats.triangles);
+  const { distinct, greyFraction } = colourSummary(image);
+  expect(distinct).toBeGreaterThan(500);
+  expect(greyFraction).toBeLessThan(0.6);
+  // The figure is in view (directly and in the sphere).
+  expect(orangePixels(image) - orangePixels(imageBefore)).toBeGreaterThan(300);
+
+  // A second new file goes to another place on the ring; the figures stay through a cube-size
+  // reload and go with the built-in-models button.
+  await drop(page, [{ name: 'box.obj', text: CUBE }]);
+  await expect(page.locator('#messages .message.info', { hasText: 'added box.obj as an orbiting figure' })).toBeVisible();
+  const placed = (await page.evaluate(() => window.demo.figures())).map((f) => f.object.translate);
+  expect(Math.hypot(placed[0][0] - placed[1][0], placed[0][2] - placed[1][2])).toBeGreaterThan(2);
+  await page.locator('#control-cube select').selectOption('128');
+  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
+  expect(await page.evaluate(() => window.demo.objects().length)).toBe(before.objects.length + 2);
+  await page.locator('#control-files').evaluate((e) => e.closest('.lil-gui').querySelector('.lil-title').click());
+  await page.locator('#control-builtin button').click();
+  await expect.poll(() => page.evaluate(() => window.demo.objects().length)).toBe(before.objects.length);
+
+  // A broken new file is named and nothing is added.
+  await drop(page, [{ name: 'broken.obj', text: 'v 0 0 0\nf 1 2 3\n' }]);
+  await expect(page.locator('#messages .message.error', { hasText: 'broken.obj' })).toContainText('not added');
+  expect(await page.evaluate(() => window.demo.objects().length)).toBe(before.objects.length);
+  expect(errors).toEqual([]);
 });
 
 test('the file picker and the folder picker (recursing into sub-folders) replace models', async ({ page }) => {

@@ -1,0 +1,214 @@
+#include "extremes_util.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gfx/gl_handle.h"
+#include "gfx/shader_program.h"
+#include "platform/native/model_paths.h"
+
+namespace reflect::extremes {
+
+std::unique_ptr<Demo> makeDemoWith(Scene scene, const std::map<std::string, std::string>& objTexts) {
+  auto demo = std::make_unique<Demo>(std::move(scene));
+  for (const std::string& name : demo->scene().meshNames()) {
+    auto text = objTexts.find(name);
+    const std::string error =
+        text != objTexts.end()
+            ? demo->loadMeshText(name, text->second, name)
+            : demo->loadMesh(name, builtInModelDirectory() + "/" + name);
+    EXPECT_EQ(error, "") << name;
+    if (!error.empty()) return nullptr;
+  }
+  const std::string error = demo->initGraphics();
+  EXPECT_EQ(error, "");
+  if (!error.empty()) return nullptr;
+  return demo;
+}
+
+void useFlatLighting(Scene& scene) {
+  scene.light.ambient = 1.0f;
+  scene.light.diffuse = 0.0f;
+  scene.light.specular = 0.0f;
+}
+
+glm::mat4 translateScale(const glm::vec3& t, const glm::vec3& s) {
+  return glm::scale(glm::translate(glm::mat4(1.0f), t), s);
+}
+
+SceneObject phongObject(const std::string& mesh, const glm::mat4& placement, const glm::vec3& colour) {
+  SceneObject o;
+  o.mesh = mesh;
+  o.placement = placement;
+  o.colour = colour;
+  return o;
+}
+
+SceneObject mirrorObject(const std::string& mesh, const glm::mat4& placement, const glm::vec3& colour) {
+  SceneObject o = phongObject(mesh, placement, colour);
+  o.material = Material::Mirror;
+  return o;
+}
+
+Result<RgbaImage> renderWithDepthBits(Demo& demo, double seconds, int width, int height,
+                                      int depthBits) {
+  if (depthBits != 16 && depthBits != 24) {
+    return Result<RgbaImage>::failure("depth bits must be 16 or 24");
+  }
+  RenderbufferHandle colour(genRenderbuffer());
+  glBindRenderbuffer(GL_RENDERBUFFER, colour.id());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  RenderbufferHandle depth(genRenderbuffer());
+  glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
+  glRenderbufferStorage(GL_RENDERBUFFER, depthBits == 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24,
+                        width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  FramebufferHandle framebuffer(genFramebuffer());
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (status != GL_FRAMEBUFFER_COMPLETE) return Result<RgbaImage>::failure("framebuffer incomplete");
+
+  demo.clock().set(seconds);
+  demo.frame(0.0, framebuffer.id(), width, height, true);
+
+  RgbaImage image;
+  image.width = width;
+  image.height = height;
+  image.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  flipRows(image);
+  if (!checkGlError("render with depth bits")) return Result<RgbaImage>::failure("GL error");
+  return image;
+}
+
+namespace {
+
+constexpr int kDirectionsPerDraw = 32;
+
+// Pixel i of a one-pixel-high strip is texture(cube, u_directions[i]).
+constexpr const char* kSampleVertex = R"(
+void main() {
+  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  gl_Position = vec4(p, 0.0, 1.0);
+})";
+constexpr const char* kSampleFragment = R"(
+uniform samplerCube u_cube;
+uniform vec3 u_directions[32];
+out vec4 colour;
+void main() { colour = texture(u_cube, u_directions[int(gl_FragCoord.x)]); })";
+
+}  // namespace
+
+std::vector<glm::u8vec3> sampleCube(GLuint cube, const std::vector<glm::vec3>& directions) {
+  std::vector<glm::u8vec3> colours;
+  auto program = ShaderProgram::buildFromSource("sample.vert", kSampleVertex, "sample.frag",
+                                                kSampleFragment);
+  EXPECT_TRUE(program) << program.error();
+  if (!program) return colours;
+  for (size_t first = 0; first < directions.size(); first += kDirectionsPerDraw) {
+    const int n = static_cast<int>(std::min<size_t>(kDirectionsPerDraw, directions.size() - first));
+    RenderbufferHandle colour(genRenderbuffer());
+    glBindRenderbuffer(GL_RENDERBUFFER, colour.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, n, 1);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    FramebufferHandle framebuffer(genFramebuffer());
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour.id());
+    glViewport(0, 0, n, 1);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(program.value().id());
+    glUniform3fv(program.value().uniform("u_directions"), n, glm::value_ptr(directions[first]));
+    glUniform1i(program.value().uniform("u_cube"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDeleteVertexArrays(1, &vao);
+    std::vector<uint8_t> strip(static_cast<size_t>(n) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, n, 1, GL_RGBA, GL_UNSIGNED_BYTE, strip.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    for (int i = 0; i < n; ++i) {
+      colours.emplace_back(strip[static_cast<size_t>(i) * 4], strip[static_cast<size_t>(i) * 4 + 1],
+                           strip[static_cast<size_t>(i) * 4 + 2]);
+    }
+  }
+  EXPECT_TRUE(checkGlError("sample cube"));
+  return colours;
+}
+
+glm::u8vec3 rgbAt(const RgbaImage& image, int x, int y) {
+  const uint8_t* p = image.at(x, y);
+  return {p[0], p[1], p[2]};
+}
+
+glm::u8vec3 toBytes(const glm::vec3& colour) {
+  return glm::u8vec3(glm::round(glm::clamp(colour, 0.0f, 1.0f) * 255.0f));
+}
+
+std::vector<uint8_t> maskOf(const RgbaImage& image, const glm::u8vec3& colour, int* count) {
+  std::vector<uint8_t> mask(static_cast<size_t>(image.width) * static_cast<size_t>(image.height), 0);
+  int n = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      if (rgbAt(image, x, y) == colour) {
+        mask[static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x)] = 1;
+        ++n;
+      }
+    }
+  }
+  if (count) *count = n;
+  return mask;
+}
+
+namespace {
+
+int neighboursIn(const std::vector<uint8_t>& mask, int width, int height, int x, int y) {
+  int n = 0;
+  const int dx[4] = {1, -1, 0, 0};
+  const int dy[4] = {0, 0, 1, -1};
+  for (int k = 0; k < 4; ++k) {
+    const int nx = x + dx[k], ny = y + dy[k];
+    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+    n += mask[static_cast<size_t>(ny) * static_cast<size_t>(width) + static_cast<size_t>(nx)];
+  }
+  return n;
+}
+
+}  // namespace
+
+std::vector<uint8_t> interiorOf(const std::vector<uint8_t>& mask, int width, int height) {
+  std::vector<uint8_t> out(mask.size(), 0);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t i = static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);
+      out[i] = mask[i] && neighboursIn(mask, width, height, x, y) == 4;
+    }
+  }
+  return out;
+}
+
+std::vector<uint8_t> borderOf(const std::vector<uint8_t>& mask, int width, int height) {
+  std::vector<uint8_t> interior = interiorOf(mask, width, height);
+  std::vector<uint8_t> out(mask.size(), 0);
+  for (size_t i = 0; i < mask.size(); ++i) out[i] = mask[i] && !interior[i];
+  return out;
+}
+
+std::string describe(const glm::u8vec3& c) {
+  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + ")";
+}
+
+}  // namespace reflect::extremes
