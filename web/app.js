@@ -1,9 +1,11 @@
 // The page: loads the wasm module, feeds it the scenes and models, runs the frame loop, turns
 // pointer and key input into camera moves, shows the controls panel, live numbers and messages,
 // mirrors its settings in the URL, and exposes window.demo for tests and tools.
+import { describeAccuracy, matchingRow, parseSweep, readout } from './accuracy.js';
 import { runBench } from './bench.js';
 import { filesFromDrop, filesFromList, sortFiles } from './drop.js';
 import { attachInput, cameraBasis } from './input.js';
+import { figureObject, freeAngle, takenAngles } from './figures.js';
 import { buildLods } from './lod.js';
 import { showMessage } from './messages.js';
 import { buildPanel, materialRows } from './panel.js';
@@ -42,6 +44,7 @@ async function start() {
   const { state: initial, problems } = parseQuery(location.search);
   for (const problem of problems) showMessage(problem);
   const titlesPromise = sceneTitles();
+  const sweepPromise = fetch('sweep.csv').then((r) => (r.ok ? r.text() : '')).then(parseSweep, () => []);
   const guiPromise = import('./vendor/lil-gui.esm.js').then((m) => m.GUI, (e) => {
     showMessage(`The controls panel could not be loaded (vendor/lil-gui.esm.js: ${e.message}); ` +
                 'keys and mouse still work.');
@@ -70,6 +73,13 @@ async function start() {
     meshIndices: Module.cwrap('rf_mesh_indices', 'number', ['string', 'number']),
     lodSettings: Module.cwrap('rf_lod_settings_json', 'string', []),
     addLod: Module.cwrap('rf_add_lod', 'string', ['string', 'number', 'number']),
+    addObject: Module.cwrap('rf_add_object', 'string', ['string']),
+    meshBounds: Module.cwrap('rf_mesh_bounds_json', 'string', ['string']),
+    setMaterial: Module.cwrap('rf_set_material', 'string', ['number', 'string']),
+    objects: Module.cwrap('rf_objects_json', 'string', []),
+    setAccuracy: Module.cwrap('rf_set_accuracy', 'string',
+                              ['number', 'number', 'number', 'number', 'number', 'number']),
+    accuracy: Module.cwrap('rf_accuracy_json', 'string', []),
   };
   const createError = api.create();
   if (createError) throw new Error(createError);
@@ -89,9 +99,17 @@ async function start() {
   let suspended = false;  // the bench holds the frame loop
   let lastStats = {};
   let panel = null;
+  const sweepRows = await sweepPromise;  // sweep.csv: the measured accuracy modes
+  let chosenRow = null;  // the sweep row the user (or acc=) picked
+  let defaultDescribe = null;  // the shipped accuracy settings (rf_accuracy_json's describe)
+  // The user's added figures, { name, bytes, source, object }: re-added when the scene reloads
+  // for a cube size or an accuracy mode; gone with another scene or the built-in-models button.
+  let figures = [];
+  const materialEdits = new Map();  // object index -> the material the user set
+  let sceneMaterials = [];  // rf_objects_json's materials right after the scene loaded
   const settings = {
     scene: initial.scene, cube: 0, policy: 'when-changed', slice: 2, every: 4, lod: 0,
-    staleness: '', lodLevels: '', paused,
+    staleness: '', lodLevels: '', paused, accuracy: '', accuracyReadout: '',
   };
 
   // Scene changes, model replacements and the bench run one at a time (one pending scene).
@@ -104,6 +122,10 @@ async function start() {
 
   const camera = () => JSON.parse(api.camera());
   const planner = () => JSON.parse(api.planner());
+  const objects = () => JSON.parse(api.objects());
+  const accuracy = () => JSON.parse(api.accuracy());
+  const faceSize = () => lastStats.cubeFaceSize || cubeSize;
+  const currentRow = () => matchingRow(sweepRows, accuracy().describe, faceSize(), chosenRow);
 
   function syncSettings() {
     const p = planner();
@@ -118,6 +140,10 @@ async function start() {
     settings.lodLevels = Object.entries(lodLevels).filter(([, t]) => t.length > 1)
       .map(([n, t]) => `${n.replace(/\.obj$/, '')} ${t.length}`).join(', ') || 'none built';
     settings.paused = paused;
+    const row = currentRow();
+    settings.accuracy = row ? row.name : '';
+    settings.accuracyReadout = sweepRows.length ? readout(row, accuracy().describe, faceSize())
+                                                : 'sweep.csv is not available: no measured modes';
     panel?.refresh();
   }
 
@@ -134,6 +160,7 @@ async function start() {
   // reset). Throws with the message already shown; the old scene stays.
   async function switchScene(name, { keepView = false } = {}) {
     let view = null;
+    const sameScene = keepView && name === sceneInfo.name;
     const beforeCommit = () => {
       if (keepView) view = { camera: camera(), time: lastStats.time };
     };
@@ -154,6 +181,18 @@ async function start() {
       api.setCamera(...view.camera.eye, view.camera.yaw, view.camera.pitch);
       if (view.time !== undefined) api.setTime(view.time);
     }
+    sceneMaterials = objects().map((o) => o.material);
+    if (sameScene) {
+      for (const f of figures) {
+        const error = withBytes(Module, f.bytes, (ptr, n) => api.loadMesh(0, f.name, ptr, n, f.source)) ||
+                      api.addObject(JSON.stringify(f.object));
+        if (error) showMessage(`${f.source}: ${error}`);
+      }
+      for (const [index, material] of materialEdits) api.setMaterial(index, JSON.stringify(material));
+    } else {
+      figures = [];
+      materialEdits.clear();
+    }
     lastStats = JSON.parse(api.frame(0, 0));
     lodLevels = {};
     syncSettings();
@@ -161,6 +200,72 @@ async function start() {
     await rebuildLods();
     return loaded.title;
   }
+
+  // Changes object `index`'s material: `changes` are scene-file material keys over what it has.
+  function setMaterial(index, changes) {
+    const current = objects()[index];
+    let error;
+    if (!current) {
+      error = `no object ${index} in this scene (it has ${objects().length})`;
+    } else if (!['mirror', 'glass'].includes(current.material.type)) {
+      error = `object ${index} (${current.mesh}) is ${current.material.type}, not a mirror or glass`;
+    } else {
+      const material = { ...current.material, ...changes };
+      error = api.setMaterial(index, JSON.stringify(material));
+      if (!error) {
+        const original = sceneMaterials[index];
+        const same = original && ['type', 'fresnel', 'environment'].every((k) => original[k] === material[k]) &&
+                     ['reflection', 'base', 'ior'].every((k) => Math.abs(original[k] - material[k]) < 5e-4);
+        if (same) materialEdits.delete(index);
+        else materialEdits.set(index, material);
+      }
+    }
+    if (error) showMessage(error);
+    panel?.updateMaterials();
+    return error || '';
+  }
+  const changedMaterials = () => [...materialEdits].map(([index, m]) => ({ index, ...m }));
+
+  // Accuracy settings (rf_accuracy_json's keys; missing keys keep their value). "" or the error.
+  function setAccuracy(changes) {
+    const a = { ...accuracy(), ...changes };
+    const error = api.setAccuracy(a.distance, a.origin ? 1 : 0, a.depth, a.mipmaps ? 1 : 0,
+                                  a.halfFloat ? 1 : 0, a.mediump ? 1 : 0);
+    if (error) showMessage(error);
+    syncSettings();
+    return error || '';
+  }
+
+  // A row of sweep.csv: its accuracy settings and its cube size (reloading the scene if that
+  // changes, keeping the view, the figures and the materials).
+  function chooseAccuracy(name) {
+    return serial(async () => {
+      const row = sweepRows.find((r) => r.name === name);
+      if (!row) {
+        const error = `${name}: not a measured accuracy mode (sweep.csv has ${sweepRows.map((r) => r.name).join(', ')})`;
+        showMessage(error);
+        syncSettings();
+        throw new Error(error);
+      }
+      chosenRow = row.name;
+      const error = setAccuracy(row.accuracy);
+      if (error) throw new Error(error);
+      const reload = row.faceSize !== faceSize();
+      cubeSize = row.faceSize;
+      if (reload) await switchScene(sceneInfo.name, { keepView: true });
+      syncSettings();
+      return accuracy();
+    });
+  }
+  // The acc= name for the URL: the picked row while its settings are current, else the first
+  // row with the current settings when they are not the shipped default ones; null otherwise.
+  const accuracyName = () => {
+    const describe = accuracy().describe;
+    const picked = sweepRows.find((r) => r.name === chosenRow);
+    if (picked && picked.setting === describe) return picked.name;
+    const fallback = sweepRows.find((r) => r.setting === describe);
+    return fallback && describe !== defaultDescribe ? fallback.name : null;
+  };
 
   function setPlanner(policy, slice, every, lod) {
     const error = api.setPlanner(policy, slice, every, lod);
@@ -170,7 +275,27 @@ async function start() {
   }
 
   // --- first scene, then the URL's settings -------------------------------------------------
+  let initialRow = null;
+  if (initial.acc) {
+    initialRow = sweepRows.find((r) => r.name === initial.acc) || null;
+    if (!initialRow) {
+      showMessage(`acc=${initial.acc}: not a measured accuracy mode` +
+                  (sweepRows.length ? ` (sweep.csv has ${sweepRows.map((r) => r.name).join(', ')})` : ' (sweep.csv is not available)') +
+                  '; ignored');
+    } else if (!cubeSize) {
+      cubeSize = initialRow.faceSize;
+    }
+  }
   await switchScene(initial.scene);
+  defaultDescribe = accuracy().describe;
+  if (initialRow) {
+    chosenRow = initialRow.name;
+    setAccuracy(initialRow.accuracy);
+  }
+  for (const m of initial.mat) {
+    const { index, ...material } = m;
+    setMaterial(index, material);
+  }
   if (initial.policy !== null || initial.slice !== null || initial.every !== null || initial.lod !== null) {
     const p = planner();
     setPlanner(initial.policy ?? p.policy, initial.slice ?? p.facesPerFrame, initial.every ?? p.everyN,
@@ -235,7 +360,8 @@ async function start() {
 
   const currentQuery = () => buildQuery({
     scene: sceneInfo.name, cube: cubeSize, planner: planner(), paused, time: lastStats.time,
-    camera: camera(), home: homeCamera, assets: initial.assets,
+    camera: camera(), home: homeCamera, assets: initial.assets, acc: accuracyName(),
+    materials: changedMaterials(), faceSize: faceSize(),
   });
   const syncUrl = () => {
     const query = currentQuery();
@@ -261,48 +387,94 @@ async function start() {
     return link;
   }
 
-  // The user's .obj files: those named like a model of the scene replace it; the rest are named.
+  // Reads a dropped or picked file (size limit, progress). Resolves to its bytes or null (the
+  // problem shown).
+  async function readUserFile(f) {
+    if (f.file.size > MAX_MODEL_BYTES) {
+      showMessage(tooLargeMessage(f.path, f.file.size));
+      return null;
+    }
+    try {
+      return await readFileBytes(f.file, progress.track(f.path));
+    } catch (e) {
+      showMessage(`${f.path}: could not be read (${e.message})`);
+      return null;
+    } finally {
+      progress.clear();
+    }
+  }
+
+  // Mesh `mesh` of the scene from the user's file. The page keeps the bytes for scene reloads.
+  function replaceMesh(f, mesh, bytes) {
+    const error = withBytes(Module, bytes, (ptr, n) => api.loadMesh(0, mesh, ptr, n, f.path));
+    if (error) {
+      showMessage(`${error.includes(f.path) ? error : `${f.path}: ${error}`}\n(keeping the ${mesh} it had)`);
+      return false;
+    }
+    const figure = figures.find((g) => g.name === mesh);
+    if (figure) Object.assign(figure, { bytes, source: f.path });
+    else overrides.set(mesh, { bytes, source: f.path });
+    return true;
+  }
+
+  // A new orbiting figure from the user's file, scaled to fit on a ring around the reflector.
+  function addFigure(f, name, bytes) {
+    let error = withBytes(Module, bytes, (ptr, n) => api.loadMesh(0, name, ptr, n, f.path));
+    if (error) {
+      showMessage(`${error.includes(f.path) ? error : `${f.path}: ${error}`}\n(not added)`);
+      return false;
+    }
+    const bounds = JSON.parse(api.meshBounds(name));
+    if (!bounds.min) {
+      showMessage(`${f.path}: no bounds for the loaded mesh; not added`);
+      return false;
+    }
+    const angle = freeAngle(takenAngles(sceneInfo.json, figures.map((g) => g.object)));
+    const object = figureObject(name, bounds, angle, figures.length);
+    error = api.addObject(JSON.stringify(object));
+    if (error) {
+      showMessage(`${f.path}: ${error}; not added`);
+      return false;
+    }
+    figures.push({ name, bytes, source: f.path, object });
+    return true;
+  }
+
+  // The user's .obj files: those named like a model of the scene replace it; the others are
+  // added as orbiting figures.
   function handleFiles(files) {
     return serial(async () => {
       const meshes = JSON.parse(api.sceneJson()).meshes || [];
       const { replace, extra, ignored } = sortFiles(files, meshes);
       const list = (fs) => fs.map((f) => f.path).join(', ');
       if (ignored.length) showMessage(`${list(ignored)}: not .obj files; ignored`, 'info', 8000);
-      if (extra.length) {
-        showMessage(`${list(extra)}: no model of this scene has that name (${meshes.join(', ')}). ` +
-                    'Adding a new figure needs an add-object call the renderer does not have yet; ' +
-                    'name a file like one of these to replace it.', 'info');
-      }
-      const replaced = [];
+      const replaced = [], added = [];
       for (const f of replace) {
-        if (f.file.size > MAX_MODEL_BYTES) {
-          showMessage(tooLargeMessage(f.path, f.file.size));
-          continue;
-        }
-        let bytes;
-        try {
-          bytes = await readFileBytes(f.file, progress.track(f.path));
-        } catch (e) {
-          showMessage(`${f.path}: could not be read (${e.message})`);
-          continue;
-        } finally {
-          progress.clear();
-        }
-        const error = withBytes(Module, bytes, (ptr, n) => api.loadMesh(0, f.mesh, ptr, n, f.path));
-        if (error) {
-          showMessage(`${error.includes(f.path) ? error : `${f.path}: ${error}`}\n(keeping the ${f.mesh} it had)`);
-          continue;
-        }
-        overrides.set(f.mesh, { bytes, source: f.path });
-        replaced.push(f);
+        const bytes = await readUserFile(f);
+        if (bytes && replaceMesh(f, f.mesh, bytes)) replaced.push(f);
       }
-      if (replaced.length) {
+      for (const f of extra) {
+        const bytes = await readUserFile(f);
+        if (!bytes) continue;
+        const base = f.path.split('/').pop();
+        // A second file of the same name (another folder) replaces the figure added before.
+        const known = (JSON.parse(api.sceneJson()).meshes || []).find((m) => m.toLowerCase() === base.toLowerCase());
+        if (known) {
+          if (replaceMesh(f, known, bytes)) replaced.push({ ...f, mesh: known });
+        } else if (addFigure(f, base, bytes)) {
+          added.push({ ...f, mesh: base });
+        }
+      }
+      if (replaced.length || added.length) {
         lastStats = JSON.parse(api.frame(0, 0));
-        showMessage(replaced.map((f) => `${f.mesh} replaced by ${f.path}`).join('\n'), 'info', 5000);
-        await rebuildLods(replaced.map((f) => f.mesh));
+        showMessage([...replaced.map((f) => `${f.mesh} replaced by ${f.path}`),
+                     ...added.map((f) => `added ${f.path} as an orbiting figure`)].join('\n'), 'info', 5000);
+        syncSettings();
+        panel?.showMaterials();
+        await rebuildLods([...replaced, ...added].map((f) => f.mesh));
       }
-      return { replaced: replaced.map((f) => f.mesh), extra: extra.map((f) => f.path),
-               ignored: ignored.map((f) => f.path) };
+      return { replaced: replaced.map((f) => f.mesh), added: added.map((f) => f.mesh),
+               extra: added.map((f) => f.path), ignored: ignored.map((f) => f.path) };
     });
   }
 
@@ -392,7 +564,14 @@ async function start() {
   const panelApp = {
     settings,
     scenes,
-    materialRows: () => materialRows(sceneInfo.json),
+    materialRows: () => materialRows(objects()),
+    // The environment objects (mirror, glass) with their index and material.
+    environmentObjects: () => objects().map((o, index) => ({ index, ...o }))
+      .filter((o) => ['mirror', 'glass'].includes(o.material.type)),
+    hasSkybox: () => Boolean(sceneInfo.json?.skybox),
+    setMaterial: (index, changes) => setMaterial(index, changes),
+    sweepRows,
+    chooseAccuracy: (name) => (name ? chooseAccuracy(name).catch(() => {}) : syncSettings()),
     setScene: (name) => serial(() => switchScene(name)).catch(() => {}),
     setCube: (size) => {
       cubeSize = size;
@@ -407,8 +586,9 @@ async function start() {
     pickFiles: () => filesInput.click(),
     pickFolder: () => folderInput.click(),
     builtInModels: () => {
-      if (!overrides.size) return;
+      if (!overrides.size && !figures.length) return;
       overrides.clear();
+      figures = [];
       serial(() => switchScene(sceneInfo.name, { keepView: true })).catch(() => {});
     },
     bench: () => bench().catch(() => {}),
@@ -476,6 +656,21 @@ async function start() {
     progressHistory: () => [...progress.history],
     panel: () => panel?.gui || null,
     settings,
+    // rf_objects_json: [{ mesh, material: { type, reflection, base, ior, fresnel, environment } }]
+    objects,
+    // Object `index`'s material: scene-file material keys over what it has. "" or the error.
+    setMaterial: (index, changes) => setMaterial(index, changes),
+    // rf_accuracy_json: { distance, origin, depth, mipmaps, halfFloat, mediump, describe }
+    accuracy,
+    // setAccuracy({ distance, origin, depth, mipmaps, halfFloat, mediump }) (missing keys keep
+    // their value): "" or the error. setAccuracy('ROW'): a sweep.csv row with its cube size, as
+    // the panel's selector (a promise of the new accuracy; rejects for an unknown row).
+    setAccuracy: (settingsOrRow) => (typeof settingsOrRow === 'string'
+      ? chooseAccuracy(settingsOrRow) : setAccuracy(settingsOrRow)),
+    // The sweep.csv rows, and the row of the current combination (null: not measured).
+    sweep: () => sweepRows,
+    accuracyRow: () => currentRow(),
+    figures: () => figures.map((f) => ({ name: f.name, source: f.source, object: f.object })),
   });
   resolveReady();
   if (initial.bench) bench().catch(() => {});

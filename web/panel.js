@@ -1,6 +1,7 @@
-// The controls panel (lil-gui): scene, cube size, capture policy and LOD, the scene's materials
-// (read-only), time, camera, models, and the page's actions. app.js owns the state; the panel
-// only shows it and calls back.
+// The controls panel (lil-gui): scene, cube size, capture policy and LOD, the accuracy mode (a
+// measured row of sweep.csv) with its expected error, the reflective objects' materials, time,
+// camera, models, and the page's actions. app.js owns the state; the panel only shows it and
+// calls back.
 
 export const CUBE_SIZES = [32, 64, 128, 256, 512, 1024];
 export const POLICY_LABELS = {
@@ -10,24 +11,21 @@ export const POLICY_LABELS = {
   'every-n': 'every N frames',
 };
 
-// One line per object with a material, from the scene file (defaults as src/core/scene_file.cpp).
-export function materialRows(json) {
+// One line per reflective object (rf_objects_json's entries; phong objects are left out).
+export function materialSummary(m) {
+  const sky = m.environment === 'skybox' ? ', static sky' : '';
+  if (m.type === 'mirror') {
+    return m.fresnel ? `mirror, Fresnel (ior ${m.ior})${sky}` : `mirror ${m.reflection} refl + ${m.base} base${sky}`;
+  }
+  if (m.type === 'glass') return `glass ior ${m.ior}${m.fresnel ? ', Fresnel' : ''}${sky}`;
+  return m.type;
+}
+
+export function materialRows(objects) {
   const rows = [];
-  (json?.objects || []).forEach((o, i) => {
-    const m = o.material;
-    if (!m) return;
-    const sky = m.environment === 'skybox' ? ', static sky' : '';
-    const ior = m.ior ?? 1.52;
-    let text;
-    if (m.type === 'mirror') {
-      text = m.fresnel ? `mirror, Fresnel (ior ${ior})${sky}`
-                       : `mirror ${m.reflection ?? 0.78} refl + ${m.base ?? 0.3} base${sky}`;
-    } else if (m.type === 'glass') {
-      text = `glass ior ${ior}${m.fresnel ? ', Fresnel' : ''}${sky}`;
-    } else {
-      text = m.type;
-    }
-    rows.push({ label: `${i + 1} ${o.mesh}`, text });
+  (objects || []).forEach((o, i) => {
+    if (!o.material || o.material.type === 'phong') return;
+    rows.push({ label: `${i + 1} ${o.mesh}`, text: materialSummary(o.material) });
   });
   return rows;
 }
@@ -67,17 +65,72 @@ export function buildPanel(GUI, app) {
   lod.domElement.id = 'control-lod';
   capture.add(s, 'lodLevels').name('LOD levels').disable().listen().domElement.id = 'control-lod-levels';
 
+  // Accuracy: a point on the measured speed/accuracy curve (sweep.csv), and what it costs.
+  const accuracyFolder = gui.addFolder('Accuracy (measured modes)');
+  accuracyFolder.domElement.id = 'accuracy';
+  const rowLabel = (r) => `${r.name}: ${r.psnr.toFixed(1)} dB, ${r.ms.toFixed(0)} ms${r.pareto ? ' ★' : ''}`;
+  const accuracyOptions = { 'not measured': '' };
+  for (const r of app.sweepRows) accuracyOptions[rowLabel(r)] = r.name;
+  const accuracy = accuracyFolder.add(s, 'accuracy', accuracyOptions).name('mode')
+    .onChange((v) => app.chooseAccuracy(v));
+  accuracy.domElement.id = 'control-accuracy';
+  const readout = document.createElement('div');
+  readout.id = 'accuracy-readout';
+  readout.className = 'readout';
+  readout.title = 'measured by reflect bench --sweep on the default scene, against the ray-traced reference';
+  accuracyFolder.$children.appendChild(readout);
+
+  // The reflective objects' materials: a summary line each, and for mirrors and glass the
+  // weights, Fresnel, index of refraction and environment, applied as they change.
   let materials = null;
+  let materialControllers = [];
   const showMaterials = () => {
+    const wasOpen = materials ? !materials._closed : false;
     materials?.destroy();
-    materials = gui.addFolder('Reflection mix (read-only)');
+    materials = gui.addFolder('Materials');
     materials.domElement.id = 'materials';
+    materialControllers = [];
     const rows = app.materialRows();
     if (!rows.length) {
       materials.add({ none: 'no reflective object' }, 'none').name('').disable();
     }
-    for (const row of rows) materials.add({ v: row.text }, 'v').name(row.label).disable();
-    materials.close();
+    const editable = new Map(app.environmentObjects().map((o) => [o.index, o]));
+    for (const row of rows) {
+      const index = Number(row.label.split(' ')[0]) - 1;
+      const folder = materials.addFolder(row.label);
+      folder.domElement.id = `materials-${index}`;
+      const summary = { v: row.text };
+      const line = folder.add(summary, 'v').name('now').disable();
+      line.domElement.id = `control-mat-${index}`;
+      const o = editable.get(index);
+      if (!o) continue;
+      const m = { ...o.material };
+      const id = (key, c) => { c.domElement.id = `control-mat-${index}-${key}`; return c; };
+      const apply = (key) => (v) => app.setMaterial(index, { [key]: v });
+      const controls = [
+        id('reflection', folder.add(m, 'reflection', 0, 2, 0.01).name('reflection').onFinishChange(apply('reflection'))),
+        id('base', folder.add(m, 'base', 0, 2, 0.01).name('base').onFinishChange(apply('base'))),
+        id('fresnel', folder.add(m, 'fresnel').name('Fresnel').onChange(apply('fresnel'))),
+        id('ior', folder.add(m, 'ior', 1, 3, 0.01).name('index of refraction').onFinishChange(apply('ior'))),
+      ];
+      const environments = app.hasSkybox() || m.environment === 'skybox' ? ['live', 'skybox'] : ['live'];
+      controls.push(id('environment', folder.add(m, 'environment', environments).name('environment')
+        .onChange(apply('environment'))));
+      materialControllers.push({ index, summary, line, m, controls });
+    }
+    if (!wasOpen) materials.close();
+  };
+  // After a material changed (here, from the URL or from demo.setMaterial): show what it is now.
+  const updateMaterials = () => {
+    const now = new Map(app.environmentObjects().map((o) => [o.index, o.material]));
+    for (const c of materialControllers) {
+      const material = now.get(c.index);
+      if (!material) continue;
+      Object.assign(c.m, material);
+      c.summary.v = materialSummary(material);
+      c.line.updateDisplay();
+      for (const control of c.controls) control.updateDisplay();
+    }
   };
 
   const view = gui.addFolder('Time and view');
@@ -105,8 +158,9 @@ export function buildPanel(GUI, app) {
       cube = addCube();
     }
     for (const c of gui.controllersRecursive()) c.updateDisplay();
+    readout.textContent = s.accuracyReadout;
   };
   refresh();
   showMaterials();
-  return { gui, refresh, showMaterials };
+  return { gui, refresh, showMaterials, updateMaterials };
 }

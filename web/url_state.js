@@ -4,6 +4,8 @@
 //   scene=NAME  cube=PIXELS  policy=every-frame|when-changed|time-sliced|every-n  slice=FACES
 //   every=N  lod=TRIANGLES_PER_PIXEL  paused  t=SECONDS (when paused)  cam=x,y,z,yaw,pitch
 //   assets=PREFIX (the user's models by the scene's file names)
+//   acc=ROW (an accuracy mode: a row name of sweep.csv; its cube size unless cube= is given)
+//   mat=INDEX:REFLECTION,BASE,FRESNEL(0|1),IOR[,sky];... (changed materials; INDEX from 0)
 // Not mirrored (one-off actions): bench, frames.
 
 export const DEFAULT_SCENE = 'ex12-2';
@@ -26,6 +28,8 @@ export function parseQuery(search) {
     assets: params.get('assets'),
     bench: params.has('bench'),
     frames: null,
+    acc: params.get('acc') || null,  // checked against sweep.csv by the page
+    mat: [],
   };
   const integer = (key, min, max) => {
     if (!params.has(key)) return null;
@@ -68,14 +72,45 @@ export function parseQuery(search) {
       state.cam = parts;
     }
   }
+  if (params.has('mat')) {
+    for (const entry of params.get('mat').split(';').filter(Boolean)) {
+      const material = parseMaterialEntry(entry);
+      if (material) state.mat.push(material);
+      else problems.push(`mat=${entry}: expected INDEX:REFLECTION,BASE,FRESNEL(0|1),IOR[,sky]; ignored`);
+    }
+  }
   return { state, problems };
 }
 
+// "3:0.5,0.3,1,1.52[,sky]" -> { index, reflection, base, fresnel, ior, environment } or null.
+export function parseMaterialEntry(entry) {
+  const m = /^(\d+):(.*)$/.exec(entry);
+  if (!m) return null;
+  const parts = m[2].split(',');
+  if (parts.length < 4 || parts.length > 5) return null;
+  const [reflection, base, fresnel, ior] = parts.slice(0, 4).map(Number);
+  const environment = parts[4] === undefined || parts[4] === 'live' ? 'live' : parts[4] === 'sky' ? 'skybox' : null;
+  if (![reflection, base, ior].every(Number.isFinite) || reflection < 0 || reflection > 4 ||
+      base < 0 || base > 4 || ior < 1 || ior > 4 || (fresnel !== 0 && fresnel !== 1) || !environment) {
+    return null;
+  }
+  return { index: Number(m[1]), reflection, base, fresnel: fresnel === 1, ior, environment };
+}
+
+// { index, reflection, base, fresnel, ior, environment } -> "3:0.5,0.3,1,1.52[,sky]".
+export function materialEntry(m) {
+  return `${m.index}:${[round(m.reflection, 3), round(m.base, 3), m.fresnel ? 1 : 0, round(m.ior, 3)].join(',')}` +
+         (m.environment === 'skybox' ? ',sky' : '');
+}
+
 // The query for the page as it is now. `planner` is rf_planner_json's, `camera` rf_camera_json's,
-// `home` the scene's own camera (cam= is left out while the camera is there).
-export function buildQuery({ scene, cube, planner, paused, time, camera, home, assets }) {
+// `home` the scene's own camera (cam= is left out while the camera is there), `acc` a sweep row
+// name (or null; with it the cube size `faceSize` is written even when the user did not set one,
+// since acc= alone means the row's size), `materials` the changed materials (see materialEntry).
+export function buildQuery({ scene, cube, planner, paused, time, camera, home, assets, acc = null,
+                             materials = [], faceSize = 0 }) {
   const parts = [`scene=${encodeURIComponent(scene)}`];
-  if (cube) parts.push(`cube=${cube}`);
+  if (cube || (acc && faceSize)) parts.push(`cube=${cube || faceSize}`);
   if (planner && planner.policy) {
     parts.push(`policy=${planner.policy}`);
     if (planner.policy === 'time-sliced') parts.push(`slice=${planner.facesPerFrame}`);
@@ -89,6 +124,8 @@ export function buildQuery({ scene, cube, planner, paused, time, camera, home, a
   if (camera && camera.eye && !sameCamera(camera, home)) {
     parts.push(`cam=${[...camera.eye.map((v) => round(v, 4)), round(camera.yaw, 3), round(camera.pitch, 3)].join(',')}`);
   }
+  if (acc) parts.push(`acc=${encodeURIComponent(acc)}`);
+  if (materials.length) parts.push(`mat=${materials.map(materialEntry).join(';')}`);
   if (assets) parts.push(`assets=${encodeURIComponent(assets)}`);
   return `?${parts.join('&')}`;
 }

@@ -86,15 +86,17 @@ test('the scene picker loads every shipped scene: its name, a picture, no errors
   expect(errors).toEqual([]);
 });
 
-test('the reflection mix of the scene is shown read-only', async ({ page }) => {
+test('the materials of the scene are listed, with controls for mirrors and glass', async ({ page }) => {
   await openDemo(page, '?paused');
   const materials = page.locator('#materials');
-  await materials.locator('.lil-title').click();  // open the folder
+  await materials.locator('.lil-title').first().click();  // open the folder
   await expect(materials).toContainText('4 sphere.obj');
   await expect(materials.locator('input').first()).toHaveValue('mirror 0.78 refl + 0.3 base');
   await expect(materials.locator('.lil-controller').first()).toHaveClass(/lil-disabled/);
+  await expect(page.locator('#control-mat-3-reflection input')).toHaveValue('0.78');
   await page.evaluate(() => window.demo.loadScene('glass-sphere'));
   await expect(page.locator('#materials input').first()).toHaveValue('glass ior 1.52, Fresnel');
+  await expect(page.locator('#materials [id$="-fresnel"] input').first()).toBeChecked();
 });
 
 test('pause, single step and reset camera', async ({ page }) => {

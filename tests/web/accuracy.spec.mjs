@@ -1,0 +1,94 @@
+// The accuracy selector: a point on the measured speed/accuracy curve (docs/sweep.csv, copied to
+// the site), its settings applied with rf_set_accuracy and its cube size, and a readout of the
+// expected error from the CSV. Mirrored in the URL as acc=ROW.
+import { test, expect } from '@playwright/test';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { collectErrors, expectedSphereBox, openDemo, renderAndRead } from './helpers.mjs';
+
+const CSV = readFileSync(fileURLToPath(new URL('../../docs/sweep.csv', import.meta.url)), 'utf8');
+// name -> { psnr, faceSize } from the CSV (the setting column is quoted and holds commas).
+const ROWS = Object.fromEntries(CSV.trim().split('\n').slice(1).map((line) => {
+  const [, name, setting, rest] = /^([^,]+),"([^"]*)",(.*)$/.exec(line);
+  const f = rest.split(',');
+  return [name, { setting, faceSize: Number(f[0]), psnr: Number(f[4]), angular: Number(f[8]) }];
+}));
+
+const query = (page) => new URL(page.url()).search;
+const accuracy = (page) => page.evaluate(() => window.demo.accuracy());
+const select = (page) => page.locator('#control-accuracy select');
+async function choose(page, name) {
+  const label = (await select(page).locator('option').allTextContents()).find((t) => t.startsWith(`${name}:`));
+  expect(label, `an option for ${name}`).toBeTruthy();
+  await select(page).selectOption({ label });
+}
+
+function changedInSphere(a, b) {
+  const box = expectedSphereBox(a.width, a.height);
+  let n = 0;
+  for (let y = box.y0; y <= box.y1; ++y) {
+    for (let x = box.x0; x <= box.x1; ++x) {
+      const i = (y * a.width + x) * 4;
+      if (Math.max(...[0, 1, 2].map((k) => Math.abs(a.data[i + k] - b.data[i + k]))) > 8) ++n;
+    }
+  }
+  return n;
+}
+
+test('choosing "original" sets the course settings, changes the reflection and shows its error', async ({ page }) => {
+  const errors = collectErrors(page);
+  await openDemo(page, '?paused&t=1&policy=every-frame');
+  const options = await select(page).locator('option').allTextContents();
+  expect(options.length).toBe(Object.keys(ROWS).length + 1);  // every row, and "not measured"
+  // The shipped default is a measured row.
+  expect((await accuracy(page)).describe).toBe(ROWS.default.setting);
+  await choose(page, 'default');
+  await expect(page.locator('#accuracy-readout')).toContainText(`PSNR ${ROWS.default.psnr.toFixed(2)} dB`);
+  const before = await renderAndRead(page);
+
+  await choose(page, 'original');
+  await expect.poll(async () => (await accuracy(page)).origin).toBe(true);
+  expect(await accuracy(page)).toMatchObject({ distance: 0, origin: true, depth: 16, mipmaps: false,
+                                               halfFloat: false, mediump: false,
+                                               describe: ROWS.original.setting });
+  const readout = page.locator('#accuracy-readout');
+  await expect(readout).toContainText(`original: reflector PSNR ${ROWS.original.psnr.toFixed(2)} dB`);
+  await expect(readout).toContainText(`mean angular error ${ROWS.original.angular.toFixed(2)}°`);
+  await expect(readout).toContainText('not on the Pareto front');
+  const after = await renderAndRead(page);
+  expect(after.stats.cubeFaceSize).toBe(ROWS.original.faceSize);
+  const box = expectedSphereBox(before.width, before.height);
+  const area = (box.x1 - box.x0 + 1) * (box.y1 - box.y0 + 1);
+  expect(changedInSphere(before, after)).toBeGreaterThan(area * 0.02);
+  await expect.poll(() => query(page)).toContain('&acc=original');
+
+  // A row with another cube size reloads the scene at that size.
+  await choose(page, 'distance-2-size-64');
+  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
+  expect((await accuracy(page)).describe).toBe(ROWS['distance-2-size-64'].setting);
+  await expect(readout).toContainText('on the Pareto front');
+  await expect.poll(() => query(page)).toContain('cube=64&');
+  await expect.poll(() => query(page)).toContain('&acc=distance-2-size-64');
+
+  // A combination the sweep did not measure.
+  expect(await page.evaluate(() => window.demo.setAccuracy({ mipmaps: true }))).toBe('');
+  await expect(readout).toContainText('not measured');
+  await expect.poll(() => select(page).evaluate((s) => s.options[s.selectedIndex].textContent)).toBe('not measured');
+  await expect.poll(() => query(page)).not.toContain('acc=');  // no row has these settings
+  expect(errors).toEqual([]);
+});
+
+test('acc= in a link applies the row; an unknown row is named', async ({ page }) => {
+  await openDemo(page, '?paused&acc=original');
+  expect(await accuracy(page)).toMatchObject({ distance: 0, origin: true, depth: 16 });
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(256);
+  await expect(page.locator('#accuracy-readout')).toContainText(`PSNR ${ROWS.original.psnr.toFixed(2)} dB`);
+  await expect.poll(() => query(page)).toBe('?scene=ex12-2&cube=256&policy=when-changed&paused&t=0&acc=original');
+  // Settings carry over to another scene.
+  await page.evaluate(() => window.demo.loadScene('two-mirrors'));
+  expect((await accuracy(page)).origin).toBe(true);
+
+  await openDemo(page, '?paused&acc=nonsense');
+  await expect(page.locator('#messages .message', { hasText: 'acc=nonsense: not a measured accuracy mode' })).toBeVisible();
+  expect((await accuracy(page)).describe).toBe(ROWS.default.setting);
+});
