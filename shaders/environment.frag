@@ -29,7 +29,7 @@ out vec4 fragColour;
 // [0, 1) covers the whole ray (t = a / (1 - a) units), finds the first sample behind the stored
 // surface (so thin, near objects are not skipped), then u_distanceIterations secant steps refine
 // the crossing. With no iterations it is d, the course's plain lookup.
-const int kLinearSteps = 24;
+const int kLinearSteps = 12;
 
 float storedDistance(vec3 direction) {
   float a = min(texture(u_environment, direction).a, 0.9999);
