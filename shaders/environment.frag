@@ -19,6 +19,7 @@ uniform samplerCube u_environment;
 // encoded as d / (d + 1).
 uniform int u_distanceIterations;  // 0 = plain lookup along the ray direction (the course)
 uniform vec3 u_probeCentre;
+uniform float u_distanceUnit;      // the capture's near plane (distances are stored in its units)
 uniform int u_outputDirection;     // 1: write the looked-up direction instead (for measuring)
 
 out vec4 fragColour;
@@ -36,6 +37,7 @@ float storedDistance(vec3 direction) {
   return a / (1.0 - a);
 }
 
+// Positions here are in units of the capture's near plane, as the stored distances are.
 float behind(vec3 x, vec3 d, float a) {  // > 0 in front of the stored surface, < 0 behind it
   vec3 p = x + (a / (1.0 - a)) * d;
   return storedDistance(p) - length(p);
@@ -43,7 +45,7 @@ float behind(vec3 x, vec3 d, float a) {  // > 0 in front of the stored surface, 
 
 vec3 lookupDirection(vec3 d) {
   if (u_distanceIterations == 0) return d;
-  vec3 x = v_worldPosition - u_probeCentre;
+  vec3 x = (v_worldPosition - u_probeCentre) / u_distanceUnit;
   float previousA = 0.0;
   float previousF = behind(x, d, 0.0);
   float a = 0.0;

@@ -42,7 +42,7 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
                             p.uniform("u_viewPosition"), p.uniform("u_ambient"),
                             p.uniform("u_diffuse"), p.uniform("u_specular"),
                             p.uniform("u_shininess"), p.uniform("u_storeDistance"),
-                            p.uniform("u_probeCentre")};
+                            p.uniform("u_probeCentre"), p.uniform("u_distanceUnit")};
   phongProgram.program = phong.take();
   const ShaderProgram& e = environment.value();
   EnvironmentProgram environmentProgram{
@@ -51,7 +51,7 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
       e.uniform("u_reflectionWeight"), e.uniform("u_baseWeight"), e.uniform("u_refracts"),
       e.uniform("u_eta"),     e.uniform("u_fresnelF0"), e.uniform("u_fresnel"),
       e.uniform("u_environment"), e.uniform("u_distanceIterations"), e.uniform("u_probeCentre"),
-      e.uniform("u_outputDirection")};
+      e.uniform("u_distanceUnit"), e.uniform("u_outputDirection")};
   environmentProgram.program = environment.take();
   const ShaderProgram& c = cubeTextured.value();
   CubeTexturedProgram cubeTexturedProgram{ShaderProgram{}, c.uniform("u_viewProjection"),
@@ -120,6 +120,7 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
       glUniform1f(phong_.shininess, scene.light.shininess);
       glUniform1i(phong_.storeDistance, distanceCentre ? 1 : 0);
       if (distanceCentre) glUniform3fv(phong_.probeCentre, 1, glm::value_ptr(*distanceCentre));
+      glUniform1f(phong_.distanceUnit, scene.capture.near);
       break;
     case ProgramKind::Environment:
       glUseProgram(environment_.program.id());
@@ -127,6 +128,7 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
       glUniform3fv(environment_.viewPosition, 1, glm::value_ptr(viewPosition));
       glUniform1i(environment_.environment, kEnvironmentTextureUnit);
       glUniform1i(environment_.outputDirection, outputDirections ? 1 : 0);
+      glUniform1f(environment_.distanceUnit, scene.capture.near);
       break;
     case ProgramKind::CubeTextured:
       glUseProgram(cubeTextured_.program.id());
@@ -215,7 +217,8 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
   const CaptureFormat format{scene.capture.faceSize, accuracy_.usesHalfFloat(),
                              accuracy_.depthBits, accuracy_.mipmaps};
   const bool storeDistance = accuracy_.distanceIterations > 0;
-  const float farAlpha = scene.capture.far / (scene.capture.far + 1.0f);  // d / (d + 1) at far
+  // d / (d + 1) at the far plane, d in units of the near plane.
+  const float farAlpha = scene.capture.far / (scene.capture.far + scene.capture.near);
   for (const ProbePlan& probe : plan.probes) {
     if (probe.faces.empty()) continue;
     auto target = probes_.find(probe.reflector);

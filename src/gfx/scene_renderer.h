@@ -69,13 +69,13 @@ class SceneRenderer {
   struct PhongProgram {
     ShaderProgram program;
     GLint viewProjection, model, normalMatrix, colour, lightPosition, viewPosition, ambient,
-        diffuse, specular, shininess, storeDistance, probeCentre;
+        diffuse, specular, shininess, storeDistance, probeCentre, distanceUnit;
   };
   struct EnvironmentProgram {
     ShaderProgram program;
     GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
         refracts, eta, fresnelF0, fresnel, environment, distanceIterations, probeCentre,
-        outputDirection;
+        distanceUnit, outputDirection;
   };
   struct CubeTexturedProgram {
     ShaderProgram program;
