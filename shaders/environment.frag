@@ -15,9 +15,9 @@ uniform float u_eta;         // n1 / n2 for refract(): air to the material
 uniform float u_fresnelF0;   // ((n - 1) / (n + 1))^2
 uniform int u_fresnel;       // 0 fixed mix, 1 Schlick
 uniform samplerCube u_environment;
-// Distance-corrected lookup: the capture's alpha holds each texel's distance d from u_probeCentre,
-// encoded as d / (d + 1).
-uniform int u_distanceIterations;  // 0 = plain lookup along the ray direction (the course)
+// Distance-corrected lookup (DISTANCE_ITERATIONS > 0, defined when the program is built: a
+// runtime switch would not do, as software rasterisers run both sides of a branch): the
+// capture's alpha holds each texel's distance d from u_probeCentre, encoded as d / (d + 1).
 uniform vec3 u_probeCentre;
 uniform float u_distanceUnit;      // the capture's near plane (distances are stored in its units)
 uniform int u_outputDirection;     // 1: write the looked-up direction instead (for measuring)
@@ -28,7 +28,7 @@ out vec4 fragColour;
 // the captured surroundings (the capture's alpha holds each texel's distance from the centre).
 // As in the distance-impostor method: a linear search along the ray, parametrised so that a in
 // [0, 1) covers the whole ray (t = a / (1 - a) units), finds the first sample behind the stored
-// surface (so thin, near objects are not skipped), then u_distanceIterations secant steps refine
+// surface (so thin, near objects are not skipped), then DISTANCE_ITERATIONS secant steps refine
 // the crossing. With no iterations it is d, the course's plain lookup.
 const int kLinearSteps = 12;
 
@@ -44,7 +44,9 @@ float behind(vec3 x, vec3 d, float a) {  // > 0 in front of the stored surface, 
 }
 
 vec3 lookupDirection(vec3 d) {
-  if (u_distanceIterations == 0) return d;
+#if DISTANCE_ITERATIONS == 0
+  return d;
+#else
   vec3 x = (v_worldPosition - u_probeCentre) / u_distanceUnit;
   float previousA = 0.0;
   float previousF = behind(x, d, 0.0);
@@ -62,7 +64,7 @@ vec3 lookupDirection(vec3 d) {
     previousF = f;
   }
   if (!crossed) return d;  // nothing stored along the ray: the far background, seen along d
-  for (int i = 0; i < u_distanceIterations; ++i) {
+  for (int i = 0; i < DISTANCE_ITERATIONS; ++i) {
     float middle = previousA + (a - previousA) * previousF / max(previousF - f, 1e-6);
     float fm = behind(x, d, middle);
     if (fm < 0.0) {
@@ -75,6 +77,7 @@ vec3 lookupDirection(vec3 d) {
   }
   float hit = previousA + (a - previousA) * previousF / max(previousF - f, 1e-6);
   return x + (hit / (1.0 - hit)) * d;
+#endif
 }
 
 void main() {

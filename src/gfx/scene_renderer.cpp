@@ -29,7 +29,10 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   const bool mediump = accuracy.mediump;
   Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag", mediump);
   if (!phong) return Result<SceneRenderer>::failure(phong.error());
-  Result<ShaderProgram> environment = ShaderProgram::build("mesh.vert", "environment.frag", mediump);
+  const std::string lookup =
+      "#define DISTANCE_ITERATIONS " + std::to_string(accuracy.distanceIterations) + "\n";
+  Result<ShaderProgram> environment =
+      ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
   if (!environment) return Result<SceneRenderer>::failure(environment.error());
   Result<ShaderProgram> cubeTextured =
       ShaderProgram::build("mesh.vert", "cube_textured.frag", mediump);
@@ -50,8 +53,8 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
       e.uniform("u_normalMatrix"), e.uniform("u_colour"), e.uniform("u_viewPosition"),
       e.uniform("u_reflectionWeight"), e.uniform("u_baseWeight"), e.uniform("u_refracts"),
       e.uniform("u_eta"),     e.uniform("u_fresnelF0"), e.uniform("u_fresnel"),
-      e.uniform("u_environment"), e.uniform("u_distanceIterations"), e.uniform("u_probeCentre"),
-      e.uniform("u_distanceUnit"), e.uniform("u_outputDirection")};
+      e.uniform("u_environment"), e.optionalUniform("u_probeCentre"),
+      e.optionalUniform("u_distanceUnit"), e.uniform("u_outputDirection")};
   environmentProgram.program = environment.take();
   const ShaderProgram& c = cubeTextured.value();
   CubeTexturedProgram cubeTexturedProgram{ShaderProgram{}, c.uniform("u_viewProjection"),
@@ -128,7 +131,6 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
       glUniform3fv(environment_.viewPosition, 1, glm::value_ptr(viewPosition));
       glUniform1i(environment_.environment, kEnvironmentTextureUnit);
       glUniform1i(environment_.outputDirection, outputDirections ? 1 : 0);
-      glUniform1f(environment_.distanceUnit, scene.capture.near);
       break;
     case ProgramKind::CubeTextured:
       glUseProgram(cubeTextured_.program.id());
@@ -160,8 +162,10 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item, d
       glUniform1i(environment_.fresnel, object.fresnel ? 1 : 0);
       // Only a live probe has distances (and a centre); the skybox is at infinity.
       const bool live = object.environment == Environment::LiveProbe;
-      glUniform1i(environment_.distanceIterations, live ? accuracy_.distanceIterations : 0);
+      // A skybox is at infinity: its lookups stay plain (a far probe centre makes the search
+      // return the ray direction itself).
       glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(probeCentreOf(item.object)));
+      glUniform1f(environment_.distanceUnit, live ? scene.capture.near : 1e30f);
       break;
     }
     case ProgramKind::CubeTextured:

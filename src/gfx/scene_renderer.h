@@ -74,8 +74,7 @@ class SceneRenderer {
   struct EnvironmentProgram {
     ShaderProgram program;
     GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
-        refracts, eta, fresnelF0, fresnel, environment, distanceIterations, probeCentre,
-        distanceUnit, outputDirection;
+        refracts, eta, fresnelF0, fresnel, environment, probeCentre, distanceUnit, outputDirection;
   };
   struct CubeTexturedProgram {
     ShaderProgram program;

@@ -28,13 +28,14 @@ std::string infoLog(GLuint object, bool isProgram) {
 }
 
 Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* body,
-                             bool mediump) {
+                             bool mediump, const std::string& defines) {
   const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
   if (!body) return Result<ShaderHandle>::failure("shader " + file + ": not embedded in this build");
   ShaderHandle shader(glCreateShader(stage));
   // Vertex shaders stay highp (positions); fragments may trade precision for speed.
-  const char* sources[2] = {stage == GL_FRAGMENT_SHADER && mediump ? kMediump : kHighp, body};
-  glShaderSource(shader.id(), 2, sources, nullptr);
+  const char* sources[3] = {stage == GL_FRAGMENT_SHADER && mediump ? kMediump : kHighp,
+                            defines.c_str(), body};
+  glShaderSource(shader.id(), 3, sources, nullptr);
   glCompileShader(shader.id());
   GLint ok = GL_FALSE;
   glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
@@ -48,18 +49,21 @@ Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* 
 }  // namespace
 
 Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile,
-                                           const std::string& fragmentFile, bool mediump) {
+                                           const std::string& fragmentFile, bool mediump,
+                                           const std::string& defines) {
   return buildFromSource(vertexFile, embeddedShader(vertexFile), fragmentFile,
-                         embeddedShader(fragmentFile), mediump);
+                         embeddedShader(fragmentFile), mediump, defines);
 }
 
 Result<ShaderProgram> ShaderProgram::buildFromSource(const std::string& vertexFile,
                                                      const char* vertexSource,
                                                      const std::string& fragmentFile,
-                                                     const char* fragmentSource, bool mediump) {
-  Result<ShaderHandle> vs = compile(GL_VERTEX_SHADER, vertexFile, vertexSource, false);
+                                                     const char* fragmentSource, bool mediump,
+                                                     const std::string& defines) {
+  Result<ShaderHandle> vs = compile(GL_VERTEX_SHADER, vertexFile, vertexSource, false, "");
   if (!vs) return Result<ShaderProgram>::failure(vs.error());
-  Result<ShaderHandle> fs = compile(GL_FRAGMENT_SHADER, fragmentFile, fragmentSource, mediump);
+  Result<ShaderHandle> fs =
+      compile(GL_FRAGMENT_SHADER, fragmentFile, fragmentSource, mediump, defines);
   if (!fs) return Result<ShaderProgram>::failure(fs.error());
 
   ShaderProgram result;

@@ -17,13 +17,15 @@ class ShaderProgram {
   // Prepends "#version 300 es" and the float precision in one place (fragment shaders mediump
   // when asked). Failure carries the stage,
   // the file name and the driver's log.
+  // `defines` ("#define NAME VALUE\n" lines) follow the prelude in the fragment shader.
   static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
-                                     bool mediump = false);
+                                     bool mediump = false, const std::string& defines = "");
   // The same from GLSL text (without #version); the names label messages. For tools and tests.
   static Result<ShaderProgram> buildFromSource(const std::string& vertexName,
                                                const char* vertexSource,
                                                const std::string& fragmentName,
-                                               const char* fragmentSource, bool mediump = false);
+                                               const char* fragmentSource, bool mediump = false,
+                                               const std::string& defines = "");
 
   GLuint id() const { return program_.id(); }
   // -1 (and a message on stderr) for a uniform the program does not have.
