@@ -79,7 +79,7 @@ async function main() {
       await shoot(single, singleQuery, { panelOpen: true });
     } else {
       await shoot(join(repo, 'docs/screenshot.png'), '?paused&t=2', { panelOpen: true });
-      const scenes = readdirSync(join(site, 'scenes')).filter((f) => f.endsWith('.json')).sort();
+      const scenes = readdirSync(join(site, 'scenes')).filter((f) => f.endsWith('.json') && f !== 'index.json').sort();
       for (const file of scenes) {
         const name = file.replace(/\.json$/, '');
         await shoot(join(repo, `docs/scene-${name}.png`), `?scene=${name}&paused&t=2`, { panelOpen: false });
