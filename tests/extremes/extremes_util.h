@@ -14,6 +14,7 @@
 #include "core/result.h"
 #include "core/scene.h"
 #include "gfx/gl.h"
+#include "cube_sampler.h"
 
 namespace reflect::extremes {
 
@@ -36,7 +37,7 @@ Result<RgbaImage> renderWithDepthBits(Demo& demo, double seconds, int width, int
                                       int depthBits);
 
 // texture(cube, d) for each direction, as RGB bytes (any number of directions).
-std::vector<glm::u8vec3> sampleCube(GLuint cube, const std::vector<glm::vec3>& directions);
+using testing::sampleCube;  // tests/gl/cube_sampler.h
 
 glm::u8vec3 rgbAt(const RgbaImage& image, int x, int y);
 glm::u8vec3 toBytes(const glm::vec3& colour);  // round(c * 255), as GL's unorm conversion

@@ -10,51 +10,13 @@
 #include "app/headless_frames.h"
 #include "gfx/offscreen_target.h"
 #include "gfx/shader_program.h"
+#include "cube_sampler.h"
 #include "gl_fixture.h"
 
 namespace reflect {
 namespace {
 
 constexpr int kMaxDirections = 16;
-
-// Pixel i of a 1-pixel-high strip is the cube map sampled along u_directions[i].
-constexpr const char* kStripVertex = R"(
-void main() {
-  vec2 corner = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
-  gl_Position = vec4(corner, 0.0, 1.0);
-})";
-constexpr const char* kStripFragment = R"(
-uniform samplerCube u_cube;
-uniform vec3 u_directions[16];
-out vec4 colour;
-void main() { colour = texture(u_cube, u_directions[int(gl_FragCoord.x)]); })";
-
-std::vector<glm::u8vec3> sampleCube(GLuint cube, const std::vector<glm::vec3>& directions) {
-  auto program = ShaderProgram::buildFromSource("strip.vert", kStripVertex, "strip.frag",
-                                                kStripFragment);
-  EXPECT_TRUE(program) << program.error();
-  const int n = static_cast<int>(directions.size());
-  auto target = OffscreenTarget::create(n, 1);
-  EXPECT_TRUE(target) << target.error();
-  glBindFramebuffer(GL_FRAMEBUFFER, target.value().framebuffer());
-  glViewport(0, 0, n, 1);
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(program.value().id());
-  glUniform3fv(program.value().uniform("u_directions"), n, glm::value_ptr(directions[0]));
-  glUniform1i(program.value().uniform("u_cube"), 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
-  GLuint vao = 0;
-  glGenVertexArrays(1, &vao);
-  glBindVertexArray(vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glDeleteVertexArrays(1, &vao);
-  EXPECT_TRUE(checkGlError("sample cube"));
-  RgbaImage strip = target.value().readPixels();
-  std::vector<glm::u8vec3> colours;
-  for (int i = 0; i < n; ++i) colours.emplace_back(strip.at(i, 0)[0], strip.at(i, 0)[1], strip.at(i, 0)[2]);
-  return colours;
-}
 
 // Flat colours: ambient 1 and nothing else, so a marker renders exactly its colour.
 Scene markerScene() {
@@ -104,7 +66,7 @@ TEST(CubeRoundTrip, MarkerInDirectionDIsWhatTheCubeReturnsForD) {
 
   std::vector<glm::vec3> lookups = directions;
   lookups.push_back({0.3f, -1.0f, 0.8f});  // between markers: the clear colour
-  const auto sampled = sampleCube(demo->environmentTexture(), lookups);
+  const auto sampled = testing::sampleCube(demo->environmentTexture(), lookups);
   for (size_t i = 0; i < directions.size(); ++i) {
     expectNear(sampled[i], toBytes(colours[i]), "direction " + std::to_string(i));
   }
@@ -120,7 +82,7 @@ TEST(CubeRoundTrip, TheReflectorNeverAppearsInItsOwnCubeMap) {
     const float a = 0.7f * static_cast<float>(i);
     lookups.push_back({std::cos(a), std::sin(1.3f * a), std::sin(a)});
   }
-  for (const glm::u8vec3& c : sampleCube(demo->environmentTexture(), lookups)) {
+  for (const glm::u8vec3& c : testing::sampleCube(demo->environmentTexture(), lookups)) {
     expectNear(c, glm::u8vec3(0), "reflector drawn into its own capture");
   }
 }
