@@ -1,12 +1,17 @@
 #include "gfx/offscreen_target.h"
 
+#include <algorithm>
 #include <string>
 
 namespace reflect {
 
 Result<OffscreenTarget> OffscreenTarget::create(int width, int height, bool floatColour) {
+  // The frame must fit a renderbuffer and a viewport, or it would be cropped without a word.
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
+  GLint maxViewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+  maxSize = std::min({maxSize, maxViewport[0], maxViewport[1]});
   if (width < 1 || height < 1 || width > maxSize || height > maxSize) {
     return Result<OffscreenTarget>::failure("frame size " + std::to_string(width) + "x" +
                                             std::to_string(height) + " is outside 1.." +

@@ -2,6 +2,7 @@
 // for what a person looks for: mario's red and sonic's green reflected where they must be.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
@@ -101,6 +102,32 @@ TEST(DefaultScene, SphereReflectsMarioRedAndSonicGreenWhereTheyMustBe) {
     EXPECT_GT(countDominant(image.value(), sonicPixel, 10, 1, 6), 10)
         << "no green near (" << sonicPixel.x << "," << sonicPixel.y << ") at t=" << t;
   }
+}
+
+}  // namespace
+}  // namespace reflect
+
+namespace reflect {
+namespace {
+
+TEST(FrameSize, LargerThanTheGlAllowsIsRefusedWithAMessage) {
+  // Beyond GL_MAX_VIEWPORT_DIMS / GL_MAX_RENDERBUFFER_SIZE a frame cannot be drawn whole: the
+  // CLI and tests get a message instead of a silently cropped picture.
+  GLint maxViewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+  GLint maxRenderbuffer = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
+  const int allowed = std::min({maxRenderbuffer, maxViewport[0], maxViewport[1]});
+  const int tooWide = allowed + 1;
+  auto demo = testing::makeDemo(makeDynamicReflectionScene());
+  auto image = renderFrameAt(*demo, 0.0, tooWide, 4);
+  ASSERT_FALSE(image);
+  EXPECT_EQ(image.error(), "frame size " + std::to_string(tooWide) + "x4 is outside 1.." +
+                               std::to_string(allowed));
+  // A 0x0 frame (a hidden tab's canvas) draws nothing and reports no error.
+  const FrameStats& stats = demo->frame(1.0 / 60.0, 0, 0, 0, false);
+  EXPECT_TRUE(stats.error.empty());
+  EXPECT_EQ(stats.facesCaptured, 0);
 }
 
 }  // namespace
