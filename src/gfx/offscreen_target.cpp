@@ -5,7 +5,8 @@
 
 namespace reflect {
 
-Result<OffscreenTarget> OffscreenTarget::create(int width, int height, bool floatColour) {
+Result<OffscreenTarget> OffscreenTarget::create(int width, int height, bool floatColour,
+                                                int depthBits) {
   // The frame must fit a renderbuffer and a viewport, or it would be cropped without a word.
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
@@ -25,7 +26,8 @@ Result<OffscreenTarget> OffscreenTarget::create(int width, int height, bool floa
   glRenderbufferStorage(GL_RENDERBUFFER, floatColour ? GL_RGBA32F : GL_RGBA8, width, height);
   t.depth_ = RenderbufferHandle(genRenderbuffer());
   glBindRenderbuffer(GL_RENDERBUFFER, t.depth_.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  glRenderbufferStorage(GL_RENDERBUFFER, depthBits <= 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24,
+                        width, height);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
   t.framebuffer_ = FramebufferHandle(genFramebuffer());
   glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer_.id());

@@ -15,7 +15,9 @@ namespace reflect {
 class OffscreenTarget {
  public:
   // floatColour: RGBA32F (needs EXT_color_buffer_float), read with readFloats.
-  static Result<OffscreenTarget> create(int width, int height, bool floatColour = false);
+  // depthBits: 16 or 24.
+  static Result<OffscreenTarget> create(int width, int height, bool floatColour = false,
+                                        int depthBits = 24);
 
   GLuint framebuffer() const { return framebuffer_.id(); }
   int width() const { return width_; }

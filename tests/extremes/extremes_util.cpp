@@ -6,6 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gfx/gl_handle.h"
+#include "gfx/offscreen_target.h"
 #include "gfx/shader_program.h"
 #include "platform/native/model_paths.h"
 
@@ -57,34 +58,11 @@ Result<RgbaImage> renderWithDepthBits(Demo& demo, double seconds, int width, int
   if (depthBits != 16 && depthBits != 24) {
     return Result<RgbaImage>::failure("depth bits must be 16 or 24");
   }
-  RenderbufferHandle colour(genRenderbuffer());
-  glBindRenderbuffer(GL_RENDERBUFFER, colour.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  RenderbufferHandle depth(genRenderbuffer());
-  glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, depthBits == 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24,
-                        width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  FramebufferHandle framebuffer(genFramebuffer());
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour.id());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (status != GL_FRAMEBUFFER_COMPLETE) return Result<RgbaImage>::failure("framebuffer incomplete");
-
+  Result<OffscreenTarget> target = OffscreenTarget::create(width, height, false, depthBits);
+  if (!target) return Result<RgbaImage>::failure(target.error());
   demo.clock().set(seconds);
-  demo.frame(0.0, framebuffer.id(), width, height, true);
-
-  RgbaImage image;
-  image.width = width;
-  image.height = height;
-  image.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  flipRows(image);
+  demo.frame(0.0, target.value().framebuffer(), width, height, true);
+  RgbaImage image = target.value().readPixels();
   if (!checkGlError("render with depth bits")) return Result<RgbaImage>::failure("GL error");
   return image;
 }

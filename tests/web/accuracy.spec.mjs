@@ -4,7 +4,7 @@
 import { test, expect } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { collectErrors, expectedSphereBox, openDemo, renderAndRead } from './helpers.mjs';
+import { changedInSphere, collectErrors, expectedSphereBox, openDemo, renderAndRead } from './helpers.mjs';
 
 const CSV = readFileSync(fileURLToPath(new URL('../../docs/sweep.csv', import.meta.url)), 'utf8');
 // name -> { psnr, faceSize } from the CSV (the setting column is quoted and holds commas).
@@ -21,18 +21,6 @@ async function choose(page, name) {
   const label = (await select(page).locator('option').allTextContents()).find((t) => t.startsWith(`${name}:`));
   expect(label, `an option for ${name}`).toBeTruthy();
   await select(page).selectOption({ label });
-}
-
-function changedInSphere(a, b) {
-  const box = expectedSphereBox(a.width, a.height);
-  let n = 0;
-  for (let y = box.y0; y <= box.y1; ++y) {
-    for (let x = box.x0; x <= box.x1; ++x) {
-      const i = (y * a.width + x) * 4;
-      if (Math.max(...[0, 1, 2].map((k) => Math.abs(a.data[i + k] - b.data[i + k]))) > 8) ++n;
-    }
-  }
-  return n;
 }
 
 test('choosing "original" sets the course settings, changes the reflection and shows its error', async ({ page }) => {

@@ -1,23 +1,10 @@
 // The Materials folder: each mirror's and glass object's reflection weight, base weight, Fresnel,
 // index of refraction and environment, applied to the renderer and mirrored in the URL (mat=).
 import { test, expect } from '@playwright/test';
-import { collectErrors, expectedSphereBox, openDemo, renderAndRead } from './helpers.mjs';
+import { changedInSphere, collectErrors, expectedSphereBox, openDemo, renderAndRead } from './helpers.mjs';
 
 const query = (page) => new URL(page.url()).search;
 const sphere = (page) => page.evaluate(() => window.demo.objects()[3].material);
-
-// Pixels inside the sphere's box whose colour differs by more than 8 levels.
-function changedInSphere(a, b) {
-  const box = expectedSphereBox(a.width, a.height);
-  let n = 0;
-  for (let y = box.y0; y <= box.y1; ++y) {
-    for (let x = box.x0; x <= box.x1; ++x) {
-      const i = (y * a.width + x) * 4;
-      if (Math.max(...[0, 1, 2].map((k) => Math.abs(a.data[i + k] - b.data[i + k]))) > 8) ++n;
-    }
-  }
-  return n;
-}
 
 test('the reflection weight and the Fresnel switch change the sphere and the URL', async ({ page }) => {
   const errors = collectErrors(page);
