@@ -39,6 +39,23 @@ glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
   return (len > 1e-20f && std::isfinite(len)) ? v / len : fallback;
 }
 
+// Names the line of the first position or normal that tinyobjloader read as inf or NaN.
+std::string firstNonFiniteAttribute(const std::string& text, const tinyobj::attrib_t& attrib) {
+  struct Attribute {
+    const std::vector<tinyobj::real_t>& values;
+    const char* keyword;
+  };
+  for (const Attribute& attribute : {Attribute{attrib.vertices, "v"}, Attribute{attrib.normals, "vn"}}) {
+    for (size_t i = 0; i < attribute.values.size(); ++i) {
+      if (std::isfinite(attribute.values[i])) continue;
+      const size_t line = lineOfAttribute(text, attribute.keyword, i / 3);
+      return "line " + std::to_string(line) + ": a number on this '" + attribute.keyword +
+             "' line reads as infinite or NaN (its exponent or digit count is out of range)";
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 Result<MeshData> parseObj(const std::string& text, const std::string& name,
@@ -71,6 +88,12 @@ Result<MeshData> parseObj(const std::string& text, const std::string& name,
         return Result<MeshData>::failure(name + ": a face refers to a vertex or normal that does not exist");
       }
     }
+  }
+
+  // The pre-pass read every number with strtof; tinyobjloader has its own reader, which turns
+  // some numbers strtof reads as finite into inf or NaN ("0e500", 400 digits then "e-400").
+  if (std::string problem = firstNonFiniteAttribute(text, attrib); !problem.empty()) {
+    return Result<MeshData>::failure(name + ": " + problem);
   }
 
   std::vector<glm::vec3> computedNormals;  // filled only if some corner needs it

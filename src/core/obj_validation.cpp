@@ -71,15 +71,10 @@ std::string checkCorner(std::string_view corner, const ObjCounts& counts) {
   return "'" + std::string(corner) + "' has too many '/' fields";
 }
 
-}  // namespace
-
-Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limits) {
-  if (text.size() > limits.maxBytes) {
-    return Result<ObjCounts>::failure("file is " + std::to_string(text.size()) +
-                                      " bytes, over the limit of " +
-                                      std::to_string(limits.maxBytes));
-  }
-  ObjCounts counts;
+// Calls visit(lineNumber, line) for each line, with trailing CR, space and tab removed; stops
+// early when visit returns false.
+template <typename Visit>
+void forEachLine(const std::string& text, Visit visit) {
   size_t lineNumber = 0;
   size_t pos = 0;
   while (pos < text.size()) {
@@ -90,52 +85,88 @@ Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limi
     ++lineNumber;
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
       line.remove_suffix(1);  // CR CR LF endings, as in the course's sphere.obj
-    // tinyobjloader also ends a line at a lone CR: what follows it would be a line this pass
-    // never checked.
-    if (line.find('\r') != std::string_view::npos) {
-      return Result<ObjCounts>::failure(
-          lineError(lineNumber, "a carriage return inside a line (old Mac line ends are not supported)"));
-    }
-    std::vector<std::string_view> tokens = splitWhitespace(line);
-    if (tokens.empty() || tokens[0][0] == '#') continue;
-    const std::string_view keyword = tokens[0];
+    if (!visit(lineNumber, line)) return;
+  }
+}
 
-    if (keyword == "v" || keyword == "vn") {
-      if (tokens.size() < 4) {
-        return Result<ObjCounts>::failure(
-            lineError(lineNumber, "'" + std::string(keyword) + "' needs three numbers"));
+}  // namespace
+
+size_t lineOfAttribute(const std::string& text, std::string_view keyword, size_t ordinal) {
+  size_t found = 0;
+  size_t seen = 0;
+  forEachLine(text, [&](size_t lineNumber, std::string_view line) {
+    std::vector<std::string_view> tokens = splitWhitespace(line);
+    if (tokens.empty() || tokens[0] != keyword) return true;
+    if (seen++ == ordinal) {
+      found = lineNumber;
+      return false;
+    }
+    return true;
+  });
+  return found;
+}
+
+namespace {
+
+// Checks one line (trailing white space removed) and adds what it defines to counts. Returns the
+// problem, or an empty string.
+std::string checkLine(std::string_view line, const ObjLimits& limits, ObjCounts& counts) {
+  // tinyobjloader also ends a line at a lone CR: what follows it would be a line this pass
+  // never checked.
+  if (line.find('\r') != std::string_view::npos) {
+    return "a carriage return inside a line (old Mac line ends are not supported)";
+  }
+  std::vector<std::string_view> tokens = splitWhitespace(line);
+  if (tokens.empty() || tokens[0][0] == '#') return {};
+  const std::string_view keyword = tokens[0];
+
+  if (keyword == "v" || keyword == "vn") {
+    if (tokens.size() < 4) return "'" + std::string(keyword) + "' needs three numbers";
+    for (size_t i = 1; i <= 3; ++i) {
+      float value = 0;
+      if (!parseFiniteFloat(tokens[i], &value)) {
+        return "'" + std::string(tokens[i]) + "' is not a finite number";
       }
-      for (size_t i = 1; i <= 3; ++i) {
-        float value = 0;
-        if (!parseFiniteFloat(tokens[i], &value)) {
-          return Result<ObjCounts>::failure(lineError(
-              lineNumber, "'" + std::string(tokens[i]) + "' is not a finite number"));
-        }
-      }
-      ++(keyword == "v" ? counts.positions : counts.normals);
-    } else if (keyword == "vw") {
-      // tinyobjloader's skin-weight extension converts its numbers to int unchecked.
-      return Result<ObjCounts>::failure(
-          lineError(lineNumber, "'vw' (skin weights) is not supported"));
-    } else if (keyword == "vt") {
-      ++counts.texcoords;
-    } else if (keyword == "f") {
-      if (tokens.size() < 4) {
-        return Result<ObjCounts>::failure(
-            lineError(lineNumber, "a face needs at least 3 vertices, this one has " +
-                                      std::to_string(tokens.size() - 1)));
-      }
-      for (size_t i = 1; i < tokens.size(); ++i) {
-        std::string problem = checkCorner(tokens[i], counts);
-        if (!problem.empty()) return Result<ObjCounts>::failure(lineError(lineNumber, problem));
-      }
-      counts.triangles += tokens.size() - 3;
-      if (counts.triangles > limits.maxTriangles) {
-        return Result<ObjCounts>::failure(lineError(
-            lineNumber, "more than " + std::to_string(limits.maxTriangles) + " triangles"));
-      }
+    }
+    ++(keyword == "v" ? counts.positions : counts.normals);
+  } else if (keyword == "vw") {
+    // tinyobjloader's skin-weight extension converts its numbers to int unchecked.
+    return "'vw' (skin weights) is not supported";
+  } else if (keyword == "vt") {
+    ++counts.texcoords;
+  } else if (keyword == "f") {
+    if (tokens.size() < 4) {
+      return "a face needs at least 3 vertices, this one has " + std::to_string(tokens.size() - 1);
+    }
+    for (size_t i = 1; i < tokens.size(); ++i) {
+      std::string problem = checkCorner(tokens[i], counts);
+      if (!problem.empty()) return problem;
+    }
+    counts.triangles += tokens.size() - 3;
+    if (counts.triangles > limits.maxTriangles) {
+      return "more than " + std::to_string(limits.maxTriangles) + " triangles";
     }
   }
+  return {};
+}
+
+}  // namespace
+
+Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limits) {
+  if (text.size() > limits.maxBytes) {
+    return Result<ObjCounts>::failure("file is " + std::to_string(text.size()) +
+                                      " bytes, over the limit of " +
+                                      std::to_string(limits.maxBytes));
+  }
+  ObjCounts counts;
+  std::string problem;
+  forEachLine(text, [&](size_t lineNumber, std::string_view line) {
+    problem = checkLine(line, limits, counts);
+    if (problem.empty()) return true;
+    problem = lineError(lineNumber, problem);
+    return false;
+  });
+  if (!problem.empty()) return Result<ObjCounts>::failure(problem);
   if (counts.triangles == 0) {
     return Result<ObjCounts>::failure("no faces found: not an OBJ model, or an empty one");
   }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "core/obj_loader.h"
 
@@ -18,5 +19,9 @@ struct ObjCounts {
 
 // Returns the counts, or an error "line N: ..." (without the file name; the caller adds it).
 Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limits);
+
+// The 1-based line number of the ordinal-th (0-based) line starting with `keyword` ("v", "vn"),
+// split into lines as validateObjText does; 0 if there are fewer such lines.
+size_t lineOfAttribute(const std::string& text, std::string_view keyword, size_t ordinal);
 
 }  // namespace reflect
