@@ -27,19 +27,44 @@ out vec4 fragColour;
 // The direction from the probe centre to where the ray from the surface point x along d meets
 // the captured surroundings (the capture's alpha holds each texel's distance from the centre).
 // As in the distance-impostor method: a linear search along the ray, parametrised so that a in
-// [0, 1) covers the whole ray (t = a / (1 - a) units), finds the first sample behind the stored
-// surface (so thin, near objects are not skipped), then DISTANCE_ITERATIONS secant steps refine
-// the crossing. With no iterations it is d, the course's plain lookup.
+// [0, 1) covers the whole ray (t = kSearchScale * a / (1 - a) near-plane units), finds the first
+// sample behind the stored surface, then DISTANCE_ITERATIONS secant steps refine the crossing.
+// With no iterations it is d, the course's plain lookup.
+//
+// A single depth layer cannot tell a ray that meets a surface from one that slips behind an
+// occluder (a figure seen from the probe centre, with the floor hidden behind it): both go from
+// in front of the stored surface to behind it. At a true crossing the stored distance is
+// continuous, so the refined point lies on it; at an occluder's edge it jumps, and the refined
+// point stays far from it. Such a crossing would draw a ghost of the occluder's silhouette: the
+// search skips it and goes on along the ray.
+//
+// The constants were chosen on the default scene at t = 0, 2, 4 s (reflector PSNR against the
+// ray-traced reference; checked at t = 1, 3, 5, 7 s, where the gain over the old lookup held).
 const int kLinearSteps = 12;
+// The last linear sample is at t = 12 x kSearchScale near-plane units (48 in the course's
+// scenes, whose capture near plane is 1). Scale 2 and 8 lost 0.4 and 1.5 dB against 4.
+const float kSearchScale = 4.0;
+// A refined crossing counts as a surface when it lies within this fraction of its distance from
+// the stored surface. 0.05 and 0.2 lost 0.7 and 0.4 dB against 0.1.
+const float kSurfaceTolerance = 0.1;
+
+// The capture stores the clear background at the far plane, and a skybox with alpha 1, which reads
+// as 9999 units (the clamp below): infinitely far. The search's last sample, at a = kFarA, is at
+// t = 4000 units: any surface, and the far plane, is in front of it; only a skybox is behind.
+const float kFarA = 4000.0 / (4000.0 + kSearchScale);
 
 float storedDistance(vec3 direction) {
   float a = min(texture(u_environment, direction).a, 0.9999);
   return a / (1.0 - a);
 }
 
+vec3 pointAt(vec3 x, vec3 d, float a) {
+  return x + kSearchScale * (a / (1.0 - a)) * d;
+}
+
 // Positions here are in units of the capture's near plane, as the stored distances are.
 float behind(vec3 x, vec3 d, float a) {  // > 0 in front of the stored surface, < 0 behind it
-  vec3 p = x + (a / (1.0 - a)) * d;
+  vec3 p = pointAt(x, d, a);
   return storedDistance(p) - length(p);
 }
 
@@ -48,35 +73,51 @@ vec3 lookupDirection(vec3 d) {
   return d;
 #else
   vec3 x = (v_worldPosition - u_probeCentre) / u_distanceUnit;
+  // The farthest point of the ray known to be in front of the stored surface. When no crossing
+  // is found, its texel is the best guess for what the ray meets: the background if the ray
+  // stays in front to the end of the search; what lies beside an occluder if it slipped behind
+  // one. Looking up along d instead would show the occluder itself, a ghost beside its true
+  // reflection.
+  float freeA = 0.0;
+  // A flag, not a return from inside the nested loops: Mesa's llvmpipe (22.x) crashes in the
+  // compiled shader on that form.
+  vec3 surface = d;
+  bool found = false;
   float previousA = 0.0;
   float previousF = behind(x, d, 0.0);
-  float a = 0.0;
-  float f = previousF;
-  bool crossed = false;
-  for (int i = 1; i <= kLinearSteps; ++i) {
-    a = float(i) / float(kLinearSteps + 1);
-    f = behind(x, d, a);
-    if (f < 0.0) {
-      crossed = true;
-      break;
+  for (int i = 1; i <= kLinearSteps + 1; ++i) {
+    // The last sample is as good as infinitely far: only the background is behind it.
+    float a = i <= kLinearSteps ? float(i) / float(kLinearSteps + 1) : kFarA;
+    float f = behind(x, d, a);
+    if (previousF >= 0.0 && f < 0.0) {
+      float frontA = previousA, frontF = previousF, backA = a, backF = f;
+      for (int k = 0; k < DISTANCE_ITERATIONS; ++k) {
+        float middle = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
+        float fm = behind(x, d, middle);
+        if (fm < 0.0) {
+          backA = middle;
+          backF = fm;
+        } else {
+          frontA = middle;
+          frontF = fm;
+        }
+      }
+      float hit = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
+      vec3 p = pointAt(x, d, hit);
+      if (abs(storedDistance(p) - length(p)) <= kSurfaceTolerance * length(p)) {
+        surface = p;
+        found = true;
+        break;
+      }
+      freeA = frontA;
     }
+    if (f >= 0.0) freeA = a;
     previousA = a;
     previousF = f;
   }
-  if (!crossed) return d;  // nothing stored along the ray: the far background, seen along d
-  for (int i = 0; i < DISTANCE_ITERATIONS; ++i) {
-    float middle = previousA + (a - previousA) * previousF / max(previousF - f, 1e-6);
-    float fm = behind(x, d, middle);
-    if (fm < 0.0) {
-      a = middle;
-      f = fm;
-    } else {
-      previousA = middle;
-      previousF = fm;
-    }
-  }
-  float hit = previousA + (a - previousA) * previousF / max(previousF - f, 1e-6);
-  return x + (hit / (1.0 - hit)) * d;
+  if (found) return surface;
+  if (previousF >= 0.0) return d;  // in front of everything to infinity: the sky, along d
+  return freeA > 0.0 ? pointAt(x, d, freeA) : d;
 #endif
 }
 

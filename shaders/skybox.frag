@@ -2,8 +2,8 @@
 in vec3 v_direction;
 
 uniform samplerCube u_skybox;
-uniform float u_alpha;  // 1, or in a distance-storing capture the far distance (the sky is far)
 
 out vec4 fragColour;
 
-void main() { fragColour = vec4(texture(u_skybox, v_direction).rgb, u_alpha); }
+// Alpha 1: in a distance-storing capture, infinitely far.
+void main() { fragColour = vec4(texture(u_skybox, v_direction).rgb, 1.0); }

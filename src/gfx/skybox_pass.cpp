@@ -23,7 +23,6 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
   SkyboxPass pass;
   pass.viewRotationProjection_ = program.value().uniform("u_viewRotationProjection");
   pass.skybox_ = program.value().uniform("u_skybox");
-  pass.alpha_ = program.value().uniform("u_alpha");
   pass.program_ = program.take();
 
   pass.texture_ = TextureHandle(genTexture());
@@ -52,14 +51,13 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
   return pass;
 }
 
-void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view, float alpha) const {
+void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view) const {
   const glm::mat4 rotationOnly(glm::mat3{view});
   const glm::mat4 viewRotationProjection = projection * rotationOnly;
   glDepthFunc(GL_LEQUAL);
   glUseProgram(program_.id());
   glUniformMatrix4fv(viewRotationProjection_, 1, GL_FALSE, glm::value_ptr(viewRotationProjection));
   glUniform1i(skybox_, 0);
-  glUniform1f(alpha_, alpha);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
   glBindVertexArray(vao_.id());

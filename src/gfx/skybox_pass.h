@@ -15,9 +15,10 @@ class SkyboxPass {
   // Uploads the faces (CLAMP_TO_EDGE, linear) and builds the program and the cube.
   static Result<SkyboxPass> create(const CubeFaces& faces);
 
-  // Draws the sky where nothing else is (depth LEQUAL at the far plane). `view` may contain a
-  // translation: only its rotation is used.
-  void draw(const glm::mat4& projection, const glm::mat4& view, float alpha = 1.0f) const;
+  // Draws the sky where nothing else is (depth LEQUAL at the far plane), with alpha 1: in a
+  // distance-storing capture that reads as infinitely far. `view` may contain a translation:
+  // only its rotation is used.
+  void draw(const glm::mat4& projection, const glm::mat4& view) const;
   GLuint texture() const { return texture_.id(); }
   void abandon();
 
@@ -25,7 +26,6 @@ class SkyboxPass {
   ShaderProgram program_;
   GLint viewRotationProjection_ = -1;
   GLint skybox_ = -1;
-  GLint alpha_ = -1;
   TextureHandle texture_;
   VertexArrayHandle vao_;
   BufferHandle vertices_;
