@@ -47,6 +47,8 @@ const float kSearchScale = 4.0;
 // A refined crossing counts as a surface when it lies within this fraction of its distance from
 // the stored surface. 0.05 and 0.2 lost 0.7 and 0.4 dB against 0.1.
 const float kSurfaceTolerance = 0.1;
+// Crossings refined per pixel: the first, and one more if the first was a ghost.
+const int kCandidates = 2;
 
 // The capture stores the clear background at the far plane, and a skybox with alpha 1, which reads
 // as 9999 units (the clamp below): infinitely far. The search's last sample, at a = kFarA, is at
@@ -74,48 +76,52 @@ vec3 lookupDirection(vec3 d) {
 #else
   vec3 x = (v_worldPosition - u_probeCentre) / u_distanceUnit;
   // The farthest point of the ray known to be in front of the stored surface. When no crossing
-  // is found, its texel is the best guess for what the ray meets: the background if the ray
-  // stays in front to the end of the search; what lies beside an occluder if it slipped behind
-  // one. Looking up along d instead would show the occluder itself, a ghost beside its true
-  // reflection.
+  // is found, its texel is the best guess for what the ray meets: what lies beside an occluder
+  // if the ray slipped behind one. Looking up along d instead would show the occluder itself, a
+  // ghost beside its true reflection.
   float freeA = 0.0;
-  // A flag, not a return from inside the nested loops: Mesa's llvmpipe (22.x) crashes in the
-  // compiled shader on that form.
-  vec3 surface = d;
-  bool found = false;
   float previousA = 0.0;
   float previousF = behind(x, d, 0.0);
-  for (int i = 1; i <= kLinearSteps + 1; ++i) {
-    // The last sample is as good as infinitely far: only the background is behind it.
-    float a = i <= kLinearSteps ? float(i) / float(kLinearSteps + 1) : kFarA;
-    float f = behind(x, d, a);
-    if (previousF >= 0.0 && f < 0.0) {
-      float frontA = previousA, frontF = previousF, backA = a, backF = f;
-      for (int k = 0; k < DISTANCE_ITERATIONS; ++k) {
-        float middle = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
-        float fm = behind(x, d, middle);
-        if (fm < 0.0) {
-          backA = middle;
-          backF = fm;
-        } else {
-          frontA = middle;
-          frontF = fm;
-        }
+  int i = 1;
+  // At most kCandidates crossings are refined: the refinement sits outside the linear loop, so
+  // a software rasteriser, which runs a loop body for a block of pixels while any of them needs
+  // it, refines once per candidate instead of once per linear step.
+  for (int candidate = 0; candidate < kCandidates; ++candidate) {
+    float a = 0.0;
+    float f = 0.0;
+    bool crossed = false;
+    for (; i <= kLinearSteps + 1 && !crossed; ++i) {
+      // The last sample is as good as infinitely far: only a skybox is behind it.
+      a = i <= kLinearSteps ? float(i) / float(kLinearSteps + 1) : kFarA;
+      f = behind(x, d, a);
+      crossed = previousF >= 0.0 && f < 0.0;
+      if (!crossed) {
+        if (f >= 0.0) freeA = a;
+        previousA = a;
+        previousF = f;
       }
-      float hit = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
-      vec3 p = pointAt(x, d, hit);
-      if (abs(storedDistance(p) - length(p)) <= kSurfaceTolerance * length(p)) {
-        surface = p;
-        found = true;
-        break;
-      }
-      freeA = frontA;
     }
-    if (f >= 0.0) freeA = a;
+    if (!crossed) break;
+    float frontA = previousA, frontF = previousF, backA = a, backF = f;
+    for (int k = 0; k < DISTANCE_ITERATIONS; ++k) {
+      float middle = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
+      float fm = behind(x, d, middle);
+      if (fm < 0.0) {
+        backA = middle;
+        backF = fm;
+      } else {
+        frontA = middle;
+        frontF = fm;
+      }
+    }
+    float hit = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
+    vec3 p = pointAt(x, d, hit);
+    if (abs(storedDistance(p) - length(p)) <= kSurfaceTolerance * length(p)) return p;
+    // A ghost: go on along the ray from the sample behind the jump.
+    freeA = frontA;
     previousA = a;
     previousF = f;
   }
-  if (found) return surface;
   if (previousF >= 0.0) return d;  // in front of everything to infinity: the sky, along d
   return freeA > 0.0 ? pointAt(x, d, freeA) : d;
 #endif

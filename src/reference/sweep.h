@@ -16,7 +16,7 @@
 namespace reflect {
 
 struct SweepSetting {
-  std::string name;  // "original", "default", "size-64", "distance-2", ...
+  std::string name;  // "original", "default", "size-64", "distance-4", ...
   AccuracySettings accuracy;
   int faceSize = 256;
 };
