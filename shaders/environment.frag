@@ -56,7 +56,7 @@ const int kCandidates = 2;
 const float kFarA = 4000.0 / (4000.0 + kSearchScale);
 
 float storedDistance(vec3 direction) {
-  float a = min(texture(u_environment, direction).a, 0.9999);
+  float a = min(textureLod(u_environment, direction, 0.0).a, 0.9999);
   return a / (1.0 - a);
 }
 

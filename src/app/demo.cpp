@@ -219,6 +219,8 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   stats_.timing = waitForGpu ? "gpu-finish" : "cpu-submit";
   stats_.policy = policyName(plannerSettings_.policy);
   stats_.cubeFaceSize = scene_.capture.faceSize;
+  stats_.width = width;
+  stats_.height = height;
   if (!renderer_ || width < 1 || height < 1) return stats_;  // hidden canvas: nothing to draw
 
   const auto start = std::chrono::steady_clock::now();

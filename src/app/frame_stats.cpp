@@ -28,10 +28,11 @@ std::string FrameStats::toJson() const {
                 "\"gpuCaptureMs\":%.4f,\"policy\":\"%s\","
                 "\"probes\":%d,\"facesCaptured\":%d,\"drawCalls\":%d,\"triangles\":%zu,"
                 "\"captureDrawCalls\":%d,\"captureTriangles\":%zu,\"mainDrawCalls\":%d,"
-                "\"mainTriangles\":%zu,\"cubeFaceSize\":%d,\"time\":%.6f,\"orbitDegrees\":%.6f}",
+                "\"mainTriangles\":%zu,\"cubeFaceSize\":%d,\"width\":%d,\"height\":%d,"
+                "\"time\":%.6f,\"orbitDegrees\":%.6f}",
                 frameMs, captureMs, timing, gpuFrameMs, gpuCaptureMs, policy, probes, facesCaptured, drawCalls(),
                 triangles(), captureDrawCalls, captureTriangles, mainDrawCalls, mainTriangles,
-                cubeFaceSize, timeSeconds, orbitDegrees);
+                cubeFaceSize, width, height, timeSeconds, orbitDegrees);
   std::string json = buffer;
   if (!error.empty()) json.insert(json.size() - 1, ",\"error\":" + jsonQuote(error));
   return json;

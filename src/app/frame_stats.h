@@ -23,6 +23,8 @@ struct FrameStats {
   int mainDrawCalls = 0;
   size_t mainTriangles = 0;
   int cubeFaceSize = 0;
+  int width = 0;  // the frame's size in pixels (in the page: the WebGL drawing buffer's)
+  int height = 0;
   double timeSeconds = 0;
   double orbitDegrees = 0;
   std::string error;  // what went wrong this frame (the page shows it), or empty

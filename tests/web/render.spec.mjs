@@ -2,7 +2,7 @@
 // round sphere, a drawing buffer of CSS size x devicePixelRatio) through resizes.
 import { test, expect } from '@playwright/test';
 import {
-  canvasScreenshot, expectedSphereBox, makeSphereTest, measureGoldSphere, openDemo, renderAndRead,
+  canvasScreenshot, collectErrors, expectedSphereBox, makeSphereTest, measureGoldSphere, openDemo, renderAndRead,
   waitForCanvasSize,
 } from './helpers.mjs';
 
@@ -100,6 +100,30 @@ test.describe('at devicePixelRatio 2', () => {
     await openDemo(page, '?paused');
     const { size } = await expectRoundSphere(page, 'dpr 2');
     expect(size).toMatchObject({ width: 1000, height: 800, clientWidth: 500, clientHeight: 400, dpr: 2 });
+  });
+});
+
+// 2800 x 300 CSS pixels at devicePixelRatio 3 ask for an 8400-pixel-wide drawing buffer, past the
+// GPU's limits (SwiftShader's: 8192): the browser gives a smaller one. The frame must be drawn
+// into the buffer the browser gave, at its aspect, not at the canvas element's size.
+test.describe('a canvas wider than the GPU allows', () => {
+  test.use({ viewport: { width: 2800, height: 300 }, deviceScaleFactor: 3 });
+
+  test('is drawn at the drawing buffer the browser gives, and the sphere stays round', async ({ page }) => {
+    const errors = collectErrors(page);
+    await openDemo(page, '?paused');
+    const limits = await page.evaluate(() => {
+      const gl = document.getElementById('canvas').getContext('webgl2');
+      const [maxWidth] = gl.getParameter(gl.MAX_VIEWPORT_DIMS);
+      return { maxWidth, bufferWidth: gl.drawingBufferWidth, bufferHeight: gl.drawingBufferHeight };
+    });
+    expect(limits.maxWidth, 'this test needs a GPU limit under 8400').toBeLessThan(8400);
+    const { size } = await expectRoundSphere(page, 'oversized');
+    expect(size).toMatchObject({ width: 8400, height: 900 });
+    expect(limits.bufferWidth).toBeLessThan(8400);
+    const stats = await page.evaluate(() => window.demo.frame(0));
+    expect([stats.width, stats.height]).toEqual([limits.bufferWidth, limits.bufferHeight]);
+    expect(errors).toEqual([]);
   });
 });
 

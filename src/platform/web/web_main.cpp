@@ -76,12 +76,15 @@ EMSCRIPTEN_KEEPALIVE const char* rf_create() {
   return returnText("");
 }
 
-// One complete frame into the canvas at its current size, as JSON stats (see FrameStats).
+// One complete frame into the canvas's drawing buffer, as JSON stats (see FrameStats).
 // waitForGpu: time it end to end (a read back after each pass).
 EMSCRIPTEN_KEEPALIVE const char* rf_frame(double dtSeconds, int waitForGpu) {
   if (!state().demo) return returnText("{}");
+  // The drawing buffer, not the canvas element: past the GPU's limits (a wide canvas at a high
+  // devicePixelRatio) the browser gives a smaller buffer, and drawing at the element's size
+  // would crop the picture.
   int width = 0, height = 0;
-  emscripten_get_canvas_element_size(kCanvas, &width, &height);
+  emscripten_webgl_get_drawing_buffer_size(state().context, &width, &height);
   return returnText(state().demo->frame(dtSeconds, 0, width, height, waitForGpu != 0).toJson());
 }
 
