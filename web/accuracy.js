@@ -73,6 +73,16 @@ export function describeAccuracy(a) {
           a.mediump ? 'mediump' : 'highp'].join(', ');
 }
 
+// A combination no sweep row measured, in a URL: the describe words without spaces,
+// "centre,distance-x2,depth-24,mipmapped,RGBA8,highp". Both ways; fromUrlSetting gives the
+// accuracy object or null.
+export function toUrlSetting(describe) {
+  return describe.split(',').map((p) => p.trim().replace(/ /g, '-')).join(',');
+}
+export function fromUrlSetting(text) {
+  return parseSetting(text.split(',').map((p) => p.replace(/-/g, ' ')).join(', '));
+}
+
 // The sweep row measuring `describe` at cube size `faceSize`: `preferred` (a row name) when it
 // matches, else the first that does; null when that combination was not measured.
 export function matchingRow(rows, describe, faceSize, preferred = null) {

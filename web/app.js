@@ -1,7 +1,9 @@
 // The page: loads the wasm module, feeds it the scenes and models, runs the frame loop, turns
 // pointer and key input into camera moves, shows the controls panel, live numbers and messages,
 // mirrors its settings in the URL, and exposes window.demo for tests and tools.
-import { describeAccuracy, matchingRow, parseSweep, readout } from './accuracy.js';
+import {
+  describeAccuracy, fromUrlSetting, matchingRow, parseSweep, readout, toUrlSetting,
+} from './accuracy.js';
 import { runBench } from './bench.js';
 import { filesFromDrop, filesFromList, sortFiles } from './drop.js';
 import { attachInput, cameraBasis } from './input.js';
@@ -257,14 +259,16 @@ async function start() {
       return accuracy();
     });
   }
-  // The acc= name for the URL: the picked row while its settings are current, else the first
-  // row with the current settings when they are not the shipped default ones; null otherwise.
+  // The acc= value for the URL: the picked row while its settings are current, else the first
+  // row with the current settings; for settings no row measured, the settings themselves
+  // (toUrlSetting); null for the shipped default.
   const accuracyName = () => {
     const describe = accuracy().describe;
     const picked = sweepRows.find((r) => r.name === chosenRow);
     if (picked && picked.setting === describe) return picked.name;
+    if (describe === defaultDescribe) return null;
     const fallback = sweepRows.find((r) => r.setting === describe);
-    return fallback && describe !== defaultDescribe ? fallback.name : null;
+    return fallback ? fallback.name : toUrlSetting(describe);
   };
 
   function setPlanner(policy, slice, every, lod) {
@@ -276,13 +280,15 @@ async function start() {
 
   // --- first scene, then the URL's settings -------------------------------------------------
   let initialRow = null;
+  let initialSettings = null;  // acc= as settings no row measured
   if (initial.acc) {
     initialRow = sweepRows.find((r) => r.name === initial.acc) || null;
-    if (!initialRow) {
+    initialSettings = initialRow ? null : fromUrlSetting(initial.acc);
+    if (!initialRow && !initialSettings) {
       showMessage(`acc=${initial.acc}: not a measured accuracy mode` +
                   (sweepRows.length ? ` (sweep.csv has ${sweepRows.map((r) => r.name).join(', ')})` : ' (sweep.csv is not available)') +
-                  '; ignored');
-    } else if (!cubeSize) {
+                  ', nor settings such as centre,distance-x2,depth-24,mipmapped,RGBA8,highp; ignored');
+    } else if (initialRow && !cubeSize) {
       cubeSize = initialRow.faceSize;
     }
   }
@@ -291,6 +297,8 @@ async function start() {
   if (initialRow) {
     chosenRow = initialRow.name;
     setAccuracy(initialRow.accuracy);
+  } else if (initialSettings) {
+    setAccuracy(initialSettings);
   }
   for (const m of initial.mat) {
     const { index, ...material } = m;

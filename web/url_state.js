@@ -5,6 +5,7 @@
 //   every=N  lod=TRIANGLES_PER_PIXEL  paused  t=SECONDS (when paused)  cam=x,y,z,yaw,pitch
 //   assets=PREFIX (the user's models by the scene's file names)
 //   acc=ROW (an accuracy mode: a row name of sweep.csv; its cube size unless cube= is given)
+//     or acc=SETTINGS for a combination no row measured: centre,distance-x2,depth-24,mipmapped,RGBA8,highp
 //   mat=INDEX:REFLECTION,BASE,FRESNEL(0|1),IOR[,sky];... (changed materials; INDEX from 0)
 // Not mirrored (one-off actions): bench, frames.
 

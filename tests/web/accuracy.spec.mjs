@@ -1,6 +1,6 @@
 // The accuracy selector: a point on the measured speed/accuracy curve (docs/sweep.csv, copied to
 // the site), its settings applied with rf_set_accuracy and its cube size, and a readout of the
-// expected error from the CSV. Mirrored in the URL as acc=ROW.
+// expected error from the CSV. Mirrored in the URL as acc=ROW (or acc=SETTINGS, unmeasured).
 import { test, expect } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -62,7 +62,18 @@ test('choosing "original" sets the course settings, changes the reflection and s
   expect(await page.evaluate(() => window.demo.setAccuracy({ mipmaps: true }))).toBe('');
   await expect(readout).toContainText('not measured');
   await expect.poll(() => select(page).evaluate((s) => s.options[s.selectedIndex].textContent)).toBe('not measured');
-  await expect.poll(() => query(page)).not.toContain('acc=');  // no row has these settings
+  // No row has these settings: the link carries the settings themselves, and opening it
+  // applies them.
+  const settings = 'centre,distance-x2,depth-24,mipmapped,RGBA8,highp';
+  await expect.poll(() => query(page)).toContain(`&acc=${encodeURIComponent(settings)}`);
+  expect(errors).toEqual([]);
+
+  await openDemo(page, query(page));
+  expect(await accuracy(page)).toMatchObject({ distance: 2, origin: false, depth: 24, mipmaps: true,
+                                               halfFloat: false, mediump: false });
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
+  await expect(readout).toContainText('not measured');
+  await expect(page.locator('#messages .message')).toHaveCount(0);
   expect(errors).toEqual([]);
 });
 
