@@ -1,5 +1,6 @@
 # Script mode: cmake -DOUTPUT=index.json -DSCENE_DIR=assets/scenes -P SceneIndex.cmake
-# Writes [{"name": "ex12-2", "title": "..."}, ...] for the page's scene picker, default first.
+# Writes [{"name": "ex12-2", "title": "...", "description": "..."}, ...] for the page's scene
+# picker, the default first, then by name.
 file(GLOB scenes "${SCENE_DIR}/*.json")
 list(SORT scenes)
 set(entries "")
@@ -10,9 +11,17 @@ foreach(path IN LISTS scenes)
   if(problem)
     set(title "${name}")
   endif()
-  string(REPLACE "\\" "\\\\" title "${title}")
-  string(REPLACE "\"" "\\\"" title "${title}")
-  set(entry "{\"name\": \"${name}\", \"title\": \"${title}\"}")
+  string(JSON description ERROR_VARIABLE problem GET "${text}" description)
+  if(problem)
+    set(description "")
+  endif()
+  foreach(field title description)
+    string(REPLACE "\\" "\\\\" ${field} "${${field}}")
+    string(REPLACE "\"" "\\\"" ${field} "${${field}}")
+    # A ';' would split the entry in CMake's list below: write it as JSON's \u003b.
+    string(REPLACE ";" "\\u003b" ${field} "${${field}}")
+  endforeach()
+  set(entry "{\"name\": \"${name}\", \"title\": \"${title}\", \"description\": \"${description}\"}")
   if(name STREQUAL "ex12-2")
     list(PREPEND entries "${entry}")
   else()

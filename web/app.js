@@ -15,11 +15,8 @@ import {
   loadScene, MAX_MODEL_BYTES, readFileBytes, sceneUrl, tooLargeMessage, withBytes,
 } from './scene_loader.js';
 import { frameTimes, Progress, Sparkline, StatsLine } from './stats.js';
-import { buildQuery, parseQuery } from './url_state.js';
+import { buildQuery, DEFAULT_SCENE, parseQuery } from './url_state.js';
 
-// The shipped scenes (assets/scenes/*.json), in the picker's order; titles come from the files.
-export const SCENES = ['ex12-2', 'ex12-1', 'ex12-2-fresnel', 'glass-sphere', 'two-mirrors',
-                       'shared-probe', 'skybox', 'skybox-grid'];
 const STEP = 0.1;  // scene units per key press (the C++ camera's move step)
 
 const canvas = document.getElementById('canvas');
@@ -27,16 +24,17 @@ let resolveReady, rejectReady;
 const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });
 ready.catch(() => {});  // failures are shown on the page; tests await it themselves
 
+// The shipped scenes, in the picker's order: scenes/index.json, which the build writes from
+// assets/scenes/*.json (cmake/SceneIndex.cmake). Without it the picker offers the default alone.
 async function sceneTitles() {
-  return Promise.all(SCENES.map(async (name) => {
-    try {
-      const response = await fetch(sceneUrl(name));
-      const json = response.ok ? await response.json() : {};
-      return { name, title: json.title || name, description: json.description || '' };
-    } catch {
-      return { name, title: name, description: '' };
-    }
-  }));
+  try {
+    const response = await fetch('scenes/index.json');
+    if (!response.ok) throw new Error(`${response.status}`);
+    const list = await response.json();
+    return list.map(({ name, title, description }) => ({ name, title: title || name, description: description || '' }));
+  } catch {
+    return [{ name: DEFAULT_SCENE, title: DEFAULT_SCENE, description: '' }];
+  }
 }
 
 async function start() {
