@@ -60,7 +60,7 @@ async function start() {
     skyboxImage: Module.cwrap('rf_pending_skybox_image', 'string', ['number', 'number', 'number', 'string']),
     commitScene: Module.cwrap('rf_commit_scene', 'string', ['number']),
     sceneJson: Module.cwrap('rf_scene_json', 'string', []),
-    setPlanner: Module.cwrap('rf_set_planner', 'string', ['string', 'number', 'number', 'number']),
+    setPlanner: Module.cwrap('rf_set_planner', 'string', ['string', 'number', 'number', 'number', 'number']),
     planner: Module.cwrap('rf_planner_json', 'string', []),
     frame: Module.cwrap('rf_frame', 'string', ['number', 'number']),
     setTime: Module.cwrap('rf_set_time', null, ['number']),
@@ -108,7 +108,7 @@ async function start() {
   const materialEdits = new Map();  // object index -> the material the user set
   let sceneMaterials = [];  // rf_objects_json's materials right after the scene loaded
   const settings = {
-    scene: initial.scene, cube: 0, policy: 'when-changed', slice: 2, every: 4, lod: 0,
+    scene: initial.scene, cube: 0, policy: 'when-changed', slice: 2, every: 4, lod: 0, viewLod: 0,
     staleness: '', lodLevels: '', paused, accuracy: '', accuracyReadout: '',
   };
 
@@ -135,6 +135,7 @@ async function start() {
     settings.slice = p.facesPerFrame;
     settings.every = p.everyN;
     settings.lod = p.lod;
+    settings.viewLod = p.viewLod;
     settings.staleness = p.maxStalenessFrames > 0
       ? `up to ${p.maxStalenessFrames} frame${p.maxStalenessFrames > 1 ? 's' : ''} behind` : 'none: always current';
     settings.lodLevels = Object.entries(lodLevels).filter(([, t]) => t.length > 1)
@@ -269,8 +270,8 @@ async function start() {
     return fallback ? fallback.name : toUrlSetting(describe);
   };
 
-  function setPlanner(policy, slice, every, lod) {
-    const error = api.setPlanner(policy, slice, every, lod);
+  function setPlanner(policy, slice, every, lod, viewLod) {
+    const error = api.setPlanner(policy, slice, every, lod, viewLod);
     if (error) showMessage(error);
     syncSettings();
     return error;
@@ -302,10 +303,11 @@ async function start() {
     const { index, ...material } = m;
     setMaterial(index, material);
   }
-  if (initial.policy !== null || initial.slice !== null || initial.every !== null || initial.lod !== null) {
+  if (initial.policy !== null || initial.slice !== null || initial.every !== null || initial.lod !== null ||
+      initial.vlod !== null) {
     const p = planner();
     setPlanner(initial.policy ?? p.policy, initial.slice ?? p.facesPerFrame, initial.every ?? p.everyN,
-               initial.lod ?? p.lod);
+               initial.lod ?? p.lod, initial.vlod ?? p.viewLod);
   }
   if (initial.cam) api.setCamera(...initial.cam);
   if (initial.t !== null) api.setTime(initial.t);
@@ -539,7 +541,8 @@ async function start() {
       } finally {
         status.hidden = true;
         status.textContent = '';
-        api.setPlanner(saved.planner.policy, saved.planner.facesPerFrame, saved.planner.everyN, saved.planner.lod);
+        api.setPlanner(saved.planner.policy, saved.planner.facesPerFrame, saved.planner.everyN, saved.planner.lod,
+                       saved.planner.viewLod);
         if (saved.time !== undefined) api.setTime(saved.time);
         suspended = false;
         syncSettings();
@@ -583,7 +586,7 @@ async function start() {
       cubeSize = size;
       serial(() => switchScene(sceneInfo.name, { keepView: true })).catch(() => {});
     },
-    setPlanner: () => setPlanner(settings.policy, settings.slice, settings.every, settings.lod),
+    setPlanner: () => setPlanner(settings.policy, settings.slice, settings.every, settings.lod, settings.viewLod),
     setPaused,
     step: () => { lastStats = JSON.parse(api.frame(1 / 60, 1)); },
     resetCamera: () => api.resetCamera(),
@@ -645,7 +648,7 @@ async function start() {
     setCamera: (x, y, z, yaw, pitch) => api.setCamera(x, y, z, yaw, pitch),
     scene: () => JSON.parse(api.sceneJson()),
     planner,
-    setPlanner: (policy, slice = 2, every = 4, lod = 0) => setPlanner(policy, slice, every, lod),
+    setPlanner: (policy, slice = 2, every = 4, lod = 0, viewLod = 0) => setPlanner(policy, slice, every, lod, viewLod),
     // Loads another scene; the current one stays on screen if it fails (the error is shown and thrown).
     loadScene: (nameOrUrl) => serial(() => switchScene(nameOrUrl)),
     // Triangles of each level of detail of mesh `name` ([level 0] when none was built).

@@ -3,12 +3,14 @@
 // re-capturing every frame. The page's own frame loop is held while it runs, so nothing else
 // renders in between.
 
+// lod: capture LOD, viewLod: view LOD (triangles per pixel; 0 = full detail).
 export const BENCH_CONFIGS = [
-  { label: 'every-frame', policy: 'every-frame', slice: 2, every: 4, lod: 0 },
-  { label: 'when-changed', policy: 'when-changed', slice: 2, every: 4, lod: 0 },
-  { label: 'when-changed+LOD 0.5', policy: 'when-changed', slice: 2, every: 4, lod: 0.5 },
-  { label: 'time-sliced 2', policy: 'time-sliced', slice: 2, every: 4, lod: 0 },
-  { label: 'every-n 4', policy: 'every-n', slice: 2, every: 4, lod: 0 },
+  { label: 'every-frame', policy: 'every-frame', slice: 2, every: 4, lod: 0, viewLod: 0 },
+  { label: 'when-changed', policy: 'when-changed', slice: 2, every: 4, lod: 0, viewLod: 0 },
+  { label: 'when-changed+LOD 0.5', policy: 'when-changed', slice: 2, every: 4, lod: 0.5, viewLod: 0 },
+  { label: 'when-changed+LOD+view 0.5', policy: 'when-changed', slice: 2, every: 4, lod: 0.5, viewLod: 0.5 },
+  { label: 'time-sliced 2', policy: 'time-sliced', slice: 2, every: 4, lod: 0, viewLod: 0 },
+  { label: 'every-n 4', policy: 'every-n', slice: 2, every: 4, lod: 0, viewLod: 0 },
 ];
 
 function percentile(values, p) {
@@ -32,7 +34,7 @@ function compare(a, b) {
   return { max, differing };
 }
 
-// demo: { frame(dt) -> stats (waits for the GPU), setTime, setPlanner(p, slice, every, lod),
+// demo: { frame(dt) -> stats (waits for the GPU), setTime, setPlanner(p, slice, every, lod, viewLod),
 // readPixels() -> { width, height, data }, planner(), scene() }.
 // Returns { scene, frames, width, height, rows: [...], table }.
 export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}) {
@@ -44,7 +46,7 @@ export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}
   for (const config of BENCH_CONFIGS) {
     onProgress(`bench: ${config.label} (${rows.length + 1}/${BENCH_CONFIGS.length}), ${frames} frames…`);
     await new Promise((r) => setTimeout(r, 0));  // let the progress line show
-    const error = demo.setPlanner(config.policy, config.slice, config.every, config.lod);
+    const error = demo.setPlanner(config.policy, config.slice, config.every, config.lod, config.viewLod);
     if (error) throw new Error(`bench: ${config.label}: ${error}`);
     demo.setTime(0);
     const frameMs = [], faces = [], draws = [], triangles = [], captureTriangles = [];
@@ -78,6 +80,7 @@ export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}
     }
     rows.push({
       label: config.label, policy: config.policy, slice: config.slice, every: config.every, lod: config.lod,
+      viewLod: config.viewLod,
       timing: gpuTiming ? 'gpu' : 'cpu',
       frameMs: { median: percentile(frameMs, 0.5), p10: percentile(frameMs, 0.1), p90: percentile(frameMs, 0.9) },
       facesPerFrame: mean(faces), drawCallsPerFrame: mean(draws), trianglesPerFrame: mean(triangles),

@@ -63,6 +63,9 @@ export function buildPanel(GUI, app) {
   capture.add(s, 'staleness').name('staleness').disable().listen().domElement.id = 'control-staleness';
   const lod = capture.add(s, 'lod', 0, 2, 0.05).name('LOD tris/pixel').onFinishChange(() => app.setPlanner());
   lod.domElement.id = 'control-lod';
+  const viewLod = capture.add(s, 'viewLod', 0, 2, 0.05).name('view LOD tris/pixel')
+    .onFinishChange(() => app.setPlanner());
+  viewLod.domElement.id = 'control-view-lod';
   capture.add(s, 'lodLevels').name('LOD levels').disable().listen().domElement.id = 'control-lod-levels';
 
   // Accuracy: a point on the measured speed/accuracy curve (sweep.csv), and what it costs.

@@ -2,7 +2,7 @@
 // (history.replaceState), and opening such a link restores it.
 //
 //   scene=NAME  cube=PIXELS  policy=every-frame|when-changed|time-sliced|every-n  slice=FACES
-//   every=N  lod=TRIANGLES_PER_PIXEL  paused  t=SECONDS (when paused)  cam=x,y,z,yaw,pitch
+//   every=N  lod=TRIANGLES_PER_PIXEL  vlod=TRIANGLES_PER_PIXEL (view LOD)  paused  t=SECONDS (when paused)  cam=x,y,z,yaw,pitch
 //   assets=PREFIX (the user's models by the scene's file names)
 //   acc=ROW (an accuracy mode: a row name of sweep.csv; its cube size unless cube= is given)
 //     or acc=SETTINGS for a combination no row measured: centre,distance-x2,depth-24,mipmapped,RGBA8,highp
@@ -24,7 +24,7 @@ export function parseQuery(search) {
   const problems = [];
   const state = {
     scene: params.get('scene') || DEFAULT_SCENE,
-    cube: 0, policy: null, slice: null, every: null, lod: null,
+    cube: 0, policy: null, slice: null, every: null, lod: null, vlod: null,
     paused: params.has('paused'), t: null, cam: null,
     assets: params.get('assets'),
     bench: params.has('bench'),
@@ -63,6 +63,7 @@ export function parseQuery(search) {
   state.slice = integer('slice', 1, 6);
   state.every = integer('every', 1, 1000);
   state.lod = number('lod', 0, 1000);
+  state.vlod = number('vlod', 0, 1000);
   state.t = number('t', -1e9, 1e9);
   state.frames = integer('frames', 1, 100000);
   if (params.has('cam')) {
@@ -117,6 +118,7 @@ export function buildQuery({ scene, cube, planner, paused, time, camera, home, a
     if (planner.policy === 'time-sliced') parts.push(`slice=${planner.facesPerFrame}`);
     if (planner.policy === 'every-n') parts.push(`every=${planner.everyN}`);
     if (planner.lod > 0) parts.push(`lod=${round(planner.lod, 3)}`);
+    if (planner.viewLod > 0) parts.push(`vlod=${round(planner.viewLod, 3)}`);
   }
   if (paused) {
     parts.push('paused');

@@ -81,7 +81,9 @@ const char* cliHelp() {
          "  --every N        every-n: capture every N-th frame (default 4)\n"
          "  --lod D          capture LOD: in each face use the coarsest mesh level with at\n"
          "                   least D triangles per pixel of the object's projected disc\n"
-         "                   (default 0 = off, full detail)\n";
+         "                   (default 0 = off, full detail)\n"
+         "  --view-lod D     view LOD: the same rule for the main camera's pass (default 0 =\n"
+         "                   off); bench adds a row with captures and view at D (0.5 if 0)\n";
 }
 
 Result<CliOptions> parseCli(const std::vector<std::string>& args) {
@@ -152,9 +154,10 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       ok = parseInt(value, 1, 6, &o.planner.facesPerFrame);
     } else if (flag == "--every") {
       ok = parseInt(value, 1, 1000, &o.planner.everyN);
-    } else if (flag == "--lod") {
+    } else if (flag == "--lod" || flag == "--view-lod") {
       ok = parseNumber(value, &number) && number >= 0;
-      o.planner.lodTrianglesPerPixel = static_cast<float>(number);
+      (flag == "--lod" ? o.planner.lodTrianglesPerPixel : o.planner.viewLodTrianglesPerPixel) =
+          static_cast<float>(number);
     } else if (flag == "--yaw" || flag == "--pitch") {
       ok = parseNumber(value, &number);
       (flag == "--yaw" ? o.yawDeg : o.pitchDeg) = static_cast<float>(number);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "core/mesh_chunks.h"
@@ -168,7 +169,15 @@ void Demo::renderLookupDirections(unsigned framebuffer, int width, int height) {
   const ViewParams view{camera_.view(),
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
-  renderer_->drawMain(scene_, clock_.seconds(), view, framebuffer, width, height, true);
+  renderer_->drawMain(scene_, clock_.seconds(), view,
+                      viewDraws(plannedObjects(clock_.seconds()), height), framebuffer, width,
+                      height, true);
+}
+
+std::vector<DrawItem> Demo::viewDraws(const std::vector<PlannedObject>& objects, int height) const {
+  const float pixelsPerTangent =
+      0.5f * static_cast<float>(height) / std::tan(glm::radians(camera_.fovYDeg()) * 0.5f);
+  return planViewDraws(objects, camera_.eye(), pixelsPerTangent, plannerSettings_);
 }
 
 void Demo::releaseGraphics() {
@@ -226,8 +235,8 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   const auto start = std::chrono::steady_clock::now();
   const CaptureContext context{camera_.eye(), scene_.capture.faceSize, scene_.capture.near,
                                scene_.capture.far, optionsRevision_};
-  const FramePlan plan = planner_.plan(plannedObjects(stats_.timeSeconds), context,
-                                       plannerSettings_);
+  const std::vector<PlannedObject> objects = plannedObjects(stats_.timeSeconds);
+  const FramePlan plan = planner_.plan(objects, context, plannerSettings_);
   gpuTimer_->begin(GpuTimer::kCapture);
   Result<PassCounts> capture =
       renderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
@@ -250,7 +259,8 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                         camera_.eye()};
   gpuTimer_->begin(GpuTimer::kMain);
   const PassCounts main =
-      renderer_->drawMain(scene_, stats_.timeSeconds, view, framebuffer, width, height);
+      renderer_->drawMain(scene_, stats_.timeSeconds, view, viewDraws(objects, height), framebuffer,
+                          width, height);
   gpuTimer_->end();
   gpuTimer_->endFrame();
   if (waitForGpu) reflect::waitForGpu();

@@ -88,6 +88,8 @@ class Demo {
  private:
   std::string adopt(const std::string& name, Result<MeshData> mesh);
   std::vector<PlannedObject> plannedObjects(double seconds) const;
+  // The main pass's draws for a viewport `height` pixels tall (view LOD, if on).
+  std::vector<DrawItem> viewDraws(const std::vector<PlannedObject>& objects, int height) const;
 
   Scene scene_;
   std::map<std::string, std::vector<MeshData>> meshes_;  // levels of detail, 0 = as loaded

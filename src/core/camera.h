@@ -39,6 +39,7 @@ class LookCamera {
   glm::mat4 view() const;
   // aspect = width / height of the target; a non-finite or non-positive aspect falls back to 1.
   glm::mat4 projection(float aspect) const;
+  float fovYDeg() const { return settings_.fovYDeg; }
 
  private:
   CameraSettings settings_;

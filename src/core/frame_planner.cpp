@@ -116,9 +116,11 @@ void FramePlanner::trackChanges(const std::vector<PlannedObject>& objects) {
 
 namespace {
 
-// The coarsest level whose triangle count still covers the object's projected disc in the face at
-// `trianglesPerPixel`. Distances and sizes from the bounding sphere of the oriented box.
-int chooseLevel(const PlannedObject& o, const glm::vec3& centre, int faceSize,
+// The coarsest level whose triangle count still covers the object's projected disc, seen from
+// `centre`, at `trianglesPerPixel`; pixelsPerTangent converts the tangent of an angle to pixels
+// (half the face for a 90-degree cube face). Distances and sizes from the bounding sphere of the
+// oriented box.
+int chooseLevel(const PlannedObject& o, const glm::vec3& centre, float pixelsPerTangent,
                 float trianglesPerPixel) {
   if (trianglesPerPixel <= 0.0f || o.levels.size() < 2) return 0;
   const glm::vec3 worldCentre(o.model * glm::vec4(o.localBounds.centre(), 1.0f));
@@ -128,8 +130,7 @@ int chooseLevel(const PlannedObject& o, const glm::vec3& centre, int faceSize,
                                    glm::abs(m[2]) * halfExtent.z);
   const float distance = glm::length(worldCentre - centre);
   if (distance <= radius) return 0;  // the probe is inside or touching it
-  // At 90 degrees one unit of tangent spans half the face.
-  const float pixels = radius / distance * 0.5f * static_cast<float>(faceSize);
+  const float pixels = radius / distance * pixelsPerTangent;
   const float wanted = trianglesPerPixel * 3.14159265f * pixels * pixels;
   int level = 0;
   while (level + 1 < static_cast<int>(o.levels.size()) &&
@@ -140,6 +141,21 @@ int chooseLevel(const PlannedObject& o, const glm::vec3& centre, int faceSize,
 }
 
 }  // namespace
+
+std::vector<DrawItem> planViewDraws(const std::vector<PlannedObject>& objects, const glm::vec3& eye,
+                                    float pixelsPerTangent, const PlannerSettings& settings) {
+  std::vector<DrawItem> draws;
+  draws.reserve(objects.size());
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const PlannedObject& o = objects[i];
+    DrawItem item;
+    item.object = static_cast<int>(i);
+    item.lod = chooseLevel(o, eye, pixelsPerTangent, settings.viewLodTrianglesPerPixel);
+    if (!o.levels.empty()) item.triangles = o.levels[static_cast<size_t>(item.lod)].triangles;
+    draws.push_back(std::move(item));
+  }
+  return draws;
+}
 
 std::vector<DrawItem> FramePlanner::drawsFor(const std::vector<PlannedObject>& objects,
                                              const std::vector<int>& members,
@@ -159,7 +175,9 @@ std::vector<DrawItem> FramePlanner::drawsFor(const std::vector<PlannedObject>& o
       continue;
     }
     if (!faceMaySee(centre, face, context.near, context.far, o.localBounds, o.model)) continue;
-    item.lod = chooseLevel(o, centre, context.faceSize, settings.lodTrianglesPerPixel);
+    // At 90 degrees one unit of tangent spans half the face.
+    item.lod = chooseLevel(o, centre, 0.5f * static_cast<float>(context.faceSize),
+                           settings.lodTrianglesPerPixel);
     if (!o.levels.empty()) {
       const PlannedLevel& level = o.levels[static_cast<size_t>(item.lod)];
       item.triangles = level.triangles;

@@ -33,6 +33,9 @@ struct PlannerSettings {
   // Capture level of detail: in each face an object is drawn with its coarsest level that still
   // has this many triangles per pixel of its projected bounding disc; 0 turns LOD off.
   float lodTrianglesPerPixel = 0.0f;
+  // View level of detail: the same rule for the main camera's pass; 0 (the default) draws every
+  // object at full detail there. A 157k-triangle figure 200 pixels tall needs a tenth of them.
+  float viewLodTrianglesPerPixel = 0.0f;
   // The largest number of frames a face may lag behind the scene under this policy.
   int maxStalenessFrames() const;
 };
@@ -93,6 +96,12 @@ struct FramePlan {
   std::vector<ProbePlan> probes;  // one per reflective object, even when nothing is redrawn
   int facesCaptured() const;
 };
+
+// The main pass's draws: every object, each at the coarsest level that still has
+// settings.viewLodTrianglesPerPixel triangles per pixel of its projected bounding disc (full
+// detail when that is 0). pixelsPerTangent: half the viewport height over tan(fovY / 2).
+std::vector<DrawItem> planViewDraws(const std::vector<PlannedObject>& objects, const glm::vec3& eye,
+                                    float pixelsPerTangent, const PlannerSettings& settings);
 
 class FramePlanner {
  public:

@@ -256,16 +256,14 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
 }
 
 PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const ViewParams& camera,
-                                   unsigned framebuffer, int width, int height,
-                                   bool outputDirections) {
+                                   const std::vector<DrawItem>& draws, unsigned framebuffer,
+                                   int width, int height, bool outputDirections) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // the ground quad is seen from both sides
   clearTo(scene.clearColour);
-  std::vector<DrawItem> all;
-  for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) all.push_back({i, 0, {}, 0});
-  PassCounts counts = drawItems(scene, seconds, all, camera.projection * camera.view, camera.eye,
+  PassCounts counts = drawItems(scene, seconds, draws, camera.projection * camera.view, camera.eye,
                                 camera.eye, nullptr, outputDirections);
   if (skybox_) skybox_->draw(camera.projection, camera.view);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);

@@ -55,10 +55,12 @@ class SceneRenderer {
   // as seen from it. Probe targets are created (or resized) on first use.
   Result<PassCounts> capture(const Scene& scene, double seconds, const FramePlan& plan,
                              const glm::vec3& lightingEye);
-  // With `outputDirections`, mirrors and glass write the direction they look up (unit vector in
-  // RGB) instead of a colour: the accuracy measurement reads it back from a float target.
+  // `draws`: every object with its level of detail (planViewDraws). With `outputDirections`,
+  // mirrors and glass write the direction they look up (unit vector in RGB) instead of a colour:
+  // the accuracy measurement reads it back from a float target.
   PassCounts drawMain(const Scene& scene, double seconds, const ViewParams& camera,
-                      unsigned framebuffer, int width, int height, bool outputDirections = false);
+                      const std::vector<DrawItem>& draws, unsigned framebuffer, int width,
+                      int height, bool outputDirections = false);
 
   // The cube map that object `index` samples: its live probe's, or the skybox (0 if none yet).
   GLuint environmentTexture(const Scene& scene, int index) const;

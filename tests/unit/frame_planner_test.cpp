@@ -249,6 +249,33 @@ TEST(FramePlanner, CoarserLevelsForObjectsSmallInTheFace) {
   EXPECT_EQ(full.probes[0].faces[kPZ].draws.at(0).lod, 0);
 }
 
+TEST(FramePlanner, ViewLodPicksLevelsByTheObjectsSizeInTheView) {
+  auto withLevels = [](PlannedObject o) {
+    o.levels = {{4000, nullptr}, {1000, nullptr}, {250, nullptr}};
+    return o;
+  };
+  const std::vector<PlannedObject> objects = {withLevels(boxAt({0, 0, -3})),
+                                              withLevels(boxAt({0, 0, -5})),
+                                              withLevels(boxAt({0, 0, -40})), boxAt({0, 0, -40})};
+  // 128 pixels per unit of tangent: a 256-pixel 90-degree view, the numbers of the capture test
+  // above (level 0 at 3 units, 1 at 5, 2 at 40).
+  PlannerSettings settings;
+  settings.viewLodTrianglesPerPixel = 0.5f;
+  const std::vector<DrawItem> draws = planViewDraws(objects, {0, 0, 0}, 128.0f, settings);
+  ASSERT_EQ(draws.size(), 4u);
+  EXPECT_EQ(draws[0].lod, 0);
+  EXPECT_EQ(draws[1].lod, 1);
+  EXPECT_EQ(draws[2].lod, 2);
+  EXPECT_EQ(draws[2].triangles, 250u);
+  EXPECT_EQ(draws[3].lod, 0);  // one level only
+  for (size_t i = 0; i < draws.size(); ++i) EXPECT_EQ(draws[i].object, static_cast<int>(i));
+  // Twice the pixels per tangent (a view twice as tall) wants four times the triangles.
+  EXPECT_EQ(planViewDraws(objects, {0, 0, 0}, 256.0f, settings)[2].lod, 2);
+  EXPECT_EQ(planViewDraws(objects, {0, 0, 0}, 256.0f, settings)[1].lod, 0);
+  // Off (the default): full detail, every object, as the course draws them.
+  for (const DrawItem& d : planViewDraws(objects, {0, 0, 0}, 128.0f, {})) EXPECT_EQ(d.lod, 0);
+}
+
 TEST(FramePlanner, DrawsOnlyTheChunksAFaceCanSee) {
   // One object whose two chunks sit on either side of the probe.
   const std::vector<MeshChunk> chunks = {

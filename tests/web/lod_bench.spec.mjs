@@ -1,6 +1,7 @@
-// Capture levels of detail built in the browser with meshoptimizer, and the page's bench mode.
+// Levels of detail built in the browser with meshoptimizer (for captures and the main view), and
+// the page's bench mode.
 import { test, expect } from '@playwright/test';
-import { openDemo } from './helpers.mjs';
+import { collectErrors, openDemo, renderAndRead } from './helpers.mjs';
 
 test('LOD levels are built for every mesh after the scene loads, by the native rules', async ({ page }) => {
   const infos = [];
@@ -41,6 +42,29 @@ test('with lod=0.5 the capture draws fewer triangles than with lod=0 (skybox sce
     .toBeLessThan(full.captureTriangles * 0.75);
 });
 
+test('view LOD draws the figures with fewer triangles in the main pass; vlod= is in the URL', async ({ page }) => {
+  const errors = collectErrors(page);
+  // The default scene's figures are light (12k triangles in all): at 0.5 triangles per pixel
+  // they keep full detail, so ask for 0.05.
+  await openDemo(page, '?paused&t=1&vlod=0.05');
+  expect((await page.evaluate(() => window.demo.planner())).viewLod).toBe(0.05);
+  await page.evaluate(() => window.demo.lodReady());
+  const coarse = await renderAndRead(page);
+  await expect.poll(() => new URL(page.url()).search).toContain('vlod=0.05');
+  await page.evaluate(() => window.demo.setPlanner('when-changed', 2, 4, 0, 0));
+  const full = await renderAndRead(page);
+  expect(coarse.stats.mainTriangles, `main triangles ${coarse.stats.mainTriangles} vs ${full.stats.mainTriangles}`)
+    .toBeLessThan(full.stats.mainTriangles * 0.75);
+  // The picture changes little: the figures are small on screen.
+  let differing = 0;
+  for (let i = 0; i < full.data.length; i += 4) {
+    if (Math.max(...[0, 1, 2].map((c) => Math.abs(full.data[i + c] - coarse.data[i + c]))) > 16) ++differing;
+  }
+  expect(differing / (full.width * full.height)).toBeLessThan(0.02);
+  await expect.poll(() => new URL(page.url()).search).not.toContain('vlod=');
+  expect(errors).toEqual([]);
+});
+
 test('?bench runs every policy and prints the table; when-changed matches every-frame exactly', async ({ page }) => {
   test.setTimeout(120_000);
   const infos = [];
@@ -51,7 +75,8 @@ test('?bench runs every policy and prints the table; when-changed matches every-
   expect(results.scene).toBe('ex12-2');
   expect(results.frames).toBe(8);
   expect(results.rows.map((r) => r.label)).toEqual(
-    ['every-frame', 'when-changed', 'when-changed+LOD 0.5', 'time-sliced 2', 'every-n 4']);
+    ['every-frame', 'when-changed', 'when-changed+LOD 0.5', 'when-changed+LOD+view 0.5', 'time-sliced 2',
+     'every-n 4']);
   const row = Object.fromEntries(results.rows.map((r) => [r.label, r]));
   expect(row['every-frame'].facesPerFrame).toBe(6);
   expect(row['every-frame'].drawCallsPerFrame).toBe(22);

@@ -104,15 +104,20 @@ int runSingleBench(const CliOptions& o) {
 int runPolicyBench(const CliOptions& o) {
   using reflect::PolicyCase;
   using reflect::UpdatePolicy;
-  auto settings = [&](UpdatePolicy policy, float lod) {
+  auto settings = [&](UpdatePolicy policy, float lod, float viewLod = 0.0f) {
     reflect::PlannerSettings s = o.planner;
     s.policy = policy;
     s.lodTrianglesPerPixel = lod;
+    s.viewLodTrianglesPerPixel = viewLod;
     return s;
   };
   const float lod = o.planner.lodTrianglesPerPixel > 0 ? o.planner.lodTrianglesPerPixel : 0.5f;
-  char lodLabel[64];
+  const float viewLod =
+      o.planner.viewLodTrianglesPerPixel > 0 ? o.planner.viewLodTrianglesPerPixel : 0.5f;
+  char lodLabel[64], viewLodLabel[80];
   std::snprintf(lodLabel, sizeof lodLabel, "when-changed + LOD (%.2g tris/px)", lod);
+  std::snprintf(viewLodLabel, sizeof viewLodLabel, "when-changed + LOD, view LOD (%.2g, %.2g)", lod,
+                viewLod);
   char sliceLabel[64], everyLabel[64];
   std::snprintf(sliceLabel, sizeof sliceLabel, "time-sliced (%d faces/frame)", o.planner.facesPerFrame);
   std::snprintf(everyLabel, sizeof everyLabel, "every-n (N = %d)", o.planner.everyN);
@@ -120,6 +125,7 @@ int runPolicyBench(const CliOptions& o) {
       {"every-frame (the course)", settings(UpdatePolicy::EveryFrame, 0), false},
       {"when-changed (default)", settings(UpdatePolicy::WhenChanged, 0), false},
       {lodLabel, settings(UpdatePolicy::WhenChanged, lod), false},
+      {viewLodLabel, settings(UpdatePolicy::WhenChanged, lod, viewLod), false},
       {sliceLabel, settings(UpdatePolicy::TimeSliced, 0), false},
       {everyLabel, settings(UpdatePolicy::EveryNFrames, 0), false},
   };

@@ -117,10 +117,11 @@ EMSCRIPTEN_KEEPALIVE const char* rf_camera_json() {
 }
 
 // Capture planning: policy by name ("every-frame", "when-changed", "time-sliced", "every-n"),
-// faces per frame for time-sliced, N for every-n, LOD triangles per pixel (0 = off).
-// Returns "" or an error for an unknown policy.
+// faces per frame for time-sliced, N for every-n, capture and view LOD triangles per pixel
+// (0 = off). Returns "" or an error for an unknown policy.
 EMSCRIPTEN_KEEPALIVE const char* rf_set_planner(const char* policy, int facesPerFrame, int everyN,
-                                                double lodTrianglesPerPixel) {
+                                                double lodTrianglesPerPixel,
+                                                double viewLodTrianglesPerPixel) {
   if (!state().demo) return returnText("no scene loaded");
   reflect::PlannerSettings settings = state().demo->plannerSettings();
   if (!reflect::parsePolicy(policy, &settings.policy)) {
@@ -129,20 +130,22 @@ EMSCRIPTEN_KEEPALIVE const char* rf_set_planner(const char* policy, int facesPer
   settings.facesPerFrame = facesPerFrame;
   settings.everyN = everyN;
   settings.lodTrianglesPerPixel = static_cast<float>(lodTrianglesPerPixel);
+  settings.viewLodTrianglesPerPixel = static_cast<float>(viewLodTrianglesPerPixel);
   state().demo->setPlannerSettings(settings);
   return returnText("");
 }
 
-// {"policy":..., "facesPerFrame":..., "everyN":..., "lod":..., "maxStalenessFrames":...}
+// {"policy":..., "facesPerFrame":..., "everyN":..., "lod":..., "viewLod":...,
+//  "maxStalenessFrames":...}
 EMSCRIPTEN_KEEPALIVE const char* rf_planner_json() {
   if (!state().demo) return returnText("{}");
   const reflect::PlannerSettings& s = state().demo->plannerSettings();
   char buffer[200];
   std::snprintf(buffer, sizeof buffer,
                 "{\"policy\":\"%s\",\"facesPerFrame\":%d,\"everyN\":%d,\"lod\":%g,"
-                "\"maxStalenessFrames\":%d}",
+                "\"viewLod\":%g,\"maxStalenessFrames\":%d}",
                 reflect::policyName(s.policy), s.facesPerFrame, s.everyN, s.lodTrianglesPerPixel,
-                s.maxStalenessFrames());
+                s.viewLodTrianglesPerPixel, s.maxStalenessFrames());
   return returnText(buffer);
 }
 
