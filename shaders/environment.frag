@@ -47,13 +47,10 @@ const float kSearchScale = 4.0;
 // A refined crossing counts as a surface when it lies within this fraction of its distance from
 // the stored surface. 0.05 and 0.2 lost 0.7 and 0.4 dB against 0.1.
 const float kSurfaceTolerance = 0.1;
-// Crossings refined per pixel: the first, and one more if the first was a ghost.
-const int kCandidates = 2;
 
 // The capture stores the clear background at the far plane, and a skybox with alpha 1, which reads
-// as 9999 units (the clamp below): infinitely far. The search's last sample, at a = kFarA, is at
-// t = 4000 units: any surface, and the far plane, is in front of it; only a skybox is behind.
-const float kFarA = 4000.0 / (4000.0 + kSearchScale);
+// as 9999 units (the clamp below): infinitely far. Stored distances past kSkyDistance are sky.
+const float kSkyDistance = 5000.0;
 
 float storedDistance(vec3 direction) {
   float a = min(textureLod(u_environment, direction, 0.0).a, 0.9999);
@@ -70,59 +67,80 @@ float behind(vec3 x, vec3 d, float a) {  // > 0 in front of the stored surface, 
   return storedDistance(p) - length(p);
 }
 
+// One secant refinement of the crossing bracketed by [frontA, backA] (front in front of the
+// stored surface, back behind it). Returns the refined point, and in `surface` whether it lies on
+// the stored surface (a true crossing) rather than at a depth jump (a ghost); frontA moves to
+// the last refined point in front.
+vec3 refine(vec3 x, vec3 d, inout float frontA, float frontF, float backA, float backF,
+            out bool surface) {
+  for (int k = 0; k < DISTANCE_ITERATIONS; ++k) {
+    float middle = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
+    float fm = behind(x, d, middle);
+    if (fm < 0.0) {
+      backA = middle;
+      backF = fm;
+    } else {
+      frontA = middle;
+      frontF = fm;
+    }
+  }
+  float hit = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
+  vec3 p = pointAt(x, d, hit);
+  surface = abs(storedDistance(p) - length(p)) <= kSurfaceTolerance * length(p);
+  return p;
+}
+
 vec3 lookupDirection(vec3 d) {
 #if DISTANCE_ITERATIONS == 0
   return d;
 #else
   vec3 x = (v_worldPosition - u_probeCentre) / u_distanceUnit;
-  // The farthest point of the ray known to be in front of the stored surface. When no crossing
-  // is found, its texel is the best guess for what the ray meets: what lies beside an occluder
-  // if the ray slipped behind one. Looking up along d instead would show the occluder itself, a
-  // ghost beside its true reflection.
-  float freeA = 0.0;
+  // The linear search runs its whole, fixed length and notes the first two front-to-back
+  // crossings; the refinement runs after it, so nothing leaves a loop early. (A search that
+  // returned from inside its loop crashed llvmpipe 22.3's compiled shader under some settings
+  // of the sweep; in SwiftShader both forms cost the same.)
   float previousA = 0.0;
   float previousF = behind(x, d, 0.0);
-  int i = 1;
-  // At most kCandidates crossings are refined: the refinement sits outside the linear loop, so
-  // a software rasteriser, which runs a loop body for a block of pixels while any of them needs
-  // it, refines once per candidate instead of once per linear step.
-  for (int candidate = 0; candidate < kCandidates; ++candidate) {
-    float a = 0.0;
-    float f = 0.0;
-    bool crossed = false;
-    for (; i <= kLinearSteps + 1 && !crossed; ++i) {
-      // The last sample is as good as infinitely far: only a skybox is behind it.
-      a = i <= kLinearSteps ? float(i) / float(kLinearSteps + 1) : kFarA;
-      f = behind(x, d, a);
-      crossed = previousF >= 0.0 && f < 0.0;
-      if (!crossed) {
-        if (f >= 0.0) freeA = a;
-        previousA = a;
-        previousF = f;
+  vec4 first = vec4(-1.0);   // frontA, frontF, backA, backF of the first crossing (x < 0: none)
+  vec4 second = vec4(-1.0);  // and of the second
+  // The farthest sample known to be in front of the stored surface. When no surface is found,
+  // its texel is the best guess for what the ray meets: what lies beside an occluder if the ray
+  // slipped behind one. Looking up along d instead would show the occluder itself, a ghost
+  // beside its true reflection.
+  float freeA = 0.0;
+  for (int i = 1; i <= kLinearSteps; ++i) {
+    float a = float(i) / float(kLinearSteps + 1);
+    float f = behind(x, d, a);
+    if (previousF >= 0.0 && f < 0.0) {
+      if (first.x < 0.0) {
+        first = vec4(previousA, previousF, a, f);
+      } else if (second.x < 0.0) {
+        second = vec4(previousA, previousF, a, f);
       }
     }
-    if (!crossed) break;
-    float frontA = previousA, frontF = previousF, backA = a, backF = f;
-    for (int k = 0; k < DISTANCE_ITERATIONS; ++k) {
-      float middle = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
-      float fm = behind(x, d, middle);
-      if (fm < 0.0) {
-        backA = middle;
-        backF = fm;
-      } else {
-        frontA = middle;
-        frontF = fm;
-      }
-    }
-    float hit = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
-    vec3 p = pointAt(x, d, hit);
-    if (abs(storedDistance(p) - length(p)) <= kSurfaceTolerance * length(p)) return p;
-    // A ghost: go on along the ray from the sample behind the jump.
-    freeA = frontA;
+    if (f >= 0.0) freeA = a;
     previousA = a;
     previousF = f;
   }
-  if (previousF >= 0.0) return d;  // in front of everything to infinity: the sky, along d
+  bool surface = false;
+  if (first.x >= 0.0) {
+    float frontA = first.x;
+    vec3 p = refine(x, d, frontA, first.y, first.z, first.w, surface);
+    if (surface) return p;
+    if (second.x < 0.0) freeA = max(freeA, frontA);
+  }
+  if (second.x >= 0.0) {
+    float frontA = second.x;
+    vec3 p = refine(x, d, frontA, second.y, second.z, second.w, surface);
+    if (surface) return p;
+  }
+  if (previousF >= 0.0) {
+    // In front of the stored surface to the end of the search. A skybox is infinitely far: seen
+    // along d itself. Anything nearer (the far plane's background, a floor 60 units off) is
+    // looked up from where the search ended.
+    vec3 last = pointAt(x, d, previousA);
+    return previousF + length(last) >= kSkyDistance ? d : last;
+  }
   return freeA > 0.0 ? pointAt(x, d, freeA) : d;
 #endif
 }

@@ -6,7 +6,7 @@
 //   node tools/web_bench.mjs --raw [--frames N] [--warmup N] [--size WxH] [--query '?paused&cube=128']
 //
 // Default: the page's bench mode (?bench): on the scene, for each capture policy (every-frame,
-// when-changed, when-changed + LOD 0.5, time-sliced 2, every-n 4) it resets the time to 0 and
+// when-changed, when-changed + LOD 0.5, + view LOD 0.5, time-sliced 2, every-n 4) it resets the time to 0 and
 // renders N frames of demo.frame(1/60), then prints frame ms (median, p10, p90), faces, draw calls
 // and triangles per frame, and the largest pixel difference from every-frame over the same
 // animation. --query adds to the page's query (e.g. '&cube=128').

@@ -102,11 +102,11 @@ export function formatTable({ scene, frames, width, height, compareEvery, rows }
   const lines = [
     `bench: scene ${scene}, ${frames} frames of 1/60 s from t=0, ${width}x${height}` +
       (compareEvery > 1 ? `, every ${compareEvery}th frame compared` : ''),
-    `${'policy'.padEnd(22)}${pad('ms med', 8)}${pad('p10', 8)}${pad('p90', 8)}${pad('faces', 7)}` +
+    `${'policy'.padEnd(26)}${pad('ms med', 8)}${pad('p10', 8)}${pad('p90', 8)}${pad('faces', 7)}` +
       `${pad('draws', 7)}${pad('tris', 9)}${pad('cap tris', 10)}${pad('max diff', 10)}${pad('frames≠', 9)}`,
   ];
   for (const r of rows) {
-    lines.push(`${r.label.padEnd(22)}${pad(r.frameMs.median.toFixed(2), 8)}${pad(r.frameMs.p10.toFixed(2), 8)}` +
+    lines.push(`${r.label.padEnd(26)}${pad(r.frameMs.median.toFixed(2), 8)}${pad(r.frameMs.p10.toFixed(2), 8)}` +
                `${pad(r.frameMs.p90.toFixed(2), 8)}${pad(r.facesPerFrame.toFixed(2), 7)}` +
                `${pad(r.drawCallsPerFrame.toFixed(1), 7)}${pad(Math.round(r.trianglesPerFrame), 9)}` +
                `${pad(Math.round(r.captureTrianglesPerFrame), 10)}${pad(r.maxDiff, 10)}` +
