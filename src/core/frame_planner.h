@@ -34,7 +34,7 @@ struct PlannerSettings {
   // has this many triangles per pixel of its projected bounding disc; 0 turns LOD off.
   float lodTrianglesPerPixel = 0.0f;
   // View level of detail: the same rule for the main camera's pass; 0 (the default) draws every
-  // object at full detail there. A 157k-triangle figure 200 pixels tall needs a tenth of them.
+  // object at full detail there.
   float viewLodTrianglesPerPixel = 0.0f;
   // The largest number of frames a face may lag behind the scene under this policy.
   int maxStalenessFrames() const;
