@@ -236,9 +236,9 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
       target->second.bindFace(face.face);
       // Where nothing is drawn the stored distance is the far plane's: the world ends there, as
       // it does for the main camera. (Measured on the default scene, this beats an infinite
-      // distance by 2 dB: a search that meets the far sphere stops beside the figures instead of
-      // looking up along its own direction, behind which a figure may stand.) A skybox is drawn
-      // over it with alpha 1, infinitely far.
+      // distance by 2 dB: a search that ends short of it looks up from its last point, beside
+      // the figures, not along its own direction, behind which a figure may stand.) A skybox is
+      // drawn over it with alpha 1, infinitely far, and is seen along the ray's direction.
       clearTo(scene.clearColour, storeDistance ? farAlpha : 1.0f);
       const glm::mat4 view = cubeFaceView(probe.centre, face.face);
       // Other mirrors in view use their cube as it was before this frame's capture of them
