@@ -57,9 +57,9 @@ test('the reflection weight and the Fresnel switch change the sphere and the URL
 });
 
 test('glass and skybox scenes: environment and bad mat= entries', async ({ page }) => {
-  await openDemo(page, '?scene=skybox&paused&mat=9:0.5,0.3,0,1.5;x');
+  await openDemo(page, '?scene=skybox&paused&mat=99:0.5,0.3,0,1.5;x');
   await expect(page.locator('#messages .message', { hasText: 'mat=x: expected INDEX:' })).toBeVisible();
-  await expect(page.locator('#messages .message', { hasText: 'no object 9' })).toBeVisible();
+  await expect(page.locator('#messages .message', { hasText: 'no object 99' })).toBeVisible();
   const objects = await page.evaluate(() => window.demo.objects());
   const index = objects.findIndex((o) => ['mirror', 'glass'].includes(o.material.type));
   expect(index).toBeGreaterThanOrEqual(0);
