@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds native and web and runs every test: ctest (unit, headless GL, reference, extremes, the
-# 100,000-frame run), the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the
-# libFuzzer targets for a bounded time, then Playwright in Debian's Chromium.
+# Checks the C++ formatting, builds native and web and runs every test: ctest (unit, headless
+# GL, reference, extremes, the 100,000-frame run), the same suite under AddressSanitizer +
+# UndefinedBehaviorSanitizer, the libFuzzer targets for a bounded time, then Playwright in
+# Debian's Chromium.
 # Installs what is missing first. Exits non-zero on any failure.
 #   FUZZ_SECONDS=60 (per fuzz target)   SKIP_SANITIZERS=1 / SKIP_FUZZ=1 for a quicker local run
 set -euo pipefail
@@ -9,6 +10,9 @@ cd "$(dirname "$0")"
 source tools/setup.sh
 ensure_debian_packages "${NATIVE_PACKAGES[@]}" "${WEB_PACKAGES[@]}" "${BROWSER_PACKAGES[@]}"
 ensure_npm_packages
+
+echo "== C++ formatting (.clang-format)"
+find src tests \( -name '*.cpp' -o -name '*.h' \) -print0 | xargs -0 clang-format --dry-run --Werror
 
 echo "== native build and ctest"
 cmake --preset native >/dev/null

@@ -51,7 +51,8 @@ const char* cliHelp() {
          "                   two-mirrors, shared-probe, skybox, skybox-grid, ex12-2-fresnel)\n"
          "                   or a .json file\n"
          "                   (default ex12-2)\n"
-         "  --reference FILE render: also write the exact (ray-traced, Embree) frame and print the\n"
+         "  --reference FILE render: also write the exact (ray-traced, Embree) frame and print "
+         "the\n"
          "                   reflector's error against it\n"
          "  --assets DIR     take the models from DIR by the course's file names\n"
          "                   (mario.obj sonic.obj sphere.obj quad.obj)\n"
@@ -106,9 +107,10 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       (flag == "--growth" ? o.growth : o.sweep) = true;
       continue;
     }
-    if (flag == "--origin" || flag == "--mipmaps" || flag == "--half-float" || flag == "--mediump") {
-      bool& on = flag == "--origin"    ? o.accuracy.captureAtOrigin
-                 : flag == "--mipmaps" ? o.accuracy.mipmaps
+    if (flag == "--origin" || flag == "--mipmaps" || flag == "--half-float" ||
+        flag == "--mediump") {
+      bool& on = flag == "--origin"       ? o.accuracy.captureAtOrigin
+                 : flag == "--mipmaps"    ? o.accuracy.mipmaps
                  : flag == "--half-float" ? o.accuracy.halfFloat
                                           : o.accuracy.mediump;
       on = true;

@@ -16,10 +16,10 @@ struct CliOptions {
   int height = 800;
   double time = 0.0;
   std::string out = "frame.png";
-  std::string assets;     // a folder with the course's models, by their file names
+  std::string assets;            // a folder with the course's models, by their file names
   std::string scene = "ex12-2";  // a scene name from assets/scenes, or a .json path
-  int frames = 120;       // bench: frames to time
-  int warmup = 10;        // bench: frames not timed
+  int frames = 120;              // bench: frames to time
+  int warmup = 10;               // bench: frames not timed
   int cubeSize = 256;
   bool cubeSizeSet = false;  // otherwise the scene's capture.faceSize
   float yawDeg = 0.0f;
@@ -29,11 +29,12 @@ struct CliOptions {
   AccuracySettings accuracy;
   bool policySet = false;
   int accuracyFrames = 60;
-  bool growth = false;  // bench: frame time against reflectors and triangles
-  bool sweep = false;   // bench: accuracy settings against the ray-traced reference
+  bool growth = false;       // bench: frame time against reflectors and triangles
+  bool sweep = false;        // bench: accuracy settings against the ray-traced reference
   std::string referenceOut;  // render: also write the ray-traced reference of the same frame
-  std::string csv;      // sweep: CSV output
-  std::string svg;      // sweep: SVG plot output  // bench: frames compared against the every-frame policy
+  std::string csv;           // sweep: CSV output
+  std::string
+      svg;  // sweep: SVG plot output  // bench: frames compared against the every-frame policy
 };
 
 Result<CliOptions> parseCli(const std::vector<std::string>& args);

@@ -77,7 +77,8 @@ std::string Demo::setMaterialJson(int index, const std::string& json) {
   if (index < 0 || index >= static_cast<int>(scene_.objects.size())) {
     return "no object " + std::to_string(index);
   }
-  std::string error = applyMaterialJson(json, "material", scene_.objects[static_cast<size_t>(index)]);
+  std::string error =
+      applyMaterialJson(json, "material", scene_.objects[static_cast<size_t>(index)]);
   if (error.empty()) ++optionsRevision_;  // other probes may show this object
   return error;
 }
@@ -238,8 +239,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   const std::vector<PlannedObject> objects = plannedObjects(stats_.timeSeconds);
   const FramePlan plan = planner_.plan(objects, context, plannerSettings_);
   gpuTimer_->begin(GpuTimer::kCapture);
-  Result<PassCounts> capture =
-      renderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
+  Result<PassCounts> capture = renderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
   gpuTimer_->end();
   if (!capture) {
     stats_.error = "capture failed: " + capture.error();
@@ -258,9 +258,8 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
   gpuTimer_->begin(GpuTimer::kMain);
-  const PassCounts main =
-      renderer_->drawMain(scene_, stats_.timeSeconds, view, viewDraws(objects, height), framebuffer,
-                          width, height);
+  const PassCounts main = renderer_->drawMain(
+      scene_, stats_.timeSeconds, view, viewDraws(objects, height), framebuffer, width, height);
   gpuTimer_->end();
   gpuTimer_->endFrame();
   if (waitForGpu) reflect::waitForGpu();

@@ -29,7 +29,8 @@ class Demo {
   // Loads the OBJ at `path` as the scene's mesh `name`. On failure returns the message (naming
   // the file) and keeps the mesh it had; on success returns "".
   std::string loadMesh(const std::string& name, const std::string& path);
-  // The same for OBJ text already in memory (the page fetches files); `source` names it in messages.
+  // The same for OBJ text already in memory (the page fetches files); `source` names it in
+  // messages.
   std::string loadMeshText(const std::string& name, const std::string& text,
                            const std::string& source);
   // A mesh made in memory (generated scenes); levels of detail and chunks are built as for files.

@@ -30,9 +30,9 @@ std::string FrameStats::toJson() const {
                 "\"captureDrawCalls\":%d,\"captureTriangles\":%zu,\"mainDrawCalls\":%d,"
                 "\"mainTriangles\":%zu,\"cubeFaceSize\":%d,\"width\":%d,\"height\":%d,"
                 "\"time\":%.6f,\"orbitDegrees\":%.6f}",
-                frameMs, captureMs, timing, gpuFrameMs, gpuCaptureMs, policy, probes, facesCaptured, drawCalls(),
-                triangles(), captureDrawCalls, captureTriangles, mainDrawCalls, mainTriangles,
-                cubeFaceSize, width, height, timeSeconds, orbitDegrees);
+                frameMs, captureMs, timing, gpuFrameMs, gpuCaptureMs, policy, probes, facesCaptured,
+                drawCalls(), triangles(), captureDrawCalls, captureTriangles, mainDrawCalls,
+                mainTriangles, cubeFaceSize, width, height, timeSeconds, orbitDegrees);
   std::string json = buffer;
   if (!error.empty()) json.insert(json.size() - 1, ",\"error\":" + jsonQuote(error));
   return json;

@@ -20,10 +20,13 @@ MeshData uvSphere(size_t triangles, const std::string& name) {
   MeshData mesh;
   mesh.name = name;
   for (int r = 0; r <= rings; ++r) {
-    const float theta = static_cast<float>(M_PI) * static_cast<float>(r) / static_cast<float>(rings);
+    const float theta =
+        static_cast<float>(M_PI) * static_cast<float>(r) / static_cast<float>(rings);
     for (int s = 0; s <= segments; ++s) {
-      const float phi = 2.0f * static_cast<float>(M_PI) * static_cast<float>(s) / static_cast<float>(segments);
-      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+      const float phi =
+          2.0f * static_cast<float>(M_PI) * static_cast<float>(s) / static_cast<float>(segments);
+      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                        std::sin(theta) * std::sin(phi));
       mesh.vertices.push_back({n, n});
     }
   }
@@ -32,7 +35,8 @@ MeshData uvSphere(size_t triangles, const std::string& name) {
     for (uint32_t s = 0; s < static_cast<uint32_t>(segments); ++s) {
       const uint32_t a = r * row + s, b = a + row;
       if (r != 0) mesh.indices.insert(mesh.indices.end(), {a, a + 1, b});
-      if (r + 1 != static_cast<uint32_t>(rings)) mesh.indices.insert(mesh.indices.end(), {a + 1, b + 1, b});
+      if (r + 1 != static_cast<uint32_t>(rings))
+        mesh.indices.insert(mesh.indices.end(), {a + 1, b + 1, b});
     }
   }
   mesh.bounds = computeBounds(mesh.vertices);
@@ -46,9 +50,10 @@ Scene growthScene(int reflectors, bool share) {
     SceneObject blob;
     blob.mesh = "blob.obj";
     const float angle = 90.0f * static_cast<float>(i);
-    blob.placement = glm::scale(
-        glm::translate(glm::rotate(glm::mat4(1.0f), glm::radians(angle), {0, 1, 0}), {0, -0.8f, 6.0f}),
-        glm::vec3(0.7f));
+    blob.placement =
+        glm::scale(glm::translate(glm::rotate(glm::mat4(1.0f), glm::radians(angle), {0, 1, 0}),
+                                  {0, -0.8f, 6.0f}),
+                   glm::vec3(0.7f));
     blob.motion = Motion::Orbit;
     blob.colour = i % 2 ? glm::vec3(1.0f, 0.4f, 0.4f) : glm::vec3(0.4f, 1.0f, 0.4f);
     scene.objects.push_back(blob);
@@ -91,8 +96,7 @@ Result<std::string> runGrowthBench(const std::string& modelDirectory, const Grow
         auto r = benchFrames(demo, o.width, o.height, o.warmup, o.frames);
         if (!r) return Result<std::string>::failure(r.error());
         std::snprintf(line, sizeof line, " %.1f ms (%d probes, %.0f faces) |",
-                      median(r.value().frameMs), demo.lastStats().probes,
-                      r.value().facesPerFrame);
+                      median(r.value().frameMs), demo.lastStats().probes, r.value().facesPerFrame);
         out += line;
         std::fprintf(stderr, ".");
       }

@@ -17,8 +17,8 @@ struct BenchResult {
   std::vector<double> frameMs;
   std::vector<double> captureMs;
   size_t trianglesPerFrame = 0;  // of the last frame
-  int drawCallsPerFrame = 0;      // of the last frame
-  double facesPerFrame = 0;       // mean over the timed frames
+  int drawCallsPerFrame = 0;     // of the last frame
+  double facesPerFrame = 0;      // mean over the timed frames
 };
 // Renders warmup + frames frames at 60 Hz scene time steps, waiting for the GPU after each.
 Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, int frames);

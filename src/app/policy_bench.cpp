@@ -42,8 +42,8 @@ Result<std::vector<PolicyResult>> benchPolicies(const DemoFactory& makeDemo,
   std::vector<Samples> samples(cases.size());
   for (int frame = 0; frame < o.warmup + o.frames; ++frame) {
     for (size_t c = 0; c < cases.size(); ++c) {
-      const FrameStats& s = demos.value()[c]->frame(frame == 0 ? 0.0 : o.dtSeconds, fb, o.width,
-                                                    o.height, true);
+      const FrameStats& s =
+          demos.value()[c]->frame(frame == 0 ? 0.0 : o.dtSeconds, fb, o.width, o.height, true);
       if (frame < o.warmup) continue;
       Samples& out = samples[c];
       out.frameMs.push_back(s.frameMs);

@@ -35,8 +35,8 @@ struct PolicyResult {
   double facesPerFrame = 0, captureDrawsPerFrame = 0, captureTrianglesPerFrame = 0,
          trianglesPerFrame = 0;
   int maxStalenessFrames = 0;
-  int maxDifference = 0;          // largest channel difference from every-frame, 0..255 (-1: n/a)
-  double differingPixels = 0;     // fraction of pixels that differ at all (worst frame)
+  int maxDifference = 0;       // largest channel difference from every-frame, 0..255 (-1: n/a)
+  double differingPixels = 0;  // fraction of pixels that differ at all (worst frame)
 };
 
 using DemoFactory = std::function<Result<std::unique_ptr<Demo>>(bool reflectorAsPhong)>;

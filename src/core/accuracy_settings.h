@@ -15,10 +15,10 @@ struct AccuracySettings {
   // The shipped default (2) is the Pareto-best setting of `reflect bench --sweep` within 1.1x
   // the course's frame time; see README.
   int distanceIterations = 2;
-  int depthBits = 24;        // capture depth buffer: 16 or 24
-  bool mipmaps = false;      // trilinear lookup from a mip chain rebuilt after each capture
-  bool halfFloat = false;    // RGBA16F capture colour instead of RGBA8
-  bool mediump = false;      // fragment shaders at mediump instead of highp
+  int depthBits = 24;      // capture depth buffer: 16 or 24
+  bool mipmaps = false;    // trilinear lookup from a mip chain rebuilt after each capture
+  bool halfFloat = false;  // RGBA16F capture colour instead of RGBA8
+  bool mediump = false;    // fragment shaders at mediump instead of highp
 
   bool usesHalfFloat() const { return halfFloat; }
   bool operator==(const AccuracySettings& o) const {

@@ -19,8 +19,8 @@ Result<ImageErrorMetrics> imageErrorMetrics(const RgbaImage& a, const RgbaImage&
         "image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
         " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
   }
-  const size_t pixels = static_cast<size_t>(std::max(a.width, 0)) *
-                        static_cast<size_t>(std::max(a.height, 0));
+  const size_t pixels =
+      static_cast<size_t>(std::max(a.width, 0)) * static_cast<size_t>(std::max(a.height, 0));
   if (a.pixels.size() != pixels * 4 || b.pixels.size() != pixels * 4) {
     return Result<ImageErrorMetrics>::failure("image pixel buffer does not match its size");
   }
@@ -36,8 +36,8 @@ Result<ImageErrorMetrics> imageErrorMetrics(const RgbaImage& a, const RgbaImage&
     if (mask[i] == 0) continue;
     int pixelError = 0;
     for (size_t c = 0; c < 3; ++c) {
-      const int d = std::abs(static_cast<int>(a.pixels[i * 4 + c]) -
-                             static_cast<int>(b.pixels[i * 4 + c]));
+      const int d =
+          std::abs(static_cast<int>(a.pixels[i * 4 + c]) - static_cast<int>(b.pixels[i * 4 + c]));
       sumSquares += static_cast<double>(d) * static_cast<double>(d);
       pixelError = std::max(pixelError, d);
     }
@@ -51,7 +51,8 @@ Result<ImageErrorMetrics> imageErrorMetrics(const RgbaImage& a, const RgbaImage&
   // Nearest rank: the ceil(0.95 n)-th smallest error (1-based).
   const size_t rank = static_cast<size_t>(std::ceil(0.95 * static_cast<double>(errors.size())));
   const size_t index = std::clamp<size_t>(rank, 1, errors.size()) - 1;
-  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(index), errors.end());
+  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(index),
+                   errors.end());
   m.p95PixelError = errors[index];
   m.maxPixelError = *std::max_element(errors.begin(), errors.end());
   return m;
@@ -60,8 +61,8 @@ Result<ImageErrorMetrics> imageErrorMetrics(const RgbaImage& a, const RgbaImage&
 Result<double> meanAngularErrorDegrees(const std::vector<glm::vec3>& a,
                                        const std::vector<glm::vec3>& b) {
   if (a.size() != b.size()) {
-    return Result<double>::failure("direction lists differ in length: " +
-                                   std::to_string(a.size()) + " and " + std::to_string(b.size()));
+    return Result<double>::failure("direction lists differ in length: " + std::to_string(a.size()) +
+                                   " and " + std::to_string(b.size()));
   }
   if (a.empty()) return 0.0;
   double sum = 0.0;

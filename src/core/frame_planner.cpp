@@ -10,9 +10,9 @@ namespace reflect {
 namespace {
 
 bool sameState(const PlannedObject& a, const PlannedObject& b) {
-  return a.model == b.model && a.colour == b.colour && a.probeCentre == b.probeCentre && a.meshRevision == b.meshRevision &&
-         a.probed == b.probed && a.localBounds.min == b.localBounds.min &&
-         a.localBounds.max == b.localBounds.max;
+  return a.model == b.model && a.colour == b.colour && a.probeCentre == b.probeCentre &&
+         a.meshRevision == b.meshRevision && a.probed == b.probed &&
+         a.localBounds.min == b.localBounds.min && a.localBounds.max == b.localBounds.max;
 }
 
 bool contains(const std::vector<int>& list, int value) {
@@ -20,7 +20,8 @@ bool contains(const std::vector<int>& list, int value) {
 }
 
 // The centre of the members' joint world bounds (for one member: its own bounds' centre).
-glm::vec3 probeCentreOf(const std::vector<PlannedObject>& objects, const std::vector<int>& members) {
+glm::vec3 probeCentreOf(const std::vector<PlannedObject>& objects,
+                        const std::vector<int>& members) {
   if (members.size() == 1) {
     const PlannedObject& o = objects[static_cast<size_t>(members[0])];
     if (o.probeCentre) return *o.probeCentre;
@@ -61,10 +62,14 @@ std::vector<std::vector<int>> probeMembers(const std::vector<PlannedObject>& obj
 
 const char* policyName(UpdatePolicy policy) {
   switch (policy) {
-    case UpdatePolicy::EveryFrame: return "every-frame";
-    case UpdatePolicy::WhenChanged: return "when-changed";
-    case UpdatePolicy::TimeSliced: return "time-sliced";
-    case UpdatePolicy::EveryNFrames: return "every-n";
+    case UpdatePolicy::EveryFrame:
+      return "every-frame";
+    case UpdatePolicy::WhenChanged:
+      return "when-changed";
+    case UpdatePolicy::TimeSliced:
+      return "time-sliced";
+    case UpdatePolicy::EveryNFrames:
+      return "every-n";
   }
   return "?";
 }
@@ -86,8 +91,10 @@ int PlannerSettings::maxStalenessFrames() const {
       const int k = std::clamp(facesPerFrame, 1, 6);
       return (6 + k - 1) / k - 1;
     }
-    case UpdatePolicy::EveryNFrames: return std::max(everyN, 1) - 1;
-    default: return 0;
+    case UpdatePolicy::EveryNFrames:
+      return std::max(everyN, 1) - 1;
+    default:
+      return 0;
   }
 }
 
@@ -211,8 +218,8 @@ FramePlanner::Staleness FramePlanner::faceStaleness(const ProbeMemory& probe, in
 }
 
 std::vector<int> FramePlanner::chooseFaces(const std::vector<int>& stale,
-                                          const PlannerSettings& settings,
-                                          ProbeMemory& memory) const {
+                                           const PlannerSettings& settings,
+                                           ProbeMemory& memory) const {
   switch (settings.policy) {
     case UpdatePolicy::EveryFrame:
     case UpdatePolicy::WhenChanged:

@@ -52,12 +52,12 @@ struct PlannedObject {
   glm::mat4 model{1.0f};
   glm::vec3 colour{1.0f};
   uint32_t meshRevision = 0;  // bumped when the object's mesh is replaced
-  bool probed = false;  // samples a live probe of its own (mirror, glass, cube-textured)
+  bool probed = false;        // samples a live probe of its own (mirror, glass, cube-textured)
   // Probed objects with the same group >= 0 share one probe at the centre of their joint bounds
   // (cheaper, less exact: they do not see each other); -1 = a probe of its own.
   int probeGroup = -1;
   std::optional<glm::vec3> probeCentre;  // overrides the bounds centre (ungrouped probes)
-  std::vector<PlannedLevel> levels;  // 0 = full detail; empty: one level, no chunks
+  std::vector<PlannedLevel> levels;      // 0 = full detail; empty: one level, no chunks
 };
 
 // Everything else a capture depends on. Any change recaptures every face.
@@ -129,15 +129,16 @@ class FramePlanner {
 
   std::vector<int> chooseFaces(const std::vector<int>& stale, const PlannerSettings& settings,
                                ProbeMemory& memory) const;
-  Staleness faceStaleness(const ProbeMemory& probe, int face, const std::vector<int>& visibleNow) const;
+  Staleness faceStaleness(const ProbeMemory& probe, int face,
+                          const std::vector<int>& visibleNow) const;
   void trackChanges(const std::vector<PlannedObject>& objects);
   std::vector<DrawItem> drawsFor(const std::vector<PlannedObject>& objects,
-                                 const std::vector<int>& members,
-                                 const glm::vec3& centre, int face, const CaptureContext& context,
+                                 const std::vector<int>& members, const glm::vec3& centre, int face,
+                                 const CaptureContext& context,
                                  const PlannerSettings& settings) const;
 
   std::vector<PlannedObject> previous_;
-  std::vector<uint32_t> stateVersions_;    // per object: bumped each frame its state changes
+  std::vector<uint32_t> stateVersions_;  // per object: bumped each frame its state changes
   // Per object: bumped when a reflector's cube was redrawn for a real change, so probes that
   // show this mirror redraw once (one bounce), without two mirrors re-triggering each other.
   std::vector<uint32_t> contentVersions_;

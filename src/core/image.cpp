@@ -61,7 +61,8 @@ Result<RgbaImage> decodeImage(const uint8_t* data, size_t size, const std::strin
     return Result<RgbaImage>::failure(name + ": cannot read image (file of " +
                                       std::to_string(size) + " bytes is too large)");
   }
-  if (size < sizeof(kPngSignature) || std::memcmp(data, kPngSignature, sizeof(kPngSignature)) != 0) {
+  if (size < sizeof(kPngSignature) ||
+      std::memcmp(data, kPngSignature, sizeof(kPngSignature)) != 0) {
     return Result<RgbaImage>::failure(name + ": cannot read image (not a PNG file)");
   }
   const std::string chunkProblem = checkPngChunks(data, size);
@@ -75,10 +76,9 @@ Result<RgbaImage> decodeImage(const uint8_t* data, size_t size, const std::strin
     return Result<RgbaImage>::failure(name + ": cannot read image (" + decodeFailure() + ")");
   }
   if (w < 1 || h < 1 || w > maxDimension || h > maxDimension) {
-    return Result<RgbaImage>::failure(name + ": image is " + std::to_string(w) + "x" +
-                                      std::to_string(h) + ", over the limit of " +
-                                      std::to_string(maxDimension) + "x" +
-                                      std::to_string(maxDimension));
+    return Result<RgbaImage>::failure(
+        name + ": image is " + std::to_string(w) + "x" + std::to_string(h) +
+        ", over the limit of " + std::to_string(maxDimension) + "x" + std::to_string(maxDimension));
   }
   stbi_uc* pixels = stbi_load_from_memory(data, length, &w, &h, &channels, 4);
   if (!pixels) {
@@ -121,8 +121,8 @@ std::string writePng(const RgbaImage& image, const std::string& path) {
 Result<ImageDifference> compareImages(const RgbaImage& a, const RgbaImage& b, int tolerance) {
   if (a.width != b.width || a.height != b.height) {
     return Result<ImageDifference>::failure(
-        "image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-        " vs " + std::to_string(b.width) + "x" + std::to_string(b.height));
+        "image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +
+        std::to_string(b.width) + "x" + std::to_string(b.height));
   }
   ImageDifference d;
   const size_t pixelCount = static_cast<size_t>(a.width) * static_cast<size_t>(a.height);

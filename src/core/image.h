@@ -15,7 +15,8 @@ struct RgbaImage {
   std::vector<uint8_t> pixels;  // row-major, top row first, 4 bytes a pixel
 
   const uint8_t* at(int x, int y) const {
-    return &pixels[(static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * 4];
+    return &pixels[(static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) *
+                   4];
   }
 };
 
@@ -37,9 +38,10 @@ Result<RgbaImage> readPng(const std::string& path);
 std::string writePng(const RgbaImage& image, const std::string& path);
 
 struct ImageDifference {
-  int maxChannel = 0;       // largest absolute difference of any channel, 0..255
-  double meanChannel = 0;   // mean absolute difference over RGB channels, 0..255
-  double fractionOver = 0;  // fraction of pixels with any RGB channel differing by more than the tolerance
+  int maxChannel = 0;      // largest absolute difference of any channel, 0..255
+  double meanChannel = 0;  // mean absolute difference over RGB channels, 0..255
+  double fractionOver =
+      0;  // fraction of pixels with any RGB channel differing by more than the tolerance
 };
 
 // Compares RGB only (alpha is always opaque here). Images must have the same size.

@@ -58,7 +58,8 @@ JsonReader JsonReader::operator[](size_t index) const {
 }
 
 void JsonReader::fail(const std::string& message) const {
-  if (error_->empty()) *error_ = (path_.empty() ? std::string("top level") : path_) + ": " + message;
+  if (error_->empty())
+    *error_ = (path_.empty() ? std::string("top level") : path_) + ": " + message;
 }
 
 void JsonReader::onlyKeys(const std::set<std::string>& allowed) const {
@@ -134,7 +135,8 @@ glm::vec3 JsonReader::vec3(const glm::vec3& fallback) const {
     return fallback;
   }
   glm::vec3 v;
-  for (size_t i = 0; i < 3; ++i) v[static_cast<int>(i)] = static_cast<float>((*this)[i].number(0, -1e9, 1e9));
+  for (size_t i = 0; i < 3; ++i)
+    v[static_cast<int>(i)] = static_cast<float>((*this)[i].number(0, -1e9, 1e9));
   return v;
 }
 

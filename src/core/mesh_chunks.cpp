@@ -8,8 +8,8 @@ namespace {
 
 struct Splitter {
   const MeshData& mesh;
-  std::vector<glm::vec3> centres;   // per triangle
-  std::vector<uint32_t> order;      // triangle ids, rearranged in place
+  std::vector<glm::vec3> centres;  // per triangle
+  std::vector<uint32_t> order;     // triangle ids, rearranged in place
   size_t maxTriangles;
   std::vector<MeshChunk> chunks;
 
@@ -20,11 +20,13 @@ struct Splitter {
       box.max = glm::max(box.max, centres[order[i]]);
     }
     if (end - begin <= maxTriangles) {
-      chunks.push_back(MeshChunk{{static_cast<uint32_t>(begin * 3), static_cast<uint32_t>((end - begin) * 3)}, {}});
+      chunks.push_back(MeshChunk{
+          {static_cast<uint32_t>(begin * 3), static_cast<uint32_t>((end - begin) * 3)}, {}});
       return;
     }
     const glm::vec3 extent = box.max - box.min;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const size_t middle = begin + (end - begin) / 2;
     std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
                      order.begin() + static_cast<std::ptrdiff_t>(middle),
@@ -46,7 +48,8 @@ void chunkMesh(MeshData& mesh, size_t maxTriangles) {
   for (size_t t = 0; t < triangles; ++t) {
     s.centres[t] = (mesh.vertices[mesh.indices[t * 3]].position +
                     mesh.vertices[mesh.indices[t * 3 + 1]].position +
-                    mesh.vertices[mesh.indices[t * 3 + 2]].position) / 3.0f;
+                    mesh.vertices[mesh.indices[t * 3 + 2]].position) /
+                   3.0f;
   }
   s.order.resize(triangles);
   std::iota(s.order.begin(), s.order.end(), 0u);

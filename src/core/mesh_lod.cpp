@@ -37,10 +37,10 @@ std::vector<MeshData> buildLodLevels(const MeshData& base, const LodSettings& se
         static_cast<size_t>(static_cast<float>(previous->indices.size()) * settings.triangleRatio) /
         3 * 3;
     std::vector<uint32_t> indices(previous->indices.size());
-    const size_t count = meshopt_simplify(
-        indices.data(), previous->indices.data(), previous->indices.size(),
-        &previous->vertices[0].position.x, previous->vertices.size(), sizeof(Vertex), target,
-        settings.targetError);
+    const size_t count =
+        meshopt_simplify(indices.data(), previous->indices.data(), previous->indices.size(),
+                         &previous->vertices[0].position.x, previous->vertices.size(),
+                         sizeof(Vertex), target, settings.targetError);
     // Stop when the library could not reduce enough to be worth another draw path.
     if (count == 0 || count > previous->indices.size() * 3 / 4) break;
     indices.resize(count);

@@ -12,10 +12,10 @@
 namespace reflect {
 
 struct LodSettings {
-  int maxLevels = 3;             // including level 0
-  float triangleRatio = 0.25f;   // target triangles of each level relative to the previous
-  float targetError = 0.02f;     // meshoptimizer's relative error bound (fraction of the extent)
-  size_t minTriangles = 256;     // meshes this small get no coarser level
+  int maxLevels = 3;            // including level 0
+  float triangleRatio = 0.25f;  // target triangles of each level relative to the previous
+  float targetError = 0.02f;    // meshoptimizer's relative error bound (fraction of the extent)
+  size_t minTriangles = 256;    // meshes this small get no coarser level
 };
 
 // A mesh made of `base`'s vertices that `indices` use (unused vertices dropped).

@@ -28,7 +28,8 @@ std::vector<glm::vec3> smoothNormalsPerPosition(const tinyobj::attrib_t& attrib,
       glm::vec3 b = readVec3(attrib.vertices, idx[t + 1].vertex_index);
       glm::vec3 c = readVec3(attrib.vertices, idx[t + 2].vertex_index);
       glm::vec3 areaNormal = glm::cross(b - a, c - a);  // length = 2 x area
-      for (size_t k = 0; k < 3; ++k) sums[static_cast<size_t>(idx[t + k].vertex_index)] += areaNormal;
+      for (size_t k = 0; k < 3; ++k)
+        sums[static_cast<size_t>(idx[t + k].vertex_index)] += areaNormal;
     }
   }
   return sums;
@@ -45,7 +46,8 @@ std::string firstNonFiniteAttribute(const std::string& text, const tinyobj::attr
     const std::vector<tinyobj::real_t>& values;
     const char* keyword;
   };
-  for (const Attribute& attribute : {Attribute{attrib.vertices, "v"}, Attribute{attrib.normals, "vn"}}) {
+  for (const Attribute& attribute :
+       {Attribute{attrib.vertices, "v"}, Attribute{attrib.normals, "vn"}}) {
     for (size_t i = 0; i < attribute.values.size(); ++i) {
       if (std::isfinite(attribute.values[i])) continue;
       const size_t line = lineOfAttribute(text, attribute.keyword, i / 3);
@@ -85,7 +87,8 @@ Result<MeshData> parseObj(const std::string& text, const std::string& name,
     for (const tinyobj::index_t& corner : shape.mesh.indices) {
       if (corner.vertex_index < 0 || static_cast<size_t>(corner.vertex_index) >= positionCount ||
           (corner.normal_index >= 0 && static_cast<size_t>(corner.normal_index) >= normalCount)) {
-        return Result<MeshData>::failure(name + ": a face refers to a vertex or normal that does not exist");
+        return Result<MeshData>::failure(
+            name + ": a face refers to a vertex or normal that does not exist");
       }
     }
   }
@@ -110,15 +113,18 @@ Result<MeshData> parseObj(const std::string& text, const std::string& name,
   vertexOfPair.reserve(counts.value().positions * 2);
   for (const tinyobj::shape_t& shape : shapes) {
     for (const tinyobj::index_t& corner : shape.mesh.indices) {
-      const uint64_t key = (static_cast<uint64_t>(static_cast<uint32_t>(corner.vertex_index)) << 32) |
-                           static_cast<uint32_t>(corner.normal_index);
-      auto [it, inserted] = vertexOfPair.try_emplace(key, static_cast<uint32_t>(mesh.vertices.size()));
+      const uint64_t key =
+          (static_cast<uint64_t>(static_cast<uint32_t>(corner.vertex_index)) << 32) |
+          static_cast<uint32_t>(corner.normal_index);
+      auto [it, inserted] =
+          vertexOfPair.try_emplace(key, static_cast<uint32_t>(mesh.vertices.size()));
       if (inserted) {
         Vertex v;
         v.position = readVec3(attrib.vertices, corner.vertex_index);
-        v.normal = corner.normal_index >= 0
-                       ? normalizedOr(readVec3(attrib.normals, corner.normal_index), glm::vec3(0.0f))
-                       : glm::vec3(0.0f);
+        v.normal =
+            corner.normal_index >= 0
+                ? normalizedOr(readVec3(attrib.normals, corner.normal_index), glm::vec3(0.0f))
+                : glm::vec3(0.0f);
         if (v.normal == glm::vec3(0.0f)) v.normal = computedNormal(corner.vertex_index);
         mesh.vertices.push_back(v);
       }
@@ -139,7 +145,8 @@ Result<MeshData> loadObjFile(const std::string& path, const ObjLimits& limits) {
   if (size < 0) return Result<MeshData>::failure(path + ": cannot read file");
   if (static_cast<size_t>(size) > limits.maxBytes) {
     return Result<MeshData>::failure(path + ": file is " + std::to_string(size) +
-                                     " bytes, over the limit of " + std::to_string(limits.maxBytes));
+                                     " bytes, over the limit of " +
+                                     std::to_string(limits.maxBytes));
   }
   std::string text(static_cast<size_t>(size), '\0');
   file.seekg(0);

@@ -12,8 +12,8 @@
 namespace reflect {
 
 struct ObjLimits {
-  size_t maxBytes = 64u << 20;        // the course's largest model is 11.5 MB
-  size_t maxTriangles = 4'000'000u;   // 27x the course's mario
+  size_t maxBytes = 64u << 20;       // the course's largest model is 11.5 MB
+  size_t maxTriangles = 4'000'000u;  // 27x the course's mario
 };
 
 // `name` is used in every message (usually the path or URL the text came from).

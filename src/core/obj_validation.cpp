@@ -51,8 +51,8 @@ std::string checkCorner(std::string_view corner, const ObjCounts& counts) {
   size_t start = 0;
   while (start <= corner.size() && field < 3) {
     size_t slash = corner.find('/', start);
-    std::string_view part =
-        corner.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+    std::string_view part = corner.substr(
+        start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
     // An empty field is only "v//n"'s texture coordinate: a trailing empty one ("1//", "1/2/")
     // makes tinyobjloader read the next corner's number as the index.
     if (!part.empty() || field == 0 || slash == std::string_view::npos) {

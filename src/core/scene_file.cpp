@@ -20,7 +20,8 @@ bool safeRelativePath(const std::string& path) {
     return false;
   }
   for (char c : path) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' || c == '/')) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' ||
+          c == '/')) {
       return false;
     }
   }
@@ -29,7 +30,8 @@ bool safeRelativePath(const std::string& path) {
 
 std::string readPath(const JsonReader& r) {
   const std::string path = r.string("");
-  if (r.ok() && !safeRelativePath(path)) r.fail("expected a relative file path (letters, digits, _ - . /)");
+  if (r.ok() && !safeRelativePath(path))
+    r.fail("expected a relative file path (letters, digits, _ - . /)");
   return path;
 }
 
@@ -104,7 +106,8 @@ SceneObject readObject(const JsonReader& r, std::vector<std::string>& probeGroup
       if (glm::length(axis) == 0.0f) {
         rot["axis"].fail("must not be zero");
       } else {
-        rotate = glm::rotate(glm::mat4(1.0f), glm::radians(static_cast<float>(degrees)), glm::normalize(axis));
+        rotate = glm::rotate(glm::mat4(1.0f), glm::radians(static_cast<float>(degrees)),
+                             glm::normalize(axis));
       }
     }
   }
@@ -154,7 +157,8 @@ void readSkybox(const JsonReader& r, SkyboxSource& skybox) {
 Result<Scene> parseSceneJson(const std::string& text, const std::string& source) {
   if (text.size() > kMaxSceneFileBytes) {
     return Result<Scene>::failure(source + ": " + std::to_string(text.size()) +
-                                  " bytes, over the limit of " + std::to_string(kMaxSceneFileBytes));
+                                  " bytes, over the limit of " +
+                                  std::to_string(kMaxSceneFileBytes));
   }
   Result<nlohmann::json> json = parseJson(text, source);
   if (!json) return Result<Scene>::failure(json.error());
@@ -163,8 +167,8 @@ Result<Scene> parseSceneJson(const std::string& text, const std::string& source)
   Scene scene;
   scene.objects.clear();
   if (root.requireObject()) {
-    root.onlyKeys({"title", "description", "camera", "light", "background", "skybox", "capture",
-                   "objects"});
+    root.onlyKeys(
+        {"title", "description", "camera", "light", "background", "skybox", "capture", "objects"});
     scene.title = root["title"].string("untitled scene");
     root["description"].string("");
     if (root.has("camera")) {
@@ -175,7 +179,8 @@ Result<Scene> parseSceneJson(const std::string& text, const std::string& source)
         scene.camera.fovYDeg = static_cast<float>(c["fovY"].number(70, 1, 179));
         scene.camera.near = static_cast<float>(c["near"].number(1, 1e-4, 1e5));
         scene.camera.far = static_cast<float>(c["far"].number(100, 1e-3, 1e7));
-        if (error.empty() && scene.camera.far <= scene.camera.near) c["far"].fail("must be greater than near");
+        if (error.empty() && scene.camera.far <= scene.camera.near)
+          c["far"].fail("must be greater than near");
       }
     }
     if (root.has("light")) {

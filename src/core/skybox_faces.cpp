@@ -19,14 +19,16 @@ std::array<std::string, 6> skyboxSuffixPaths(const std::string& path) {
 Result<CubeFaces> facesFromImages(std::vector<RgbaImage> images,
                                   const std::array<std::string, 6>& names) {
   if (images.size() != 6) {
-    return Result<CubeFaces>::failure("a skybox needs 6 images, got " + std::to_string(images.size()));
+    return Result<CubeFaces>::failure("a skybox needs 6 images, got " +
+                                      std::to_string(images.size()));
   }
   CubeFaces faces;
   for (size_t i = 0; i < 6; ++i) {
     const RgbaImage& image = images[i];
     const std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
     if (image.width < 1 || image.width != image.height) {
-      return Result<CubeFaces>::failure(names[i] + ": a cube face must be square, this image is " + size);
+      return Result<CubeFaces>::failure(names[i] + ": a cube face must be square, this image is " +
+                                        size);
     }
     if (image.width != images[0].width) {
       return Result<CubeFaces>::failure(names[i] + ": is " + size + " but " + names[0] + " is " +

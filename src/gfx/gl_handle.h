@@ -49,13 +49,27 @@ class GlHandle {
 };
 
 namespace gl_delete {
-inline void buffer(GLuint id) { glDeleteBuffers(1, &id); }
-inline void vertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
-inline void texture(GLuint id) { glDeleteTextures(1, &id); }
-inline void framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
-inline void renderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
-inline void program(GLuint id) { glDeleteProgram(id); }
-inline void shader(GLuint id) { glDeleteShader(id); }
+inline void buffer(GLuint id) {
+  glDeleteBuffers(1, &id);
+}
+inline void vertexArray(GLuint id) {
+  glDeleteVertexArrays(1, &id);
+}
+inline void texture(GLuint id) {
+  glDeleteTextures(1, &id);
+}
+inline void framebuffer(GLuint id) {
+  glDeleteFramebuffers(1, &id);
+}
+inline void renderbuffer(GLuint id) {
+  glDeleteRenderbuffers(1, &id);
+}
+inline void program(GLuint id) {
+  glDeleteProgram(id);
+}
+inline void shader(GLuint id) {
+  glDeleteShader(id);
+}
 }  // namespace gl_delete
 
 using BufferHandle = GlHandle<gl_delete::buffer>;
@@ -66,10 +80,30 @@ using RenderbufferHandle = GlHandle<gl_delete::renderbuffer>;
 using ProgramHandle = GlHandle<gl_delete::program>;
 using ShaderHandle = GlHandle<gl_delete::shader>;
 
-inline GLuint genBuffer() { GLuint id = 0; glGenBuffers(1, &id); return id; }
-inline GLuint genVertexArray() { GLuint id = 0; glGenVertexArrays(1, &id); return id; }
-inline GLuint genTexture() { GLuint id = 0; glGenTextures(1, &id); return id; }
-inline GLuint genFramebuffer() { GLuint id = 0; glGenFramebuffers(1, &id); return id; }
-inline GLuint genRenderbuffer() { GLuint id = 0; glGenRenderbuffers(1, &id); return id; }
+inline GLuint genBuffer() {
+  GLuint id = 0;
+  glGenBuffers(1, &id);
+  return id;
+}
+inline GLuint genVertexArray() {
+  GLuint id = 0;
+  glGenVertexArrays(1, &id);
+  return id;
+}
+inline GLuint genTexture() {
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  return id;
+}
+inline GLuint genFramebuffer() {
+  GLuint id = 0;
+  glGenFramebuffers(1, &id);
+  return id;
+}
+inline GLuint genRenderbuffer() {
+  GLuint id = 0;
+  glGenRenderbuffers(1, &id);
+  return id;
+}
 
 }  // namespace reflect

@@ -19,8 +19,8 @@ MeshBuffer::MeshBuffer(const MeshData& mesh)
                mesh.vertices.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-               static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),
-               mesh.indices.data(), GL_STATIC_DRAW);
+               static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
+               GL_STATIC_DRAW);
   glEnableVertexAttribArray(kAttribPosition);
   glVertexAttribPointer(kAttribPosition, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                         reinterpret_cast<const void*>(offsetof(Vertex, position)));
@@ -40,8 +40,9 @@ void MeshBuffer::draw(const std::vector<IndexRange>& ranges) const {
   if (ranges.empty()) return draw();
   glBindVertexArray(vao_.id());
   for (const IndexRange& r : ranges) {
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(r.count), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(static_cast<uintptr_t>(r.first) * sizeof(uint32_t)));
+    glDrawElements(
+        GL_TRIANGLES, static_cast<GLsizei>(r.count), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(static_cast<uintptr_t>(r.first) * sizeof(uint32_t)));
   }
 }
 

@@ -26,8 +26,9 @@ Result<OffscreenTarget> OffscreenTarget::create(int width, int height, bool floa
   glRenderbufferStorage(GL_RENDERBUFFER, floatColour ? GL_RGBA32F : GL_RGBA8, width, height);
   t.depth_ = RenderbufferHandle(genRenderbuffer());
   glBindRenderbuffer(GL_RENDERBUFFER, t.depth_.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, depthBits <= 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24,
-                        width, height);
+  glRenderbufferStorage(GL_RENDERBUFFER,
+                        depthBits <= 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24, width,
+                        height);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
   t.framebuffer_ = FramebufferHandle(genFramebuffer());
   glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer_.id());
@@ -62,9 +63,11 @@ std::vector<glm::vec3> OffscreenTarget::readFloats() const {
   std::vector<glm::vec3> out(static_cast<size_t>(width_) * static_cast<size_t>(height_));
   for (int y = 0; y < height_; ++y) {
     for (int x = 0; x < width_; ++x) {
-      const size_t from = (static_cast<size_t>(height_ - 1 - y) * static_cast<size_t>(width_) + static_cast<size_t>(x)) * 4;
-      out[static_cast<size_t>(y) * static_cast<size_t>(width_) + static_cast<size_t>(x)] =
-          {rgba[from], rgba[from + 1], rgba[from + 2]};
+      const size_t from = (static_cast<size_t>(height_ - 1 - y) * static_cast<size_t>(width_) +
+                           static_cast<size_t>(x)) *
+                          4;
+      out[static_cast<size_t>(y) * static_cast<size_t>(width_) + static_cast<size_t>(x)] = {
+          rgba[from], rgba[from + 1], rgba[from + 2]};
     }
   }
   return out;

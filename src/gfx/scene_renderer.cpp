@@ -39,22 +39,38 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   if (!cubeTextured) return Result<SceneRenderer>::failure(cubeTextured.error());
 
   const ShaderProgram& p = phong.value();
-  PhongProgram phongProgram{ShaderProgram{},        p.uniform("u_viewProjection"),
-                            p.uniform("u_model"),   p.uniform("u_normalMatrix"),
-                            p.uniform("u_colour"),  p.uniform("u_lightPosition"),
-                            p.uniform("u_viewPosition"), p.uniform("u_ambient"),
-                            p.uniform("u_diffuse"), p.uniform("u_specular"),
-                            p.uniform("u_shininess"), p.uniform("u_storeDistance"),
-                            p.uniform("u_probeCentre"), p.uniform("u_distanceUnit")};
+  PhongProgram phongProgram{ShaderProgram{},
+                            p.uniform("u_viewProjection"),
+                            p.uniform("u_model"),
+                            p.uniform("u_normalMatrix"),
+                            p.uniform("u_colour"),
+                            p.uniform("u_lightPosition"),
+                            p.uniform("u_viewPosition"),
+                            p.uniform("u_ambient"),
+                            p.uniform("u_diffuse"),
+                            p.uniform("u_specular"),
+                            p.uniform("u_shininess"),
+                            p.uniform("u_storeDistance"),
+                            p.uniform("u_probeCentre"),
+                            p.uniform("u_distanceUnit")};
   phongProgram.program = phong.take();
   const ShaderProgram& e = environment.value();
-  EnvironmentProgram environmentProgram{
-      ShaderProgram{},        e.uniform("u_viewProjection"), e.uniform("u_model"),
-      e.uniform("u_normalMatrix"), e.uniform("u_colour"), e.uniform("u_viewPosition"),
-      e.uniform("u_reflectionWeight"), e.uniform("u_baseWeight"), e.uniform("u_refracts"),
-      e.uniform("u_eta"),     e.uniform("u_fresnelF0"), e.uniform("u_fresnel"),
-      e.uniform("u_environment"), e.optionalUniform("u_probeCentre"),
-      e.optionalUniform("u_distanceUnit"), e.uniform("u_outputDirection")};
+  EnvironmentProgram environmentProgram{ShaderProgram{},
+                                        e.uniform("u_viewProjection"),
+                                        e.uniform("u_model"),
+                                        e.uniform("u_normalMatrix"),
+                                        e.uniform("u_colour"),
+                                        e.uniform("u_viewPosition"),
+                                        e.uniform("u_reflectionWeight"),
+                                        e.uniform("u_baseWeight"),
+                                        e.uniform("u_refracts"),
+                                        e.uniform("u_eta"),
+                                        e.uniform("u_fresnelF0"),
+                                        e.uniform("u_fresnel"),
+                                        e.uniform("u_environment"),
+                                        e.optionalUniform("u_probeCentre"),
+                                        e.optionalUniform("u_distanceUnit"),
+                                        e.uniform("u_outputDirection")};
   environmentProgram.program = environment.take();
   const ShaderProgram& c = cubeTextured.value();
   CubeTexturedProgram cubeTexturedProgram{ShaderProgram{}, c.uniform("u_viewProjection"),
@@ -188,7 +204,8 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds,
                                     const glm::vec3* distanceCentre, bool outputDirections) {
   PassCounts counts;
   // One program switch per material kind present: Phong first, then the environment users.
-  for (ProgramKind kind : {ProgramKind::Phong, ProgramKind::Environment, ProgramKind::CubeTextured}) {
+  for (ProgramKind kind :
+       {ProgramKind::Phong, ProgramKind::Environment, ProgramKind::CubeTextured}) {
     bool inUse = false;
     for (const DrawItem& d : draws) {
       const Material m = scene.objects[static_cast<size_t>(d.object)].material;
@@ -197,8 +214,9 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds,
                                                                : ProgramKind::Environment;
       if (wanted != kind) continue;
       if (!inUse) {
-        use(kind, scene, viewProj, kind == ProgramKind::Phong ? viewPosition : environmentViewPosition,
-            distanceCentre, outputDirections);
+        use(kind, scene, viewProj,
+            kind == ProgramKind::Phong ? viewPosition : environmentViewPosition, distanceCentre,
+            outputDirections);
       }
       inUse = true;
       counts += drawObject(scene, d, seconds);
@@ -218,8 +236,8 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
     for (int member : probe.members) ownerOf_[member] = probe.reflector;
     centres_[probe.reflector] = probe.centre;
   }
-  const CaptureFormat format{scene.capture.faceSize, accuracy_.usesHalfFloat(),
-                             accuracy_.depthBits, accuracy_.mipmaps};
+  const CaptureFormat format{scene.capture.faceSize, accuracy_.usesHalfFloat(), accuracy_.depthBits,
+                             accuracy_.mipmaps};
   const bool storeDistance = accuracy_.distanceIterations > 0;
   // d / (d + 1) at the far plane, d in units of the near plane.
   const float farAlpha = scene.capture.far / (scene.capture.far + scene.capture.near);

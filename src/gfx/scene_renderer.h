@@ -84,8 +84,8 @@ class SceneRenderer {
   };
   enum class ProgramKind { Phong, Environment, CubeTextured };
 
-  SceneRenderer(PhongProgram phong, EnvironmentProgram environment, CubeTexturedProgram cubeTextured,
-                const AccuracySettings& accuracy);
+  SceneRenderer(PhongProgram phong, EnvironmentProgram environment,
+                CubeTexturedProgram cubeTextured, const AccuracySettings& accuracy);
   // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
   // `distanceCentre`: the probe centre whose distances a capture stores (null in the main pass).
   PassCounts drawItems(const Scene& scene, double seconds, const std::vector<DrawItem>& draws,
@@ -103,8 +103,8 @@ class SceneRenderer {
   CubeTexturedProgram cubeTextured_;
   std::unique_ptr<SkyboxPass> skybox_;
   std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
-  std::map<int, int> ownerOf_;                // probed object -> owner of the probe it samples
-  std::map<int, glm::vec3> centres_;          // owner -> where its probe captured from
+  std::map<int, int> ownerOf_;               // probed object -> owner of the probe it samples
+  std::map<int, glm::vec3> centres_;         // owner -> where its probe captured from
   AccuracySettings accuracy_;
   std::map<std::string, std::vector<MeshBuffer>> meshes_;  // levels of detail by mesh name
   ProgramKind current_ = ProgramKind::Phong;

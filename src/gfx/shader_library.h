@@ -1,5 +1,5 @@
-// The GLSL files of shaders/, embedded into the binary at build time (see cmake/EmbedShaders.cmake),
-// so neither the page nor the CLI reads shader paths at run time.
+// The GLSL files of shaders/, embedded into the binary at build time (see
+// cmake/EmbedShaders.cmake), so neither the page nor the CLI reads shader paths at run time.
 #pragma once
 
 #include <string_view>

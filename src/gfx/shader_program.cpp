@@ -27,10 +27,11 @@ std::string infoLog(GLuint object, bool isProgram) {
   return log.data();
 }
 
-Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* body,
-                             bool mediump, const std::string& defines) {
+Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* body, bool mediump,
+                             const std::string& defines) {
   const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
-  if (!body) return Result<ShaderHandle>::failure("shader " + file + ": not embedded in this build");
+  if (!body)
+    return Result<ShaderHandle>::failure("shader " + file + ": not embedded in this build");
   ShaderHandle shader(glCreateShader(stage));
   // Vertex shaders stay highp (positions); fragments may trade precision for speed.
   const char* sources[3] = {stage == GL_FRAGMENT_SHADER && mediump ? kMediump : kHighp,

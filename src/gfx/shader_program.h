@@ -31,7 +31,9 @@ class ShaderProgram {
   // -1 (and a message on stderr) for a uniform the program does not have.
   GLint uniform(const char* name) const;
   // -1 without a message: for uniforms a shader may legitimately optimise away.
-  GLint optionalUniform(const char* name) const { return glGetUniformLocation(program_.id(), name); }
+  GLint optionalUniform(const char* name) const {
+    return glGetUniformLocation(program_.id(), name);
+  }
   void abandon() { program_.abandon(); }
 
  private:

@@ -7,12 +7,12 @@ namespace {
 
 // A unit cube as 12 triangles (the inside is what is seen; culling is off anyway).
 constexpr float kCube[] = {
-    -1, -1, -1, 1, -1, -1, 1, 1, -1, -1, -1, -1, 1, 1, -1, -1, 1, -1,  // -Z
-    -1, -1, 1,  1, 1, 1,   1, -1, 1, -1, -1, 1,  -1, 1, 1, 1, 1, 1,    // +Z
-    -1, -1, -1, -1, 1, -1, -1, 1, 1, -1, -1, -1, -1, 1, 1, -1, -1, 1,  // -X
-    1,  -1, -1, 1, 1, 1,   1, 1, -1, 1, -1, -1,  1, -1, 1, 1, 1, 1,    // +X
-    -1, -1, -1, 1, -1, 1,  1, -1, -1, -1, -1, -1, -1, -1, 1, 1, -1, 1, // -Y
-    -1, 1, -1,  1, 1, -1,  1, 1, 1,   -1, 1, -1, 1, 1, 1,   -1, 1, 1,  // +Y
+    -1, -1, -1, 1,  -1, -1, 1,  1,  -1, -1, -1, -1, 1,  1,  -1, -1, 1,  -1,  // -Z
+    -1, -1, 1,  1,  1,  1,  1,  -1, 1,  -1, -1, 1,  -1, 1,  1,  1,  1,  1,   // +Z
+    -1, -1, -1, -1, 1,  -1, -1, 1,  1,  -1, -1, -1, -1, 1,  1,  -1, -1, 1,   // -X
+    1,  -1, -1, 1,  1,  1,  1,  1,  -1, 1,  -1, -1, 1,  -1, 1,  1,  1,  1,   // +X
+    -1, -1, -1, 1,  -1, 1,  1,  -1, -1, -1, -1, -1, -1, -1, 1,  1,  -1, 1,   // -Y
+    -1, 1,  -1, 1,  1,  -1, 1,  1,  1,  -1, 1,  -1, 1,  1,  1,  -1, 1,  1,   // +Y
 };
 
 }  // namespace
@@ -47,7 +47,8 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
   glEnableVertexAttribArray(kAttribPosition);
   glVertexAttribPointer(kAttribPosition, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
   glBindVertexArray(0);
-  if (!checkGlError("create skybox")) return Result<SkyboxPass>::failure("GL error creating the skybox");
+  if (!checkGlError("create skybox"))
+    return Result<SkyboxPass>::failure("GL error creating the skybox");
   return pass;
 }
 

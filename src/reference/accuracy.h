@@ -41,7 +41,8 @@ struct AccuracyReport {
 std::vector<uint8_t> silhouetteMask(const std::vector<int>& objectIds, int width, int height);
 
 // Compares a raster frame with the reference of the same view (sizes must match).
-Result<AccuracyReport> compareWithReference(const RgbaImage& raster, const ReferenceFrame& reference);
+Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
+                                            const ReferenceFrame& reference);
 
 // Renders the demo's frame at scene time `t` (renderFrameAt: capture with the demo's current
 // planner settings and face size, then the main pass) and the reference of the same moment and

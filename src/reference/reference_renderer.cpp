@@ -85,9 +85,9 @@ class EmbreeWorld {
       RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
       // New (Embree-owned, padded) buffers rather than shared ones: Embree may read past the
       // last vertex with 16-byte loads.
-      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(float) * 3,
-          m.positions.size()));
+      auto* vertices = static_cast<float*>(
+          rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                  sizeof(float) * 3, m.positions.size()));
       auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
           geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(uint32_t) * 3, triangles));
       if (vertices && indices) {
@@ -96,8 +96,8 @@ class EmbreeWorld {
           vertices[v * 3 + 1] = m.positions[v].y;
           vertices[v * 3 + 2] = m.positions[v].z;
         }
-        std::copy(m.indices->begin(), m.indices->begin() + static_cast<std::ptrdiff_t>(triangles * 3),
-                  indices);
+        std::copy(m.indices->begin(),
+                  m.indices->begin() + static_cast<std::ptrdiff_t>(triangles * 3), indices);
       }
       rtcCommitGeometry(geometry);
       rtcAttachGeometryByID(scene, geometry, static_cast<unsigned>(i));
@@ -150,7 +150,8 @@ Hit trace(RTCScene scene, const std::vector<WorldMesh>& meshes, const glm::vec3&
   const float v = rh.hit.v;
   const float w = 1.0f - u - v;
   hit.position = w * m.positions[tri[0]] + u * m.positions[tri[1]] + v * m.positions[tri[2]];
-  hit.normal = glm::normalize(w * m.normals[tri[0]] + u * m.normals[tri[1]] + v * m.normals[tri[2]]);
+  hit.normal =
+      glm::normalize(w * m.normals[tri[0]] + u * m.normals[tri[1]] + v * m.normals[tri[2]]);
   return hit;
 }
 
@@ -171,7 +172,9 @@ glm::vec3 phong(const Scene& scene, const glm::vec3& colour, const Hit& hit,
   return result;
 }
 
-glm::vec3 saturate(const glm::vec3& c) { return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f)); }
+glm::vec3 saturate(const glm::vec3& c) {
+  return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
+}
 
 struct Tracer {
   const Scene& scene;
@@ -196,7 +199,8 @@ struct Tracer {
     return saturate(phong(scene, object.colour, hit, eye));
   }
 
-  // shaders/environment.frag (mirror) with the exact environment. `toViewer` is V (unit, surface to viewer).
+  // shaders/environment.frag (mirror) with the exact environment. `toViewer` is V (unit, surface to
+  // viewer).
   glm::vec3 mirror(const Hit& hit, const glm::vec3& toViewer, int depth, glm::vec3* lookup,
                    Hit* envHit) const {
     const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
@@ -279,7 +283,8 @@ Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& mes
           "): only Phong objects and live-probe mirrors are supported");
     }
     const MeshData* mesh = meshes(object.mesh);
-    if (!mesh) return Result<ReferenceFrame>::failure("reference: mesh " + object.mesh + " is not loaded");
+    if (!mesh)
+      return Result<ReferenceFrame>::failure("reference: mesh " + object.mesh + " is not loaded");
     const glm::mat4 model = scene.modelMatrix(object, seconds);
     const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(model));
     WorldMesh& w = world[i];
@@ -348,9 +353,10 @@ Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& mes
           Hit envHit;
           colour = tracer.mirror(hit, toViewer, 0, &r, &envHit);
           lookup[p] = r;
-          truth[p] = envHit.object >= 0
-                         ? glm::normalize(envHit.position - centres[static_cast<size_t>(hit.object)])
-                         : r;
+          truth[p] =
+              envHit.object >= 0
+                  ? glm::normalize(envHit.position - centres[static_cast<size_t>(hit.object)])
+                  : r;
         } else {
           colour = phong(scene, object.colour, hit, camera.eye());
         }

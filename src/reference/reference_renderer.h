@@ -59,9 +59,9 @@ struct ReferenceFrame {
 // The scene's mesh `name` (level 0, object space), or nullptr when it is not loaded.
 using MeshLookup = std::function<const MeshData*(const std::string&)>;
 
-// Renders `scene` at scene time `seconds` (Scene::modelMatrix) as seen by `camera` into a width x height frame. Fails when a
-// mesh is missing, the size is not positive or Embree reports an error. `threads` <= 0 uses
-// std::thread::hardware_concurrency().
+// Renders `scene` at scene time `seconds` (Scene::modelMatrix) as seen by `camera` into a width x
+// height frame. Fails when a mesh is missing, the size is not positive or Embree reports an error.
+// `threads` <= 0 uses std::thread::hardware_concurrency().
 Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& meshes,
                                        const LookCamera& camera, double seconds, int width,
                                        int height, int threads = 0);

@@ -15,19 +15,21 @@ std::vector<SweepSetting> sweepSettings() {
   course.captureAtOrigin = true;
   course.depthBits = 16;
   course.distanceIterations = 0;
-  const AccuracySettings corrected;  // the shipped default (distance-corrected, RGBA8)
+  const AccuracySettings corrected;     // the shipped default (distance-corrected, RGBA8)
   AccuracySettings centre = corrected;  // plain lookup from the reflector's centre
   centre.distanceIterations = 0;
 
-  std::vector<SweepSetting> s = {{"original", course, 256}, {"default", corrected, 256},
-                                 {"centre", centre, 256}};
-  for (int size : {32, 64, 128, 512, 1024}) s.push_back({"size-" + std::to_string(size), centre, size});
+  std::vector<SweepSetting> s = {
+      {"original", course, 256}, {"default", corrected, 256}, {"centre", centre, 256}};
+  for (int size : {32, 64, 128, 512, 1024})
+    s.push_back({"size-" + std::to_string(size), centre, size});
   for (int k : {1, 4}) {  // k = 2 is the default row
     AccuracySettings a = centre;
     a.distanceIterations = k;
     s.push_back({"distance-" + std::to_string(k), a, 256});
   }
-  for (int size : {64, 128, 512}) s.push_back({"distance-2-size-" + std::to_string(size), corrected, size});
+  for (int size : {64, 128, 512})
+    s.push_back({"distance-2-size-" + std::to_string(size), corrected, size});
   AccuracySettings a = centre;
   a.depthBits = 16;
   s.push_back({"depth-16", a, 256});
@@ -99,7 +101,8 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     }
     const double n = static_cast<double>(o.times.size());
     auto psnr = [](double meanSquare) {
-      return meanSquare <= 0 ? 99.0 : std::min(99.0, 20.0 * std::log10(255.0 / std::sqrt(meanSquare)));
+      return meanSquare <= 0 ? 99.0
+                             : std::min(99.0, 20.0 * std::log10(255.0 / std::sqrt(meanSquare)));
     };
     row.rmse = std::sqrt(mse / n);
     row.psnrDb = psnr(mse / n);
@@ -126,11 +129,12 @@ std::string sweepTable(const std::vector<SweepRow>& rows) {
       "|---|---|---|---|---|---|---|---|---|---|---|\n";
   char line[512];
   for (const SweepRow& r : rows) {
-    std::snprintf(line, sizeof line,
-                  "| %s | %s | %d | %.2f (%.2f-%.2f) | %.2f | %.2f | %.1f | %.0f | %.3f | %.1f | %s |\n",
-                  r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
-                  r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95, r.maxError,
-                  r.meanAngularErrorDeg, r.offReflectorPsnrDb, r.pareto ? "yes" : "");
+    std::snprintf(
+        line, sizeof line,
+        "| %s | %s | %d | %.2f (%.2f-%.2f) | %.2f | %.2f | %.1f | %.0f | %.3f | %.1f | %s |\n",
+        r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
+        r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95, r.maxError, r.meanAngularErrorDeg,
+        r.offReflectorPsnrDb, r.pareto ? "yes" : "");
     out += line;
   }
   return out;
@@ -142,7 +146,8 @@ std::string sweepCsv(const std::vector<SweepRow>& rows) {
       "off_reflector_psnr_db,pareto\n";
   char line[512];
   for (const SweepRow& r : rows) {
-    std::snprintf(line, sizeof line, "%s,\"%s\",%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.0f,%.4f,%.3f,%d\n",
+    std::snprintf(line, sizeof line,
+                  "%s,\"%s\",%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.0f,%.4f,%.3f,%d\n",
                   r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
                   r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95, r.maxError,
                   r.meanAngularErrorDeg, r.offReflectorPsnrDb, r.pareto ? 1 : 0);
@@ -164,26 +169,32 @@ std::string sweepSvg(const std::vector<SweepRow>& rows) {
   maxMs *= 1.05;
   minDb = std::floor(minDb - 1);
   maxDb = std::ceil(maxDb + 1);
-  auto x = [&](double ms) { return left + (ms - minMs) / (maxMs - minMs) * (width - left - right); };
-  auto y = [&](double db) { return height - bottom - (db - minDb) / (maxDb - minDb) * (height - top - bottom); };
+  auto x = [&](double ms) {
+    return left + (ms - minMs) / (maxMs - minMs) * (width - left - right);
+  };
+  auto y = [&](double db) {
+    return height - bottom - (db - minDb) / (maxDb - minDb) * (height - top - bottom);
+  };
   std::string svg;
   char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
-                "font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%%\" height=\"100%%\" "
-                "fill=\"white\"/>\n",
-                width, height);
+  std::snprintf(
+      buf, sizeof buf,
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+      "font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%%\" height=\"100%%\" "
+      "fill=\"white\"/>\n",
+      width, height);
   svg += buf;
-  std::snprintf(buf, sizeof buf,
-                "<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"black\"/>\n"
-                "<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"black\"/>\n"
-                "<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">frame ms (median, every-frame "
-                "capture, lower is faster)</text>\n"
-                "<text x=\"16\" y=\"%.0f\" transform=\"rotate(-90 16 %.0f)\" text-anchor=\"middle\">"
-                "reflector PSNR vs ray-traced reference, dB (higher is better)</text>\n",
-                left, height - bottom, width - right, height - bottom, left, top, left,
-                height - bottom, (left + width - right) / 2, height - 20, (top + height - bottom) / 2,
-                (top + height - bottom) / 2);
+  std::snprintf(
+      buf, sizeof buf,
+      "<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"black\"/>\n"
+      "<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"black\"/>\n"
+      "<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">frame ms (median, every-frame "
+      "capture, lower is faster)</text>\n"
+      "<text x=\"16\" y=\"%.0f\" transform=\"rotate(-90 16 %.0f)\" text-anchor=\"middle\">"
+      "reflector PSNR vs ray-traced reference, dB (higher is better)</text>\n",
+      left, height - bottom, width - right, height - bottom, left, top, left, height - bottom,
+      (left + width - right) / 2, height - 20, (top + height - bottom) / 2,
+      (top + height - bottom) / 2);
   svg += buf;
   for (int i = 0; i <= 5; ++i) {
     const double ms = minMs + (maxMs - minMs) * i / 5.0, db = minDb + (maxDb - minDb) * i / 5.0;
@@ -209,9 +220,9 @@ std::string sweepSvg(const std::vector<SweepRow>& rows) {
     std::snprintf(buf, sizeof buf,
                   "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%d\" fill=\"%s\"/>\n"
                   "<text x=\"%.1f\" y=\"%.1f\"%s>%s</text>\n",
-                  x(r.medianMs), y(r.psnrDb), special ? 5 : 3,
-                  r.pareto ? "#d33" : "#557", x(r.medianMs) + 6, y(r.psnrDb) - 4,
-                  special ? " font-weight=\"bold\"" : "", r.setting.name.c_str());
+                  x(r.medianMs), y(r.psnrDb), special ? 5 : 3, r.pareto ? "#d33" : "#557",
+                  x(r.medianMs) + 6, y(r.psnrDb) - 4, special ? " font-weight=\"bold\"" : "",
+                  r.setting.name.c_str());
     svg += buf;
   }
   std::snprintf(buf, sizeof buf,

@@ -36,7 +36,7 @@ struct SweepRow {
 struct SweepOptions {
   int width = 512;
   int height = 512;
-  int frames = 30;                  // timed frames per setting (every-frame policy)
+  int frames = 30;                              // timed frames per setting (every-frame policy)
   std::vector<double> times = {0.0, 2.0, 4.0};  // error measured at these scene times
 };
 

@@ -42,13 +42,23 @@ void expectSaneView(const LookCamera& camera, const std::string& what) {
   // The camera looks down its -Z: the view's third row is -d.
   const glm::vec3 back(view[0][2], view[1][2], view[2][2]);
   EXPECT_LT(glm::length(back + d), 1e-5f) << what;
-  EXPECT_LE(std::fabs(glm::dot(d, glm::vec3(0, 1, 0))), std::cos(glm::radians(1.0f)) + 1e-6f) << what;
+  EXPECT_LE(std::fabs(glm::dot(d, glm::vec3(0, 1, 0))), std::cos(glm::radians(1.0f)) + 1e-6f)
+      << what;
   EXPECT_TRUE(allFinite(camera.projection(16.0f / 9.0f))) << what;
 }
 
 TEST(CameraExtremes, PitchAtAndBeyondNinetyDegreesIsClampedTo89) {
-  const float pitches[] = {89.0f, 90.0f, -90.0f, 90.0001f, 135.0f, 180.0f, -270.0f, 1e6f, -1e30f,
-                           std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()};
+  const float pitches[] = {89.0f,
+                           90.0f,
+                           -90.0f,
+                           90.0001f,
+                           135.0f,
+                           180.0f,
+                           -270.0f,
+                           1e6f,
+                           -1e30f,
+                           std::numeric_limits<float>::max(),
+                           -std::numeric_limits<float>::max()};
   for (float yaw : {0.0f, 90.0f, -135.0f, 1e7f}) {
     for (float pitch : pitches) {
       LookCamera camera;
@@ -152,7 +162,8 @@ TEST(CameraExtremes, ViewDirectionHoldsFarFromTheOrigin) {
     const glm::mat4 view = camera.view();
     ASSERT_TRUE(allFinite(view)) << "eye at " << distance;
     const glm::vec3 forward = -glm::vec3(view[0][2], view[1][2], view[2][2]);
-    const float angle = std::acos(std::min(1.0f, glm::dot(glm::normalize(forward), camera.viewDirection())));
+    const float angle =
+        std::acos(std::min(1.0f, glm::dot(glm::normalize(forward), camera.viewDirection())));
     std::printf("eye at %.0e: view axis off the camera direction by %.3g degrees\n",
                 static_cast<double>(distance), static_cast<double>(glm::degrees(angle)));
     EXPECT_LT(glm::degrees(angle), 0.01f) << "eye at " << distance;

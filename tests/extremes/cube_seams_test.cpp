@@ -18,19 +18,22 @@ namespace reflect {
 namespace {
 
 // Face k's wall colour (GL order +X, -X, +Y, -Y, +Z, -Z): 0/1 channels, exact in bytes.
-const glm::vec3 kWallColours[6] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}};
+const glm::vec3 kWallColours[6] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                   {1, 1, 0}, {1, 0, 1}, {0, 1, 1}};
 
-int faceOf(int axis, float sign) { return axis * 2 + (sign > 0 ? 0 : 1); }
+int faceOf(int axis, float sign) {
+  return axis * 2 + (sign > 0 ? 0 : 1);
+}
 
 // The mirror sphere placed so that its probe (its bounds' centre) is exactly the origin.
 SceneObject mirrorAtOrigin() {
   auto sphere = loadObjFile(builtInModelDirectory() + "/sphere.obj");
   EXPECT_TRUE(sphere) << sphere.error();
   const glm::vec3 centre = sphere ? sphere.value().bounds.centre() : glm::vec3(0.0f);
-  return extremes::mirrorObject(
-      "sphere.obj",
-      glm::translate(glm::mat4(1.0f), -0.5f * centre) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)),
-      {1, 1, 1});
+  return extremes::mirrorObject("sphere.obj",
+                                glm::translate(glm::mat4(1.0f), -0.5f * centre) *
+                                    glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)),
+                                {1, 1, 1});
 }
 
 // quad.obj is the 2 x 2 square y = 0. Each wall is that square scaled to 10.1 x 10.1 and turned
@@ -44,7 +47,8 @@ glm::mat4 wallPlacement(int face) {
   if (axis == 2) turn = glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0));
   glm::vec3 offset(0.0f);
   offset[axis] = 5.0f * sign;
-  return glm::translate(glm::mat4(1.0f), offset) * turn * glm::scale(glm::mat4(1.0f), glm::vec3(5.05f, 1.0f, 5.05f));
+  return glm::translate(glm::mat4(1.0f), offset) * turn *
+         glm::scale(glm::mat4(1.0f), glm::vec3(5.05f, 1.0f, 5.05f));
 }
 
 // Smallest distance (in byte levels) from `c` to a convex combination of two or three colours,
@@ -83,9 +87,11 @@ std::vector<Lookup> edgeAndCornerLookups() {
             d[a] = sa * (1.0f + lean);
             d[b] = sb;
             d[3 - a - b] = 0.3f * lean * 1e3f;  // off the edge's midpoint too
-            lookups.push_back({d, {faceOf(a, sa), faceOf(b, sb)},
-                               std::string(sa > 0 ? "+" : "-") + axisName[a] + (sb > 0 ? "+" : "-") +
-                                   axisName[b] + " lean " + std::to_string(lean)});
+            lookups.push_back({d,
+                               {faceOf(a, sa), faceOf(b, sb)},
+                               std::string(sa > 0 ? "+" : "-") + axisName[a] +
+                                   (sb > 0 ? "+" : "-") + axisName[b] + " lean " +
+                                   std::to_string(lean)});
           }
         }
       }
@@ -95,9 +101,10 @@ std::vector<Lookup> edgeAndCornerLookups() {
   for (float sx : {1.0f, -1.0f}) {
     for (float sy : {1.0f, -1.0f}) {
       for (float sz : {1.0f, -1.0f}) {
-        lookups.push_back({{sx, sy, sz}, {faceOf(0, sx), faceOf(1, sy), faceOf(2, sz)},
-                           "corner " + std::to_string(int(sx)) + "," + std::to_string(int(sy)) + "," +
-                               std::to_string(int(sz))});
+        lookups.push_back({{sx, sy, sz},
+                           {faceOf(0, sx), faceOf(1, sy), faceOf(2, sz)},
+                           "corner " + std::to_string(int(sx)) + "," + std::to_string(int(sy)) +
+                               "," + std::to_string(int(sz))});
       }
     }
   }
@@ -110,7 +117,8 @@ TEST(CubeSeams, EdgeAndCornerLookupsBlendOnlyTheFacesThatMeetThere) {
   scene.clearColour = glm::vec3(0.0f);  // a gap between walls would read black
   scene.objects.push_back(mirrorAtOrigin());
   for (int face = 0; face < 6; ++face) {
-    scene.objects.push_back(extremes::phongObject("quad.obj", wallPlacement(face), kWallColours[face]));
+    scene.objects.push_back(
+        extremes::phongObject("quad.obj", wallPlacement(face), kWallColours[face]));
   }
   auto demo = testing::makeDemo(scene);
   ASSERT_TRUE(renderFrameAt(*demo, 0.0, 32, 32));  // runs the capture
@@ -125,7 +133,8 @@ TEST(CubeSeams, EdgeAndCornerLookupsBlendOnlyTheFacesThatMeetThere) {
   const auto atCentres = extremes::sampleCube(demo->environmentTexture(), centres);
   ASSERT_EQ(atCentres.size(), 6u);
   for (int face = 0; face < 6; ++face) {
-    EXPECT_EQ(atCentres[static_cast<size_t>(face)], extremes::toBytes(kWallColours[face])) << "face " << face;
+    EXPECT_EQ(atCentres[static_cast<size_t>(face)], extremes::toBytes(kWallColours[face]))
+        << "face " << face;
   }
 
   const std::vector<Lookup> lookups = edgeAndCornerLookups();
@@ -142,8 +151,9 @@ TEST(CubeSeams, EdgeAndCornerLookupsBlendOnlyTheFacesThatMeetThere) {
     EXPECT_LE(d, 3.0f) << lookups[i].name << ": got " << extremes::describe(sampled[i]);
     EXPECT_NE(sampled[i], glm::u8vec3(0)) << lookups[i].name;
   }
-  std::printf("%zu edge and corner lookups: worst distance from a blend of the meeting faces %.2f levels\n",
-              lookups.size(), static_cast<double>(worst));
+  std::printf(
+      "%zu edge and corner lookups: worst distance from a blend of the meeting faces %.2f levels\n",
+      lookups.size(), static_cast<double>(worst));
 }
 
 TEST(CubeSeams, UniformEnvironmentHasNoSeams) {
@@ -157,7 +167,8 @@ TEST(CubeSeams, UniformEnvironmentHasNoSeams) {
   for (int k = 0; k < 64; ++k) {  // and a spiral over the whole sphere
     const float z = 1.0f - (2.0f * float(k) + 1.0f) / 64.0f;
     const float a = 2.39996f * float(k);
-    directions.push_back({std::sqrt(1 - z * z) * std::cos(a), z, std::sqrt(1 - z * z) * std::sin(a)});
+    directions.push_back(
+        {std::sqrt(1 - z * z) * std::cos(a), z, std::sqrt(1 - z * z) * std::sin(a)});
   }
   const glm::u8vec3 expected(51, 102, 153);
   ASSERT_EQ(extremes::toBytes(scene.clearColour), expected);
@@ -171,7 +182,8 @@ TEST(CubeSeams, UniformEnvironmentHasNoSeams) {
                     << directions[i].z << "): " << extremes::describe(sampled[i]);
     }
   }
-  std::printf("uniform environment: %zu lookups, %d differ from (51,102,153)\n", sampled.size(), wrong);
+  std::printf("uniform environment: %zu lookups, %d differ from (51,102,153)\n", sampled.size(),
+              wrong);
 }
 
 }  // namespace

@@ -29,11 +29,16 @@ const glm::vec3 kDecal(0.1f, 0.1f, 0.1f);
 Scene zFightScene(float nearPlane, float farPlane, bool withGround) {
   Scene scene;
   extremes::useFlatLighting(scene);
-  if (withGround) scene.objects.push_back(extremes::phongObject("quad.obj", translateScale({-1, -2, 4}, {100, 1, 100}), kGround));
+  if (withGround)
+    scene.objects.push_back(
+        extremes::phongObject("quad.obj", translateScale({-1, -2, 4}, {100, 1, 100}), kGround));
   // Under both figures: x from -3.25 to 3.75, z from 0.25 to 3.25.
-  scene.objects.push_back(extremes::phongObject("decal.obj", translateScale({0.25f, -2.0f + kDecalHeight, 1.75f}, {3.5f, 1, 1.5f}), kDecal));
-  scene.objects.push_back(extremes::phongObject("sonic.obj", translateScale({-2, -0.5f, 2}, glm::vec3(0.05f)), {0.4f, 1.0f, 0.4f}));
-  scene.objects.push_back(extremes::phongObject("mario.obj", translateScale({2.5f, -0.5f, 1.5f}, glm::vec3(0.02f)), {1.0f, 0.4f, 0.4f}));
+  scene.objects.push_back(extremes::phongObject(
+      "decal.obj", translateScale({0.25f, -2.0f + kDecalHeight, 1.75f}, {3.5f, 1, 1.5f}), kDecal));
+  scene.objects.push_back(extremes::phongObject(
+      "sonic.obj", translateScale({-2, -0.5f, 2}, glm::vec3(0.05f)), {0.4f, 1.0f, 0.4f}));
+  scene.objects.push_back(extremes::phongObject(
+      "mario.obj", translateScale({2.5f, -0.5f, 1.5f}, glm::vec3(0.02f)), {1.0f, 0.4f, 0.4f}));
   scene.camera.near = nearPlane;
   scene.camera.far = farPlane;
   return scene;
@@ -46,7 +51,8 @@ std::string quadText() {
 // Pixels whose colour differs from a 4-neighbour's: silhouettes, where a tiny move may flip a
 // pixel without any depth-precision problem.
 std::vector<uint8_t> edgePixels(const RgbaImage& image) {
-  std::vector<uint8_t> edges(static_cast<size_t>(image.width) * static_cast<size_t>(image.height), 0);
+  std::vector<uint8_t> edges(static_cast<size_t>(image.width) * static_cast<size_t>(image.height),
+                             0);
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
       const glm::u8vec3 c = extremes::rgbAt(image, x, y);
@@ -55,7 +61,8 @@ std::vector<uint8_t> edgePixels(const RgbaImage& image) {
       if (x + 1 < image.width) edge |= extremes::rgbAt(image, x + 1, y) != c;
       if (y > 0) edge |= extremes::rgbAt(image, x, y - 1) != c;
       if (y + 1 < image.height) edge |= extremes::rgbAt(image, x, y + 1) != c;
-      edges[static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x)] = edge;
+      edges[static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x)] =
+          edge;
     }
   }
   return edges;
@@ -67,7 +74,8 @@ struct ZFight {
   int flicker = 0;
 };
 
-ZFight measure(Demo& demo, int depthBits, const std::vector<uint8_t>& decalInterior, int decalPixels) {
+ZFight measure(Demo& demo, int depthBits, const std::vector<uint8_t>& decalInterior,
+               int decalPixels) {
   ZFight z;
   z.decalPixels = decalPixels;
   demo.camera().reset();
@@ -83,7 +91,8 @@ ZFight measure(Demo& demo, int depthBits, const std::vector<uint8_t>& decalInter
     for (int x = 0; x < kSize; ++x) {
       const size_t i = static_cast<size_t>(y) * kSize + static_cast<size_t>(x);
       if (decalInterior[i] && extremes::rgbAt(a.value(), x, y) == ground) ++z.lost;
-      if (!edges[i] && extremes::rgbAt(a.value(), x, y) != extremes::rgbAt(b.value(), x, y)) ++z.flicker;
+      if (!edges[i] && extremes::rgbAt(a.value(), x, y) != extremes::rgbAt(b.value(), x, y))
+        ++z.flicker;
     }
   }
   return z;
@@ -104,14 +113,16 @@ TEST(DepthPrecision, ZFightingAcrossNearFarAndDepthBits) {
   ASSERT_TRUE(reference) << reference.error();
   testing::saveOutput(reference.value(), "zfight_decal_only.png");
   int decalPixels = 0;
-  const auto decalMask = extremes::maskOf(reference.value(), extremes::toBytes(kDecal), &decalPixels);
+  const auto decalMask =
+      extremes::maskOf(reference.value(), extremes::toBytes(kDecal), &decalPixels);
   const auto decalInterior = extremes::interiorOf(decalMask, kSize, kSize);
   ASSERT_GT(decalPixels, 500);
 
   // The decal is seen about 6 units away, at ~30 degrees to the ground: the ray travels about
   // 0.02 units from decal to ground, which is what the depth buffer must resolve.
-  std::printf("decal %.2f above the ground, %d pixels at the defaults; camera moved 0.001 for flicker\n",
-              static_cast<double>(kDecalHeight), decalPixels);
+  std::printf(
+      "decal %.2f above the ground, %d pixels at the defaults; camera moved 0.001 for flicker\n",
+      static_cast<double>(kDecalHeight), decalPixels);
   std::printf("  near     far      bits  lost   flicker  depth step at 6 units\n");
   for (float nearPlane : {1e-3f, 1e-2f, 1e-1f, 1.0f, 10.0f}) {
     for (float farPlane : {1e2f, 1e4f, 1e6f}) {

@@ -12,14 +12,14 @@
 
 namespace reflect::extremes {
 
-std::unique_ptr<Demo> makeDemoWith(Scene scene, const std::map<std::string, std::string>& objTexts) {
+std::unique_ptr<Demo> makeDemoWith(Scene scene,
+                                   const std::map<std::string, std::string>& objTexts) {
   auto demo = std::make_unique<Demo>(std::move(scene));
   for (const std::string& name : demo->scene().meshNames()) {
     auto text = objTexts.find(name);
-    const std::string error =
-        text != objTexts.end()
-            ? demo->loadMeshText(name, text->second, name)
-            : demo->loadMesh(name, builtInModelDirectory() + "/" + name);
+    const std::string error = text != objTexts.end()
+                                  ? demo->loadMeshText(name, text->second, name)
+                                  : demo->loadMesh(name, builtInModelDirectory() + "/" + name);
     EXPECT_EQ(error, "") << name;
     if (!error.empty()) return nullptr;
   }
@@ -39,7 +39,8 @@ glm::mat4 translateScale(const glm::vec3& t, const glm::vec3& s) {
   return glm::scale(glm::translate(glm::mat4(1.0f), t), s);
 }
 
-SceneObject phongObject(const std::string& mesh, const glm::mat4& placement, const glm::vec3& colour) {
+SceneObject phongObject(const std::string& mesh, const glm::mat4& placement,
+                        const glm::vec3& colour) {
   SceneObject o;
   o.mesh = mesh;
   o.placement = placement;
@@ -47,7 +48,8 @@ SceneObject phongObject(const std::string& mesh, const glm::mat4& placement, con
   return o;
 }
 
-SceneObject mirrorObject(const std::string& mesh, const glm::mat4& placement, const glm::vec3& colour) {
+SceneObject mirrorObject(const std::string& mesh, const glm::mat4& placement,
+                         const glm::vec3& colour) {
   SceneObject o = phongObject(mesh, placement, colour);
   o.material = Material::Mirror;
   return o;
@@ -67,7 +69,6 @@ Result<RgbaImage> renderWithDepthBits(Demo& demo, double seconds, int width, int
   return image;
 }
 
-
 glm::u8vec3 rgbAt(const RgbaImage& image, int x, int y) {
   const uint8_t* p = image.at(x, y);
   return {p[0], p[1], p[2]};
@@ -78,12 +79,14 @@ glm::u8vec3 toBytes(const glm::vec3& colour) {
 }
 
 std::vector<uint8_t> maskOf(const RgbaImage& image, const glm::u8vec3& colour, int* count) {
-  std::vector<uint8_t> mask(static_cast<size_t>(image.width) * static_cast<size_t>(image.height), 0);
+  std::vector<uint8_t> mask(static_cast<size_t>(image.width) * static_cast<size_t>(image.height),
+                            0);
   int n = 0;
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
       if (rgbAt(image, x, y) == colour) {
-        mask[static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x)] = 1;
+        mask[static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x)] =
+            1;
         ++n;
       }
     }

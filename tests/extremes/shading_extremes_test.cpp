@@ -68,9 +68,10 @@ TEST(ShadingExtremes, GrazingIncidenceOnTheSphereSilhouetteIsNeverAHole) {
       }
     }
   }
-  std::printf("sphere: %d pixels, %d on the silhouette (N.V ~ 0); darkest rim channels (%d,%d,%d), "
-              "floor %s\n", discPixels, rimPixels, rimMin.r, rimMin.g, rimMin.b,
-              extremes::describe(floor).c_str());
+  std::printf(
+      "sphere: %d pixels, %d on the silhouette (N.V ~ 0); darkest rim channels (%d,%d,%d), "
+      "floor %s\n",
+      discPixels, rimPixels, rimMin.r, rimMin.g, rimMin.b, extremes::describe(floor).c_str());
   EXPECT_EQ(black, 0);
   EXPECT_EQ(belowFloor, 0);
   EXPECT_GT(rimPixels, 100);
@@ -90,7 +91,8 @@ TEST(ShadingExtremes, DegenerateNormalsFromObjAreFiniteUnitVectors) {
   ASSERT_TRUE(mesh) << mesh.error();
   ASSERT_EQ(mesh.value().vertices.size(), 5u);
   for (const Vertex& v : mesh.value().vertices) {
-    ASSERT_TRUE(std::isfinite(v.normal.x) && std::isfinite(v.normal.y) && std::isfinite(v.normal.z));
+    ASSERT_TRUE(std::isfinite(v.normal.x) && std::isfinite(v.normal.y) &&
+                std::isfinite(v.normal.z));
     EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-6f);
     // Positions of the real triangle get its normal; the rest (only in the flat one) get +Y.
     const bool inRealTriangle = v.position.x <= 1.0f;
@@ -107,11 +109,15 @@ TEST(ShadingExtremes, DegenerateMeshesRenderWithoutBlackOrNaNPixels) {
   const glm::vec3 white(0.9f, 0.9f, 0.9f);
   Scene scene;
   scene.clearColour = glm::vec3(0.4f);
-  scene.objects.push_back(extremes::phongObject("degenerate.obj", translateScale({-1.3f, 1, 2}, glm::vec3(1)), white));
-  SceneObject mirror = extremes::mirrorObject("degenerate.obj", translateScale({1.3f, 1, 2}, glm::vec3(1)), white);
+  scene.objects.push_back(
+      extremes::phongObject("degenerate.obj", translateScale({-1.3f, 1, 2}, glm::vec3(1)), white));
+  SceneObject mirror =
+      extremes::mirrorObject("degenerate.obj", translateScale({1.3f, 1, 2}, glm::vec3(1)), white);
   scene.objects.push_back(mirror);
-  scene.objects.push_back(extremes::phongObject("zero_area.obj", translateScale({0, 0, 2}, glm::vec3(1)), white));
-  auto demo = extremes::makeDemoWith(scene, {{"degenerate.obj", kDegenerateObj}, {"zero_area.obj", kZeroAreaObj}});
+  scene.objects.push_back(
+      extremes::phongObject("zero_area.obj", translateScale({0, 0, 2}, glm::vec3(1)), white));
+  auto demo = extremes::makeDemoWith(
+      scene, {{"degenerate.obj", kDegenerateObj}, {"zero_area.obj", kZeroAreaObj}});
   ASSERT_TRUE(demo);
   auto image = renderFrameAt(*demo, 0.0, kSize, kSize);
   ASSERT_TRUE(image) << image.error();
@@ -140,7 +146,8 @@ TEST(ShadingExtremes, DegenerateMeshesRenderWithoutBlackOrNaNPixels) {
   // The zero-area mesh alone covers nothing: the frame is the clear colour everywhere.
   Scene zeroOnly;
   zeroOnly.clearColour = scene.clearColour;
-  zeroOnly.objects.push_back(extremes::phongObject("zero_area.obj", translateScale({0, 1, 2}, glm::vec3(1)), white));
+  zeroOnly.objects.push_back(
+      extremes::phongObject("zero_area.obj", translateScale({0, 1, 2}, glm::vec3(1)), white));
   auto zeroDemo = extremes::makeDemoWith(zeroOnly, {{"zero_area.obj", kZeroAreaObj}});
   ASSERT_TRUE(zeroDemo);
   auto empty = renderFrameAt(*zeroDemo, 0.0, kSize, kSize);
@@ -159,7 +166,8 @@ TEST(ShadingExtremes, ColourSumsAboveOneClampTo255) {
   constexpr int kSize = 96;
   Scene scene;
   scene.clearColour = glm::vec3(1.0f);
-  SceneObject sphere = extremes::mirrorObject("sphere.obj", translateScale({0, 0, 0}, glm::vec3(0.5f)), kGold);
+  SceneObject sphere =
+      extremes::mirrorObject("sphere.obj", translateScale({0, 0, 0}, glm::vec3(0.5f)), kGold);
   scene.objects.push_back(sphere);
   int discPixels = 0;
   const auto disc = mirrorMask(scene, 0.0, kSize, &discPixels);

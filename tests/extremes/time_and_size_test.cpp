@@ -61,7 +61,8 @@ TEST(TimeExtremes, SteppingAMillionSecondsAt60HzDriftsLessThanATenthOfADegree) {
   constexpr int kFrames = 60'000'000;
   for (int i = 0; i < kFrames; ++i) clock.advance(1.0 / 60.0);
   const double timeError = clock.seconds() - 1e6;
-  const double drift = clock.orbitDegrees() > 180.0 ? clock.orbitDegrees() - 360.0 : clock.orbitDegrees();
+  const double drift =
+      clock.orbitDegrees() > 180.0 ? clock.orbitDegrees() - 360.0 : clock.orbitDegrees();
   std::printf("after 6e7 steps of 1/60 s: t off by %.3g s, orbit %.4g degrees off the exact 0\n",
               timeError, drift);
   EXPECT_LT(std::fabs(timeError), 0.01);
@@ -134,7 +135,8 @@ TEST(SizeExtremes, CubeSizeOutsideTheLimitsIsClampedAndReported) {
   // would allocate 6 x 4096^2 x 4 bytes (400 MB): only the message is checked there.
   Scene scene;
   scene.clearColour = glm::vec3(0.2f, 0.4f, 0.6f);
-  scene.objects.push_back(extremes::mirrorObject("sphere.obj", glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)), {1, 1, 1}));
+  scene.objects.push_back(extremes::mirrorObject(
+      "sphere.obj", glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)), {1, 1, 1}));
   {
     Demo unrendered(scene);
     EXPECT_NE(unrendered.setCubeFaceSize(Demo::kMaxCubeFaceSize + 1), "");
@@ -161,7 +163,8 @@ TEST(SizeExtremes, ClampedCubeTargetKeepsTheFacesItAlreadyCaptured) {
   // redraw. Time-sliced capture (two faces a frame) would show it within three frames.
   Scene scene;
   scene.clearColour = glm::vec3(0.2f, 0.4f, 0.6f);
-  SceneObject sphere = extremes::mirrorObject("sphere.obj", glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)), {1, 1, 1});
+  SceneObject sphere =
+      extremes::mirrorObject("sphere.obj", glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)), {1, 1, 1});
   scene.objects.push_back(sphere);
   std::vector<glm::vec3> faceCentres;
   for (int face = 0; face < 6; ++face) {
@@ -184,8 +187,9 @@ TEST(SizeExtremes, ClampedCubeTargetKeepsTheFacesItAlreadyCaptured) {
       right += c == glm::u8vec3(51, 102, 153);
     }
     facesRight[requested] = right;
-    std::printf("face size %d, time-sliced 2 faces a frame, after 3 frames: %d of 6 faces hold the scene\n",
-                requested, right);
+    std::printf(
+        "face size %d, time-sliced 2 faces a frame, after 3 frames: %d of 6 faces hold the scene\n",
+        requested, right);
   }
   EXPECT_EQ(facesRight[1], 6);
   EXPECT_EQ(facesRight[0], 6) << "a clamped face size lost faces captured on earlier frames";

@@ -30,16 +30,21 @@ bool allFinite(const glm::mat3& m) {
 }
 
 // What the renderer uploads as u_normalMatrix (scene_renderer.cpp).
-glm::mat3 normalMatrix(const glm::mat4& model) { return normalMatrixOf(glm::mat3(model)); }
+glm::mat3 normalMatrix(const glm::mat4& model) {
+  return normalMatrixOf(glm::mat3(model));
+}
 
 TEST(TransformExtremes, UniformScaleKeepsNormalDirections) {
-  const glm::vec3 normals[] = {{0, 1, 0}, glm::normalize(glm::vec3(1, 2, 3)), glm::normalize(glm::vec3(-5, 0.1f, 2))};
+  const glm::vec3 normals[] = {
+      {0, 1, 0}, glm::normalize(glm::vec3(1, 2, 3)), glm::normalize(glm::vec3(-5, 0.1f, 2))};
   for (float s : {1e-4f, 1e4f}) {
-    const glm::mat4 model = glm::rotate(glm::scale(glm::mat4(1.0f), glm::vec3(s)), 0.7f, glm::vec3(0, 1, 0));
+    const glm::mat4 model =
+        glm::rotate(glm::scale(glm::mat4(1.0f), glm::vec3(s)), 0.7f, glm::vec3(0, 1, 0));
     const glm::mat3 n = normalMatrix(model);
     ASSERT_TRUE(allFinite(n)) << s;
     for (const glm::vec3& local : normals) {
-      const glm::vec3 expected = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::vec3(0, 1, 0))) * local;
+      const glm::vec3 expected =
+          glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::vec3(0, 1, 0))) * local;
       EXPECT_LT(glm::length(glm::normalize(n * local) - expected), 1e-6f) << "scale " << s;
     }
   }
@@ -77,18 +82,23 @@ TEST(TransformExtremes, SingularScaleNormalMatrixIsFiniteAndPointsTheRightWay) {
   // The flattened plane's normal is still +Y.
   EXPECT_LT(glm::length(glm::normalize(n * glm::vec3(0, 1, 0)) - glm::vec3(0, 1, 0)), 1e-6f);
   // And for regular matrices it agrees in direction with the inverse-transpose.
-  const glm::mat3 m = glm::mat3(glm::rotate(glm::scale(glm::mat4(1.0f), glm::vec3(100, 1, 100)), 0.5f,
-                                            glm::normalize(glm::vec3(1, 2, 3))));
+  const glm::mat3 m = glm::mat3(glm::rotate(glm::scale(glm::mat4(1.0f), glm::vec3(100, 1, 100)),
+                                            0.5f, glm::normalize(glm::vec3(1, 2, 3))));
   const glm::vec3 v = glm::normalize(glm::vec3(0.3f, -0.8f, 0.5f));
-  EXPECT_LT(glm::length(glm::normalize(normalMatrixOf(m) * v) - glm::normalize(glm::inverseTranspose(m) * v)), 1e-5f);
+  EXPECT_LT(glm::length(glm::normalize(normalMatrixOf(m) * v) -
+                        glm::normalize(glm::inverseTranspose(m) * v)),
+            1e-5f);
 }
 
 // A small scene for rendered comparisons: ground, a lit cube, the mirror sphere.
 Scene smallScene() {
   Scene scene;
-  scene.objects.push_back(extremes::phongObject("quad.obj", translateScale({-1, -2, 4}, {100, 1, 100}), {0.4f, 0.4f, 1.0f}));
-  scene.objects.push_back(extremes::phongObject("cube.obj", translateScale({1.8f, -1.0f, 0.5f}, glm::vec3(0.5f)), {1.0f, 0.4f, 0.4f}));
-  SceneObject sphere = extremes::mirrorObject("sphere.obj", translateScale({0, 0, 0}, glm::vec3(0.5f)), {0.95f, 0.85f, 0.4f});
+  scene.objects.push_back(extremes::phongObject(
+      "quad.obj", translateScale({-1, -2, 4}, {100, 1, 100}), {0.4f, 0.4f, 1.0f}));
+  scene.objects.push_back(extremes::phongObject(
+      "cube.obj", translateScale({1.8f, -1.0f, 0.5f}, glm::vec3(0.5f)), {1.0f, 0.4f, 0.4f}));
+  SceneObject sphere = extremes::mirrorObject(
+      "sphere.obj", translateScale({0, 0, 0}, glm::vec3(0.5f)), {0.95f, 0.85f, 0.4f});
   scene.objects.push_back(sphere);
   return scene;
 }
@@ -97,7 +107,8 @@ Scene smallScene() {
 // perspective image of it is the same picture, so it must match the unscaled frame.
 Scene scaledScene(float s) {
   Scene scene = smallScene();
-  for (SceneObject& o : scene.objects) o.placement = glm::scale(glm::mat4(1.0f), glm::vec3(s)) * o.placement;
+  for (SceneObject& o : scene.objects)
+    o.placement = glm::scale(glm::mat4(1.0f), glm::vec3(s)) * o.placement;
   scene.camera.eye *= s;
   scene.camera.near *= s;
   scene.camera.far *= s;
@@ -109,7 +120,8 @@ Scene scaledScene(float s) {
 
 // Renders scaledScene(s) for s = 1e-4, 1, 1e4 with `accuracy`; returns the worst fraction of
 // pixels (over 2 levels) and the worst max difference against s = 1.
-std::pair<double, int> scaleInvarianceError(const AccuracySettings& accuracy, const std::string& label) {
+std::pair<double, int> scaleInvarianceError(const AccuracySettings& accuracy,
+                                            const std::string& label) {
   constexpr int kSize = 192;
   auto render = [&](float s) -> Result<RgbaImage> {
     auto demo = makeDemoWith(scaledScene(s));
@@ -126,11 +138,15 @@ std::pair<double, int> scaleInvarianceError(const AccuracySettings& accuracy, co
     auto image = render(s);
     EXPECT_TRUE(image) << image.error();
     if (!image) return {1.0, 255};
-    testing::saveOutput(image.value(), "scaled_" + label + "_" + std::to_string(static_cast<int>(std::log10(s))) + ".png");
+    testing::saveOutput(
+        image.value(),
+        "scaled_" + label + "_" + std::to_string(static_cast<int>(std::log10(s))) + ".png");
     auto d = compareImages(image.value(), expected.value(), 2);
-    std::printf("%s lookup, scene scaled by %g: max channel difference %d, mean %.4f, %.4f%% of "
-                "pixels over 2\n", label.c_str(), static_cast<double>(s), d.value().maxChannel,
-                d.value().meanChannel, 100.0 * d.value().fractionOver);
+    std::printf(
+        "%s lookup, scene scaled by %g: max channel difference %d, mean %.4f, %.4f%% of "
+        "pixels over 2\n",
+        label.c_str(), static_cast<double>(s), d.value().maxChannel, d.value().meanChannel,
+        100.0 * d.value().fractionOver);
     worst.first = std::max(worst.first, d.value().fractionOver);
     worst.second = std::max(worst.second, d.value().maxChannel);
   }
@@ -173,10 +189,12 @@ TEST(TransformExtremes, StretchedTiltedPlaneIsLitWithItsTrueNormal) {
   auto image = renderFrameAt(*demo, 0.0, kSize, kSize);
   ASSERT_TRUE(image) << image.error();
 
-  const glm::vec3 trueNormal = glm::normalize(glm::inverseTranspose(glm::mat3(model)) * glm::vec3(0, 1, 0));
+  const glm::vec3 trueNormal =
+      glm::normalize(glm::inverseTranspose(glm::mat3(model)) * glm::vec3(0, 1, 0));
   const glm::vec3 naiveNormal = glm::normalize(glm::mat3(model) * glm::vec3(0, 1, 0));
   auto lit = [&](const glm::vec3& n) {
-    return extremes::toBytes(colour * (scene.light.ambient + scene.light.diffuse * std::max(glm::dot(n, toLight), 0.0f)));
+    return extremes::toBytes(colour * (scene.light.ambient +
+                                       scene.light.diffuse * std::max(glm::dot(n, toLight), 0.0f)));
   };
   const glm::u8vec3 expected = lit(trueNormal);
   int planePixels = 0, worst = 0;
@@ -188,9 +206,11 @@ TEST(TransformExtremes, StretchedTiltedPlaneIsLitWithItsTrueNormal) {
       for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(int(c[k]) - int(expected[k])));
     }
   }
-  std::printf("tilted S(100,1,100) plane: %d pixels, expected %s (with M instead: %s), worst "
-              "channel error %d\n", planePixels, extremes::describe(expected).c_str(),
-              extremes::describe(lit(naiveNormal)).c_str(), worst);
+  std::printf(
+      "tilted S(100,1,100) plane: %d pixels, expected %s (with M instead: %s), worst "
+      "channel error %d\n",
+      planePixels, extremes::describe(expected).c_str(),
+      extremes::describe(lit(naiveNormal)).c_str(), worst);
   EXPECT_GT(planePixels, kSize * kSize / 4);
   EXPECT_LE(worst, 2);
 }
@@ -203,8 +223,10 @@ TEST(TransformExtremes, ObjectsScaledToZeroLeaveTheFrameUnchanged) {
   ASSERT_TRUE(expected) << expected.error();
 
   Scene scene = smallScene();
-  scene.objects.push_back(extremes::phongObject("cube.obj", translateScale({0.5f, 0, 2}, glm::vec3(0.0f)), {0, 1, 0}));
-  SceneObject zeroMirror = extremes::mirrorObject("sphere.obj", translateScale({-1, 0, 2}, glm::vec3(0.0f)), {1, 1, 1});
+  scene.objects.push_back(
+      extremes::phongObject("cube.obj", translateScale({0.5f, 0, 2}, glm::vec3(0.0f)), {0, 1, 0}));
+  SceneObject zeroMirror =
+      extremes::mirrorObject("sphere.obj", translateScale({-1, 0, 2}, glm::vec3(0.0f)), {1, 1, 1});
   scene.objects.push_back(zeroMirror);
   auto demo = makeDemoWith(scene);
   ASSERT_TRUE(demo);
@@ -213,8 +235,8 @@ TEST(TransformExtremes, ObjectsScaledToZeroLeaveTheFrameUnchanged) {
   auto d = compareImages(image.value(), expected.value(), 0);
   ASSERT_TRUE(d);
   // Zero-area triangles cover no pixel, so their NaN normal matrix never reaches a fragment.
-  EXPECT_EQ(d.value().maxChannel, 0) << "a zero-scale object changed " << d.value().fractionOver * 100
-                                     << "% of the frame";
+  EXPECT_EQ(d.value().maxChannel, 0)
+      << "a zero-scale object changed " << d.value().fractionOver * 100 << "% of the frame";
   EXPECT_EQ(demo->lastStats().probes, 2);
 }
 
@@ -226,7 +248,8 @@ TEST(TransformExtremes, QuadWithASingularScaleIsLitLikeTheSameQuadUnscaled) {
   Scene scene;
   scene.clearColour = glm::vec3(0.0f);
   const glm::vec3 colour(0.2f, 0.9f, 0.2f);
-  scene.objects.push_back(extremes::phongObject("quad.obj", translateScale({0, -1.2f, 3}, {1, 1, 1}), colour));
+  scene.objects.push_back(
+      extremes::phongObject("quad.obj", translateScale({0, -1.2f, 3}, {1, 1, 1}), colour));
   auto unscaled = makeDemoWith(scene);
   ASSERT_TRUE(unscaled);
   auto expected = renderFrameAt(*unscaled, 0.0, kSize, kSize);
@@ -254,9 +277,11 @@ TEST(TransformExtremes, QuadWithASingularScaleIsLitLikeTheSameQuadUnscaled) {
   }
   auto d = compareImages(image.value(), expected.value(), 2);
   ASSERT_TRUE(d);
-  std::printf("quad S(1,0,1) vs S(1,1,1): %d quad pixels, %d black, max channel difference %d, "
-              "e.g. %s instead of %s\n", quadPixels, black, d.value().maxChannel,
-              extremes::describe(sampleGot).c_str(), extremes::describe(sampleWant).c_str());
+  std::printf(
+      "quad S(1,0,1) vs S(1,1,1): %d quad pixels, %d black, max channel difference %d, "
+      "e.g. %s instead of %s\n",
+      quadPixels, black, d.value().maxChannel, extremes::describe(sampleGot).c_str(),
+      extremes::describe(sampleWant).c_str());
   ASSERT_GT(quadPixels, 500);
   // Before the cofactor normal matrix this was (10,46,10), the ambient term only (NaN normal).
   EXPECT_LE(d.value().maxChannel, 2);
@@ -271,7 +296,8 @@ TEST(TransformExtremes, ObjectFarFromTheOriginStaysFiniteInPlannerAndFrustum) {
     EXPECT_EQ(world.max, where + glm::vec3(1));
     int facesSeeing = 0;
     for (int face = 0; face < 6; ++face) {
-      EXPECT_FALSE(faceMaySee(glm::vec3(0), face, 1.0f, 100.0f, cube, model)) << "far 100, face " << face;
+      EXPECT_FALSE(faceMaySee(glm::vec3(0), face, 1.0f, 100.0f, cube, model))
+          << "far 100, face " << face;
       facesSeeing += faceMaySee(glm::vec3(0), face, 1.0f, 1e6f, cube, model);
     }
     // Within a far plane of 1e6 the box is in front of exactly one face (+X), or on the
@@ -279,7 +305,8 @@ TEST(TransformExtremes, ObjectFarFromTheOriginStaysFiniteInPlannerAndFrustum) {
     EXPECT_GE(facesSeeing, 1);
     EXPECT_LE(facesSeeing, where.y == 0 ? 1 : 3);
   }
-  EXPECT_TRUE(faceMaySee(glm::vec3(0), 0, 1.0f, 1e6f, cube, glm::translate(glm::mat4(1.0f), glm::vec3(1e5f, 0, 0))));
+  EXPECT_TRUE(faceMaySee(glm::vec3(0), 0, 1.0f, 1e6f, cube,
+                         glm::translate(glm::mat4(1.0f), glm::vec3(1e5f, 0, 0))));
 
   // The planner: a mirror at the origin and a cube 1e5 away; beyond the capture's far plane of
   // 100 the cube is never drawn into a face, and every number in the plan is finite.
@@ -318,7 +345,8 @@ TEST(TransformExtremes, ObjectFarFromTheOriginRendersFinite) {
   // plane of 1e6 it shows, in its exact flat colour, where the camera projects its centre.
   const glm::vec3 colour(0.0f, 1.0f, 0.0f);
   const glm::vec3 centre(0.0f, 3e4f, -1e5f);
-  scene.objects.push_back(extremes::phongObject("cube.obj", translateScale(centre, glm::vec3(5000.0f)), colour));
+  scene.objects.push_back(
+      extremes::phongObject("cube.obj", translateScale(centre, glm::vec3(5000.0f)), colour));
   auto clipped = makeDemoWith(scene);
   ASSERT_TRUE(clipped);
   auto image = renderFrameAt(*clipped, 0.0, kSize, kSize);
@@ -340,7 +368,8 @@ TEST(TransformExtremes, ObjectFarFromTheOriginRendersFinite) {
   const int px = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * kSize);
   const int py = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * kSize);
   // Half-size 5000 at ~1.04e5: about 5.5 degrees of a 70-degree view, ~10 pixels across.
-  std::printf("cube 1e5 away, far 1e6: %d pixels of its exact colour around (%d,%d)\n", cubePixels, px, py);
+  std::printf("cube 1e5 away, far 1e6: %d pixels of its exact colour around (%d,%d)\n", cubePixels,
+              px, py);
   EXPECT_GE(cubePixels, 49);
   EXPECT_LE(cubePixels, 169);
   ASSERT_TRUE(px >= 0 && py >= 0 && px < kSize && py < kSize);

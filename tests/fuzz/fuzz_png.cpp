@@ -33,7 +33,8 @@ void appendBytes(void* context, void* data, int size) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  reflect::Result<reflect::RgbaImage> image = reflect::decodeImage(data, size, kName, kMaxDimension);
+  reflect::Result<reflect::RgbaImage> image =
+      reflect::decodeImage(data, size, kName, kMaxDimension);
   if (!image) {
     if (image.error().rfind(std::string(kName) + ": ", 0) != 0) {
       fail("error message does not start with the input's name");
@@ -45,7 +46,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       decoded.height > kMaxDimension) {
     fail("decoded size outside the limit");
   }
-  if (decoded.pixels.size() != static_cast<size_t>(decoded.width) * static_cast<size_t>(decoded.height) * 4) {
+  if (decoded.pixels.size() !=
+      static_cast<size_t>(decoded.width) * static_cast<size_t>(decoded.height) * 4) {
     fail("pixel buffer does not match the size");
   }
   if (decoded.width * decoded.height > kMaxRoundTripPixels) return 0;

@@ -18,11 +18,14 @@ constexpr const char* kName = "fuzz.json";
   std::abort();
 }
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 bool finite(const glm::mat4& m) {
   for (int c = 0; c < 4; ++c)
-    if (!std::isfinite(m[c].x) || !std::isfinite(m[c].y) || !std::isfinite(m[c].z) || !std::isfinite(m[c].w))
+    if (!std::isfinite(m[c].x) || !std::isfinite(m[c].y) || !std::isfinite(m[c].z) ||
+        !std::isfinite(m[c].w))
       return false;
   return true;
 }
@@ -33,7 +36,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   reflect::Result<reflect::Scene> scene = reflect::parseSceneJson(text, kName);
   if (!scene) {
-    if (scene.error().find(kName) == std::string::npos) fail("error message does not name the input");
+    if (scene.error().find(kName) == std::string::npos)
+      fail("error message does not name the input");
     return 0;
   }
   const reflect::Scene& s = scene.value();
@@ -41,7 +45,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     fail("non-finite camera, light or clear colour");
   }
   for (const reflect::SceneObject& o : s.objects) {
-    if (!finite(o.placement) || !finite(o.colour) || !finite(o.axis) || !std::isfinite(o.degreesPerSecond)) {
+    if (!finite(o.placement) || !finite(o.colour) || !finite(o.axis) ||
+        !std::isfinite(o.degreesPerSecond)) {
       fail("non-finite object field");
     }
     // The model matrix at a few times must stay finite too.

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "app/headless_frames.h"
+#include "cube_sampler.h"
 #include "gfx/offscreen_target.h"
 #include "gfx/shader_program.h"
-#include "cube_sampler.h"
 #include "gl_fixture.h"
 
 namespace reflect {
@@ -34,7 +34,9 @@ Scene markerScene() {
   return scene;
 }
 
-glm::u8vec3 toBytes(const glm::vec3& c) { return glm::u8vec3(glm::round(c * 255.0f)); }
+glm::u8vec3 toBytes(const glm::vec3& c) {
+  return glm::u8vec3(glm::round(c * 255.0f));
+}
 
 void expectNear(const glm::u8vec3& got, const glm::u8vec3& want, const std::string& what) {
   for (int c = 0; c < 3; ++c) {
@@ -44,19 +46,20 @@ void expectNear(const glm::u8vec3& got, const glm::u8vec3& want, const std::stri
 }
 
 TEST(CubeRoundTrip, MarkerInDirectionDIsWhatTheCubeReturnsForD) {
-  const std::vector<glm::vec3> directions = {
-      {1, 0, 0},  {-1, 0, 0}, {0, 1, 0},  {0, -1, 0}, {0, 0, 1},   {0, 0, -1},
-      {1, 1, 0},  {-1, 0, 1}, {0, -1, -1}, {1, 1, 1}, {-1, -1, -1}, {1, -1, 1}};
-  const std::vector<glm::vec3> colours = {
-      {1, 0, 0},   {0, 1, 0},   {0, 0, 1},   {1, 1, 0}, {1, 0, 1}, {0, 1, 1},
-      {1, 0.5, 0}, {0.5, 0, 1}, {0, 0.5, 0.5}, {1, 1, 1}, {0.5, 0.5, 0}, {0.5, 1, 0.5}};
+  const std::vector<glm::vec3> directions = {{1, 0, 0},   {-1, 0, 0}, {0, 1, 0},    {0, -1, 0},
+                                             {0, 0, 1},   {0, 0, -1}, {1, 1, 0},    {-1, 0, 1},
+                                             {0, -1, -1}, {1, 1, 1},  {-1, -1, -1}, {1, -1, 1}};
+  const std::vector<glm::vec3> colours = {{1, 0, 0},     {0, 1, 0}, {0, 0, 1},     {1, 1, 0},
+                                          {1, 0, 1},     {0, 1, 1}, {1, 0.5, 0},   {0.5, 0, 1},
+                                          {0, 0.5, 0.5}, {1, 1, 1}, {0.5, 0.5, 0}, {0.5, 1, 0.5}};
   Scene scene = markerScene();
   const glm::vec3 centre(0.0f, 0.25f, 0.0f);  // sphere.obj's bounds centre (0, 0.5, 0) x 0.5
   for (size_t i = 0; i < directions.size(); ++i) {
     SceneObject marker;
     marker.mesh = "cube.obj";
-    marker.placement = glm::scale(glm::translate(glm::mat4(1.0f), centre + 4.0f * glm::normalize(directions[i])),
-                                  glm::vec3(0.4f));
+    marker.placement =
+        glm::scale(glm::translate(glm::mat4(1.0f), centre + 4.0f * glm::normalize(directions[i])),
+                   glm::vec3(0.4f));
     marker.colour = colours[i];
     scene.objects.push_back(marker);
   }

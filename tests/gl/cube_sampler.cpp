@@ -30,8 +30,8 @@ void main() { colour = texture(u_cube, u_directions[int(gl_FragCoord.x)]); })";
 
 std::vector<glm::u8vec3> sampleCube(GLuint cube, const std::vector<glm::vec3>& directions) {
   std::vector<glm::u8vec3> colours;
-  auto program = ShaderProgram::buildFromSource("sample.vert", kSampleVertex, "sample.frag",
-                                                kSampleFragment);
+  auto program =
+      ShaderProgram::buildFromSource("sample.vert", kSampleVertex, "sample.frag", kSampleFragment);
   EXPECT_TRUE(program) << program.error();
   if (!program) return colours;
   for (size_t first = 0; first < directions.size(); first += kDirectionsPerDraw) {

@@ -22,7 +22,8 @@ TEST(DefaultScene, MatchesGoldenAtTwoTimes) {
   for (double t : {0.0, 5.0}) {
     auto image = renderFrameAt(*demo, t, kSize, kSize);
     ASSERT_TRUE(image) << image.error();
-    testing::expectMatchesGolden(image.value(), "ex12_2_t" + std::to_string(static_cast<int>(t)) + ".png");
+    testing::expectMatchesGolden(image.value(),
+                                 "ex12_2_t" + std::to_string(static_cast<int>(t)) + ".png");
   }
 }
 
@@ -60,7 +61,8 @@ glm::ivec2 reflectionPixel(const glm::vec3& toward, const LookCamera& camera) {
   const float radius = 2.5456f * 0.5f;
   const glm::vec3 n =
       glm::normalize(glm::normalize(camera.eye() - centre) + glm::normalize(toward - centre));
-  const glm::vec4 clip = camera.projection(1.0f) * camera.view() * glm::vec4(centre + radius * n, 1.0f);
+  const glm::vec4 clip =
+      camera.projection(1.0f) * camera.view() * glm::vec4(centre + radius * n, 1.0f);
   const glm::vec2 ndc = glm::vec2(clip) / clip.w;
   return {static_cast<int>((ndc.x * 0.5f + 0.5f) * kSize),
           static_cast<int>((0.5f - ndc.y * 0.5f) * kSize)};
@@ -85,7 +87,8 @@ TEST(DefaultScene, SphereReflectsMarioRedAndSonicGreenWhereTheyMustBe) {
   for (double t : {0.0, 3.0}) {
     auto image = renderFrameAt(*demo, t, kSize, kSize);
     ASSERT_TRUE(image) << image.error();
-    testing::saveOutput(image.value(), "reflection_t" + std::to_string(static_cast<int>(t)) + ".png");
+    testing::saveOutput(image.value(),
+                        "reflection_t" + std::to_string(static_cast<int>(t)) + ".png");
     const float a = glm::radians(27.0f * static_cast<float>(t));
     const glm::mat4 orbit = glm::rotate(glm::mat4(1.0f), a, glm::vec3(0, 1, 0));
     // Figure centres: their placements plus their bounding-box centres in world units.

@@ -25,7 +25,8 @@ TEST_P(ShippedScene, MatchesGoldenAtTwoSeconds) {
 
 std::vector<std::string> shippedScenes() {
   std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(builtInAssetDirectory() + "/scenes")) {
+  for (const auto& entry :
+       std::filesystem::directory_iterator(builtInAssetDirectory() + "/scenes")) {
     if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
   }
   std::sort(names.begin(), names.end());

@@ -83,7 +83,8 @@ TEST(Sweep, CsvAndSvgAreWellFormed) {
   std::getline(lines, header);
   EXPECT_EQ(header.rfind("name,setting,face_size,ms,", 0), 0u);
   for (const char* column : {"ms", "psnr_db", "rmse", "p95"}) {
-    EXPECT_NE(("," + header + ",").find(std::string(",") + column + ","), std::string::npos) << column;
+    EXPECT_NE(("," + header + ",").find(std::string(",") + column + ","), std::string::npos)
+        << column;
   }
   int rows = 0;
   while (std::getline(lines, line)) {

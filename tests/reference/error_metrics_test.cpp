@@ -18,7 +18,8 @@ RgbaImage solid(int w, int h, uint8_t r, uint8_t g, uint8_t b) {
 
 void setPixel(RgbaImage& image, int x, int y, uint8_t r, uint8_t g, uint8_t b, uint8_t a = 255) {
   uint8_t* p = &image.pixels[(static_cast<size_t>(y) * static_cast<size_t>(image.width) +
-                              static_cast<size_t>(x)) * 4];
+                              static_cast<size_t>(x)) *
+                             4];
   p[0] = r;
   p[1] = g;
   p[2] = b;
@@ -58,7 +59,8 @@ TEST(ErrorMetrics, TheMaskSelectsThePixels) {
   RgbaImage b = a;
   setPixel(b, 0, 0, 255, 255, 255);  // masked out
   setPixel(b, 1, 0, 0, 6, 0);
-  setPixel(b, 0, 1, 6, 6, 6);  // RMSE over 2 pixels x 3 channels: sqrt((36 + 3 x 36) / 6) = sqrt(24)
+  setPixel(b, 0, 1, 6, 6,
+           6);  // RMSE over 2 pixels x 3 channels: sqrt((36 + 3 x 36) / 6) = sqrt(24)
   auto m = imageErrorMetrics(a, b, {0, 1, 1, 0});
   ASSERT_TRUE(m) << m.error();
   EXPECT_EQ(m.value().pixelCount, 2u);
@@ -108,7 +110,8 @@ TEST(ErrorMetrics, PsnrFromRmse) {
 
 TEST(AngularError, ExactAngles) {
   const std::vector<glm::vec3> a{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}};
-  const std::vector<glm::vec3> b{{1, 0, 0}, {1, 0, 0}, {0, 0, -1}, glm::normalize(glm::vec3(1, 1, 0))};
+  const std::vector<glm::vec3> b{
+      {1, 0, 0}, {1, 0, 0}, {0, 0, -1}, glm::normalize(glm::vec3(1, 1, 0))};
   // 0, 90, 180 and 45 degrees: mean 78.75.
   auto mean = meanAngularErrorDegrees(a, b);
   ASSERT_TRUE(mean) << mean.error();

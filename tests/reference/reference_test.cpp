@@ -31,7 +31,8 @@ RgbaImage differenceImage(const RgbaImage& a, const RgbaImage& b, int gain) {
   RgbaImage d = a;
   for (size_t i = 0; i < d.pixels.size(); i += 4) {
     for (size_t c = 0; c < 3; ++c) {
-      const int diff = std::abs(static_cast<int>(a.pixels[i + c]) - static_cast<int>(b.pixels[i + c]));
+      const int diff =
+          std::abs(static_cast<int>(a.pixels[i + c]) - static_cast<int>(b.pixels[i + c]));
       d.pixels[i + c] = static_cast<uint8_t>(std::min(255, diff * gain));
     }
     d.pixels[i + 3] = 255;
@@ -167,8 +168,8 @@ TEST(Reference, MeasureAccuracyMatchesTheParts) {
 TEST(Reference, TimesOneFrameAt800) {
   auto demo = testing::makeDemo(makeDynamicReflectionScene());
   for (int threads : {1, 0}) {
-    auto frame = renderReference(demo->scene(), meshesOf(*demo), demo->camera(), 5.0, 800, 800,
-                                 threads);
+    auto frame =
+        renderReference(demo->scene(), meshesOf(*demo), demo->camera(), 5.0, 800, 800, threads);
     ASSERT_TRUE(frame) << frame.error();
     std::printf("reference 800x800, %s: %.1f ms\n",
                 threads == 1 ? "1 thread" : "all hardware threads", frame.value().renderMs);
@@ -191,8 +192,8 @@ TEST(Reference, TwoMirrorsAreBothTracedAsMirrors) {
   Scene scene = demo->scene();
   const int first = scene.reflectorIndex();
   SceneObject second = scene.objects[static_cast<size_t>(first)];
-  second.placement = glm::translate(glm::mat4(1.0f), glm::vec3(-3.0f, 0.0f, -1.0f)) *
-                     second.placement;
+  second.placement =
+      glm::translate(glm::mat4(1.0f), glm::vec3(-3.0f, 0.0f, -1.0f)) * second.placement;
   scene.objects.push_back(second);
   auto frame = renderReference(scene, meshesOf(*demo), demo->camera(), 0.0, 256, 256);
   ASSERT_TRUE(frame) << frame.error();
@@ -217,9 +218,9 @@ TEST(Reference, RefusesWhatItDoesNotModel) {
   scene.objects[static_cast<size_t>(scene.reflectorIndex())].material = Material::Glass;
   auto frame = renderReference(scene, meshesOf(*demo), demo->camera(), 0.0, 8, 8);
   EXPECT_FALSE(frame);
-  auto missing = renderReference(demo->scene(), [](const std::string&) -> const MeshData* {
-    return nullptr;
-  }, demo->camera(), 0.0, 8, 8);
+  auto missing = renderReference(
+      demo->scene(), [](const std::string&) -> const MeshData* { return nullptr; }, demo->camera(),
+      0.0, 8, 8);
   EXPECT_FALSE(missing);
 }
 

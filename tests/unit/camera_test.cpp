@@ -22,7 +22,8 @@ TEST(LookCamera, StartsAsTheCourseCamera) {
   LookCamera camera;
   EXPECT_EQ(camera.eye(), glm::vec3(0, 1, 7));
   EXPECT_EQ(camera.viewDirection(), glm::vec3(0, 0, -1));
-  const glm::mat4 expected = glm::lookAt(glm::vec3(0, 1, 7), glm::vec3(0, 1, 6), glm::vec3(0, 1, 0));
+  const glm::mat4 expected =
+      glm::lookAt(glm::vec3(0, 1, 7), glm::vec3(0, 1, 6), glm::vec3(0, 1, 0));
   EXPECT_EQ(camera.view(), expected);
 }
 
@@ -100,7 +101,8 @@ namespace reflect {
 namespace {
 
 TEST(NormalMatrix, IsTheInverseTransposeUpToScaleAndStaysFiniteWhenSingular) {
-  const glm::mat3 m(glm::scale(glm::rotate(glm::mat4(1.0f), 0.7f, glm::vec3(1, 2, 3)), {100, 1, 100}));
+  const glm::mat3 m(
+      glm::scale(glm::rotate(glm::mat4(1.0f), 0.7f, glm::vec3(1, 2, 3)), {100, 1, 100}));
   const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 0.9f, -0.2f));
   const glm::vec3 expected = glm::normalize(glm::inverseTranspose(m) * n);
   const glm::vec3 got = glm::normalize(normalMatrixOf(m) * n);
@@ -108,7 +110,8 @@ TEST(NormalMatrix, IsTheInverseTransposeUpToScaleAndStaysFiniteWhenSingular) {
   // A mirror keeps the normal pointing the same way as the inverse-transpose does.
   const glm::mat3 mirror(glm::scale(glm::mat4(1.0f), {-1, 1, 1}));
   EXPECT_NEAR(glm::distance(glm::normalize(normalMatrixOf(mirror) * n),
-                            glm::normalize(glm::inverseTranspose(mirror) * n)), 0.0f, 1e-6f);
+                            glm::normalize(glm::inverseTranspose(mirror) * n)),
+              0.0f, 1e-6f);
   // S(1, 0, 1) flattens a plane in y = 0: its normal must stay +Y, finite.
   const glm::mat3 flat(glm::scale(glm::mat4(1.0f), {1, 0, 1}));
   EXPECT_EQ(glm::normalize(normalMatrixOf(flat) * glm::vec3(0, 1, 0)), glm::vec3(0, 1, 0));

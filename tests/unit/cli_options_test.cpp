@@ -6,8 +6,8 @@ namespace reflect {
 namespace {
 
 TEST(CliOptions, ParsesRender) {
-  auto r = parseCli({"render", "--size", "640x480", "--time", "2.5", "--out", "a.png", "--assets",
-                     "/course"});
+  auto r = parseCli(
+      {"render", "--size", "640x480", "--time", "2.5", "--out", "a.png", "--assets", "/course"});
   ASSERT_TRUE(r) << r.error();
   EXPECT_EQ(r.value().command, "render");
   EXPECT_EQ(r.value().width, 640);

@@ -69,14 +69,19 @@ TEST(FramePlanner, CullsObjectsPerFace) {
 
 TEST(FramePlanner, NearAndFarPlanesCull) {
   const glm::vec3 c(0.0f);
-  EXPECT_FALSE(faceMaySee(c, kPX, 1.0f, 100.0f, transformBounds(kUnitBox, glm::translate(glm::mat4(1.0f), {200, 0, 0}))));
-  EXPECT_TRUE(faceMaySee(c, kPX, 1.0f, 100.0f, transformBounds(kUnitBox, glm::translate(glm::mat4(1.0f), {100.3f, 0, 0}))));
-  EXPECT_FALSE(faceMaySee(c, kPX, 1.0f, 100.0f, transformBounds(kUnitBox, glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)))));
+  EXPECT_FALSE(faceMaySee(c, kPX, 1.0f, 100.0f,
+                          transformBounds(kUnitBox, glm::translate(glm::mat4(1.0f), {200, 0, 0}))));
+  EXPECT_TRUE(
+      faceMaySee(c, kPX, 1.0f, 100.0f,
+                 transformBounds(kUnitBox, glm::translate(glm::mat4(1.0f), {100.3f, 0, 0}))));
+  EXPECT_FALSE(faceMaySee(c, kPX, 1.0f, 100.0f,
+                          transformBounds(kUnitBox, glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)))));
 }
 
 TEST(FramePlanner, StaticSceneCapturesOnce) {
   FramePlanner planner;
-  const std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), boxAt({5, 0, 0}), boxAt({0, 0, -5})};
+  const std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), boxAt({5, 0, 0}),
+                                            boxAt({0, 0, -5})};
   EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 6);
   for (int frame = 0; frame < 5; ++frame) EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 0);
 }
@@ -164,7 +169,8 @@ TEST(FramePlanner, EveryFramePolicyIsTheCourseScheme) {
   FramePlanner planner;
   PlannerSettings original;
   original.policy = UpdatePolicy::EveryFrame;
-  const std::vector<PlannedObject> scene = {boxAt({5, 0, 0}), mirrorAt({0, 0, 0}), boxAt({0, 9, 0})};
+  const std::vector<PlannedObject> scene = {boxAt({5, 0, 0}), mirrorAt({0, 0, 0}),
+                                            boxAt({0, 9, 0})};
   for (int frame = 0; frame < 3; ++frame) {
     const FramePlan plan = planner.plan(scene, {}, original);
     ASSERT_EQ(plan.facesCaptured(), 6);
@@ -229,9 +235,10 @@ TEST(FramePlanner, CoarserLevelsForObjectsSmallInTheFace) {
   };
   // Bounding radius sqrt(3)/2. At 3 units: 37 px radius, 4280 px^2, wants 2140 triangles: level 0.
   // At 5 units: 22 px, wants 774: level 1. At 40 units: 2.8 px, wants 12: level 2 (the last).
-  const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}), withLevels(boxAt({3, 0, 0})),
-                                       withLevels(boxAt({0, 0, -5})), withLevels(boxAt({0, 0, 40}))},
-                                      {}, lod);
+  const FramePlan plan =
+      planner.plan({mirrorAt({0, 0, 0}), withLevels(boxAt({3, 0, 0})),
+                    withLevels(boxAt({0, 0, -5})), withLevels(boxAt({0, 0, 40}))},
+                   {}, lod);
   auto drawOf = [&](int face, int object) {
     for (const FacePlan& f : plan.probes[0].faces)
       for (const DrawItem& d : f.draws)
@@ -279,8 +286,8 @@ TEST(FramePlanner, ViewLodPicksLevelsByTheObjectsSizeInTheView) {
 TEST(FramePlanner, DrawsOnlyTheChunksAFaceCanSee) {
   // One object whose two chunks sit on either side of the probe.
   const std::vector<MeshChunk> chunks = {
-      {{0, 300}, {{4, -1, -1}, {6, 1, 1}}},    // +X side, 100 triangles
-      {{300, 600}, {{-6, -1, -1}, {-4, 1, 1}}}, // -X side, 200 triangles
+      {{0, 300}, {{4, -1, -1}, {6, 1, 1}}},      // +X side, 100 triangles
+      {{300, 600}, {{-6, -1, -1}, {-4, 1, 1}}},  // -X side, 200 triangles
   };
   PlannedObject wide;
   wide.localBounds = {{-6, -1, -1}, {6, 1, 1}};

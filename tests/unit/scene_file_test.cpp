@@ -67,7 +67,8 @@ TEST(SceneFile, MaterialsAnimationsProbesAndSkyboxes) {
       {"mesh": "b.obj", "material": {"type": "mirror", "environment": "skybox"}, "probe": "p"},
       {"mesh": "c.obj", "material": {"type": "cube-textured"}, "probeCentre": [0, 0, 0],
        "animation": {"type": "spin", "degreesPerSecond": 90, "axis": [1, 1, 1]}}
-    ]})", "x.json");
+    ]})",
+                                   "x.json");
   ASSERT_TRUE(r) << r.error();
   const Scene& s = r.value();
   EXPECT_EQ(s.skybox.faces[0], "sky/day_px.png");
@@ -81,30 +82,39 @@ TEST(SceneFile, MaterialsAnimationsProbesAndSkyboxes) {
   EXPECT_EQ(s.objects[2].motion, Motion::Spin);
   EXPECT_EQ(*s.objects[2].probeCentre, glm::vec3(0));
   EXPECT_EQ(s.reflectorIndex(), 0);
-  Result<Scene> cross = parseSceneJson(R"({"skybox": {"cross": "sky.png"}, "objects": [{"mesh": "a.obj"}]})", "y.json");
+  Result<Scene> cross = parseSceneJson(
+      R"({"skybox": {"cross": "sky.png"}, "objects": [{"mesh": "a.obj"}]})", "y.json");
   ASSERT_TRUE(cross) << cross.error();
   EXPECT_EQ(cross.value().skybox.cross, "sky.png");
 }
 
 TEST(SceneFile, ErrorsNameTheFileAndTheKeyPath) {
-  EXPECT_EQ(errorOf("{\"objects\": [\n  {\"mesh\": }\n]}").rfind("x.json: not valid JSON: line 2, column 12", 0), 0u);
+  EXPECT_EQ(errorOf("{\"objects\": [\n  {\"mesh\": }\n]}")
+                .rfind("x.json: not valid JSON: line 2, column 12", 0),
+            0u);
   EXPECT_EQ(errorOf("[]"), "x.json: top level: expected an object");
   EXPECT_EQ(errorOf("{}"), "x.json: objects: missing (expected an array)");
   EXPECT_EQ(errorOf(R"({"objects": []})"), "x.json: objects: a scene needs at least one object");
-  EXPECT_EQ(errorOf(R"({"objects": [{"mesh": "a.obj"}], "colour": 1})"), "x.json: colour: unknown key");
-  EXPECT_EQ(errorOf(withObject(std::string(kQuad) + R"(, {"mesh": "b.obj"}, {"mesh": "c.obj", "material": {"type": "glass", "ior": "high"}})")),
-            "x.json: objects[2].material.ior: expected a number");
+  EXPECT_EQ(errorOf(R"({"objects": [{"mesh": "a.obj"}], "colour": 1})"),
+            "x.json: colour: unknown key");
+  EXPECT_EQ(
+      errorOf(withObject(
+          std::string(kQuad) +
+          R"(, {"mesh": "b.obj"}, {"mesh": "c.obj", "material": {"type": "glass", "ior": "high"}})")),
+      "x.json: objects[2].material.ior: expected a number");
   EXPECT_EQ(errorOf(withObject(R"({"mesh": "c.obj", "material": {"type": "glass", "ior": 0.5}})")),
             "x.json: objects[0].material.ior: expected a number from 1 to 4");
   EXPECT_EQ(errorOf(withObject(R"({"mesh": "c.obj", "material": {"type": "chrome"}})")),
-            "x.json: objects[0].material.type: expected \"phong\", \"mirror\", \"glass\" or \"cube-textured\"");
+            "x.json: objects[0].material.type: expected \"phong\", \"mirror\", \"glass\" or "
+            "\"cube-textured\"");
   EXPECT_EQ(errorOf(withObject(R"({"mesh": "../../etc/passwd"})")),
             "x.json: objects[0].mesh: expected a relative file path (letters, digits, _ - . /)");
   EXPECT_EQ(errorOf(withObject(R"({"colour": [1, 1, 1]})")),
             "x.json: objects[0].mesh: missing (expected an .obj file name)");
   EXPECT_EQ(errorOf(withObject(R"({"mesh": "a.obj", "translate": [1, 2]})")),
             "x.json: objects[0].translate: expected an array of 3 numbers");
-  EXPECT_EQ(errorOf(withObject(R"({"mesh": "a.obj", "animation": {"type": "orbit", "axis": [0, 0, 0]}})")),
+  EXPECT_EQ(errorOf(withObject(
+                R"({"mesh": "a.obj", "animation": {"type": "orbit", "axis": [0, 0, 0]}})")),
             "x.json: objects[0].animation.axis: must not be zero");
   EXPECT_EQ(errorOf(R"({"objects": [{"mesh": "a.obj"}], "capture": {"faceSize": 100000}})"),
             "x.json: capture.faceSize: expected a number from 1 to 4096");

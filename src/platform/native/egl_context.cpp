@@ -21,7 +21,8 @@ Result<std::unique_ptr<HeadlessGlContext>> HeadlessGlContext::create() {
   auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
       eglGetProcAddress("eglGetPlatformDisplayEXT"));
   if (!getPlatformDisplay) return Out::failure("EGL: eglGetPlatformDisplayEXT is not available");
-  EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLDisplay display =
+      getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (display == EGL_NO_DISPLAY) return Out::failure(eglFailure("surfaceless display"));
   if (!eglInitialize(display, nullptr, nullptr)) return Out::failure(eglFailure("eglInitialize"));
   if (!eglBindAPI(EGL_OPENGL_ES_API)) return Out::failure(eglFailure("eglBindAPI"));

@@ -10,11 +10,11 @@
 #include "app/headless_frames.h"
 #include "app/policy_bench.h"
 #include "core/image.h"
+#include "platform/native/egl_context.h"
+#include "platform/native/model_paths.h"
 #include "reference/accuracy.h"
 #include "reference/reference_renderer.h"
 #include "reference/sweep.h"
-#include "platform/native/egl_context.h"
-#include "platform/native/model_paths.h"
 
 namespace {
 
@@ -74,11 +74,12 @@ int runRender(const CliOptions& o) {
   if (!error.empty()) return fail(error);
   auto report = reflect::measureAccuracy(*demo.value(), o.time, o.width, o.height);
   if (!report) return fail(report.error());
-  std::printf("wrote %s; reflector: PSNR %.2f dB, RMSE %.2f, p95 %d, max %d, mean angular error "
-              "%.3f deg\n",
-              o.referenceOut.c_str(), report.value().reflector.psnrDb, report.value().reflector.rmse,
-              report.value().reflector.p95PixelError, report.value().reflector.maxPixelError,
-              report.value().meanAngularErrorDeg);
+  std::printf(
+      "wrote %s; reflector: PSNR %.2f dB, RMSE %.2f, p95 %d, max %d, mean angular error "
+      "%.3f deg\n",
+      o.referenceOut.c_str(), report.value().reflector.psnrDb, report.value().reflector.rmse,
+      report.value().reflector.p95PixelError, report.value().reflector.maxPixelError,
+      report.value().meanAngularErrorDeg);
   return 0;
 }
 
@@ -89,10 +90,11 @@ int runSingleBench(const CliOptions& o) {
   auto r = reflect::benchFrames(*demo.value(), o.width, o.height, o.warmup, o.frames);
   if (!r) return fail(r.error());
   const reflect::BenchResult& b = r.value();
-  std::printf("policy %s, %d frames at %dx%d, cube %d: %d draw calls and %zu triangles in the "
-              "last frame\n",
-              reflect::policyName(o.planner.policy), o.frames, o.width, o.height, o.cubeSize,
-              b.drawCallsPerFrame, b.trianglesPerFrame);
+  std::printf(
+      "policy %s, %d frames at %dx%d, cube %d: %d draw calls and %zu triangles in the "
+      "last frame\n",
+      reflect::policyName(o.planner.policy), o.frames, o.width, o.height, o.cubeSize,
+      b.drawCallsPerFrame, b.trianglesPerFrame);
   std::printf("frame ms   median %.3f  p10 %.3f  p90 %.3f\n", reflect::median(b.frameMs),
               reflect::percentile(b.frameMs, 0.1), reflect::percentile(b.frameMs, 0.9));
   std::printf("capture ms median %.3f  p10 %.3f  p90 %.3f\n", reflect::median(b.captureMs),
@@ -119,7 +121,8 @@ int runPolicyBench(const CliOptions& o) {
   std::snprintf(viewLodLabel, sizeof viewLodLabel, "when-changed + LOD, view LOD (%.2g, %.2g)", lod,
                 viewLod);
   char sliceLabel[64], everyLabel[64];
-  std::snprintf(sliceLabel, sizeof sliceLabel, "time-sliced (%d faces/frame)", o.planner.facesPerFrame);
+  std::snprintf(sliceLabel, sizeof sliceLabel, "time-sliced (%d faces/frame)",
+                o.planner.facesPerFrame);
   std::snprintf(everyLabel, sizeof everyLabel, "every-n (N = %d)", o.planner.everyN);
   const std::vector<PolicyCase> animated = {
       {"every-frame (the course)", settings(UpdatePolicy::EveryFrame, 0), false},
@@ -176,10 +179,11 @@ int runSweepBench(const CliOptions& o) {
   const reflect::SweepDemoFactory factory = [&]() { return makeDemo(plain, false); };
   auto rows = reflect::runSweep(factory, reflect::sweepSettings(), options);
   if (!rows) return fail(rows.error());
-  std::printf("sweep: scene %s, %dx%d, every-frame capture, %d timed frames per setting, errors "
-              "over the reflector at t = 0, 2, 4 s against the Embree reference\n\n%s",
-              o.scene.c_str(), options.width, options.height, options.frames,
-              reflect::sweepTable(rows.value()).c_str());
+  std::printf(
+      "sweep: scene %s, %dx%d, every-frame capture, %d timed frames per setting, errors "
+      "over the reflector at t = 0, 2, 4 s against the Embree reference\n\n%s",
+      o.scene.c_str(), options.width, options.height, options.frames,
+      reflect::sweepTable(rows.value()).c_str());
   const reflect::SweepRow* original = nullptr;
   const reflect::SweepRow* byDefault = nullptr;
   const reflect::SweepRow* centre = nullptr;
@@ -191,11 +195,11 @@ int runSweepBench(const CliOptions& o) {
   if (original && byDefault && centre) {
     std::printf("\ndefault vs original: %+.2f dB reflector PSNR at %.2fx the frame time\n",
                 byDefault->psnrDb - original->psnrDb, byDefault->medianMs / original->medianMs);
-    std::printf("distance-corrected (default) mean angular error %.3f deg = %.2fx the plain "
-                "lookup's (centre) %.3f deg\n",
-                byDefault->meanAngularErrorDeg,
-                byDefault->meanAngularErrorDeg / centre->meanAngularErrorDeg,
-                centre->meanAngularErrorDeg);
+    std::printf(
+        "distance-corrected (default) mean angular error %.3f deg = %.2fx the plain "
+        "lookup's (centre) %.3f deg\n",
+        byDefault->meanAngularErrorDeg,
+        byDefault->meanAngularErrorDeg / centre->meanAngularErrorDeg, centre->meanAngularErrorDeg);
   }
   auto write = [](const std::string& path, const std::string& text) {
     if (path.empty()) return true;

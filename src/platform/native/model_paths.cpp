@@ -36,12 +36,16 @@ std::string loadSkybox(Demo& demo) {
 
 }  // namespace
 
-std::string builtInAssetDirectory() { return REFLECT_ASSET_DIR; }
-std::string builtInModelDirectory() { return builtInAssetDirectory() + "/models"; }
+std::string builtInAssetDirectory() {
+  return REFLECT_ASSET_DIR;
+}
+std::string builtInModelDirectory() {
+  return builtInAssetDirectory() + "/models";
+}
 
 Result<Scene> loadNamedScene(const std::string& nameOrPath) {
-  const bool isPath = nameOrPath.find('/') != std::string::npos ||
-                      nameOrPath.find(".json") != std::string::npos;
+  const bool isPath =
+      nameOrPath.find('/') != std::string::npos || nameOrPath.find(".json") != std::string::npos;
   return loadSceneFile(isPath ? nameOrPath
                               : builtInAssetDirectory() + "/scenes/" + nameOrPath + ".json");
 }

@@ -89,8 +89,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_load_mesh(int pending, const char* name, con
 }
 
 // Skybox image `index` (in the order of rf_pending_files) as PNG/JPEG bytes.
-EMSCRIPTEN_KEEPALIVE const char* rf_pending_skybox_image(int index, const uint8_t* bytes, int length,
-                                                         const char* source) {
+EMSCRIPTEN_KEEPALIVE const char* rf_pending_skybox_image(int index, const uint8_t* bytes,
+                                                         int length, const char* source) {
   auto& pending = state().pending;
   if (!pending.demo || index < 0 || static_cast<size_t>(index) >= pending.skyboxImages.size()) {
     return returnText(std::string(source) + ": not an image this scene asked for");
@@ -183,9 +183,9 @@ EMSCRIPTEN_KEEPALIVE const char* rf_mesh_bounds_json(const char* name) {
   const reflect::MeshData* mesh = state().demo ? state().demo->meshLevel(name, 0) : nullptr;
   if (!mesh) return returnText("{}");
   char buffer[200];
-  std::snprintf(buffer, sizeof buffer, "{\"min\":[%g,%g,%g],\"max\":[%g,%g,%g]}", mesh->bounds.min.x,
-                mesh->bounds.min.y, mesh->bounds.min.z, mesh->bounds.max.x, mesh->bounds.max.y,
-                mesh->bounds.max.z);
+  std::snprintf(buffer, sizeof buffer, "{\"min\":[%g,%g,%g],\"max\":[%g,%g,%g]}",
+                mesh->bounds.min.x, mesh->bounds.min.y, mesh->bounds.min.z, mesh->bounds.max.x,
+                mesh->bounds.max.y, mesh->bounds.max.z);
   return returnText(buffer);
 }
 
