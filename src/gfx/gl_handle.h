@@ -48,62 +48,30 @@ class GlHandle {
   GLuint id_ = 0;
 };
 
-namespace gl_delete {
-inline void buffer(GLuint id) {
-  glDeleteBuffers(1, &id);
+// GL's glDelete*/glGen* work on arrays of names; a handle owns one.
+template <void (*DeleteNames)(GLsizei, const GLuint*)>
+void deleteOne(GLuint id) {
+  DeleteNames(1, &id);
 }
-inline void vertexArray(GLuint id) {
-  glDeleteVertexArrays(1, &id);
+template <void (*GenerateNames)(GLsizei, GLuint*)>
+GLuint generateOne() {
+  GLuint id = 0;
+  GenerateNames(1, &id);
+  return id;
 }
-inline void texture(GLuint id) {
-  glDeleteTextures(1, &id);
-}
-inline void framebuffer(GLuint id) {
-  glDeleteFramebuffers(1, &id);
-}
-inline void renderbuffer(GLuint id) {
-  glDeleteRenderbuffers(1, &id);
-}
-inline void program(GLuint id) {
-  glDeleteProgram(id);
-}
-inline void shader(GLuint id) {
-  glDeleteShader(id);
-}
-}  // namespace gl_delete
 
-using BufferHandle = GlHandle<gl_delete::buffer>;
-using VertexArrayHandle = GlHandle<gl_delete::vertexArray>;
-using TextureHandle = GlHandle<gl_delete::texture>;
-using FramebufferHandle = GlHandle<gl_delete::framebuffer>;
-using RenderbufferHandle = GlHandle<gl_delete::renderbuffer>;
-using ProgramHandle = GlHandle<gl_delete::program>;
-using ShaderHandle = GlHandle<gl_delete::shader>;
+using BufferHandle = GlHandle<deleteOne<glDeleteBuffers>>;
+using VertexArrayHandle = GlHandle<deleteOne<glDeleteVertexArrays>>;
+using TextureHandle = GlHandle<deleteOne<glDeleteTextures>>;
+using FramebufferHandle = GlHandle<deleteOne<glDeleteFramebuffers>>;
+using RenderbufferHandle = GlHandle<deleteOne<glDeleteRenderbuffers>>;
+using ProgramHandle = GlHandle<glDeleteProgram>;
+using ShaderHandle = GlHandle<glDeleteShader>;
 
-inline GLuint genBuffer() {
-  GLuint id = 0;
-  glGenBuffers(1, &id);
-  return id;
-}
-inline GLuint genVertexArray() {
-  GLuint id = 0;
-  glGenVertexArrays(1, &id);
-  return id;
-}
-inline GLuint genTexture() {
-  GLuint id = 0;
-  glGenTextures(1, &id);
-  return id;
-}
-inline GLuint genFramebuffer() {
-  GLuint id = 0;
-  glGenFramebuffers(1, &id);
-  return id;
-}
-inline GLuint genRenderbuffer() {
-  GLuint id = 0;
-  glGenRenderbuffers(1, &id);
-  return id;
-}
+constexpr auto genBuffer = generateOne<glGenBuffers>;
+constexpr auto genVertexArray = generateOne<glGenVertexArrays>;
+constexpr auto genTexture = generateOne<glGenTextures>;
+constexpr auto genFramebuffer = generateOne<glGenFramebuffers>;
+constexpr auto genRenderbuffer = generateOne<glGenRenderbuffers>;
 
 }  // namespace reflect
