@@ -50,9 +50,10 @@ std::string firstNonFiniteAttribute(const std::string& text, const tinyobj::attr
        {Attribute{attrib.vertices, "v"}, Attribute{attrib.normals, "vn"}}) {
     for (size_t i = 0; i < attribute.values.size(); ++i) {
       if (std::isfinite(attribute.values[i])) continue;
-      const size_t line = lineOfAttribute(text, attribute.keyword, i / 3);
-      return "line " + std::to_string(line) + ": a number on this '" + attribute.keyword +
-             "' line reads as infinite or NaN (its exponent or digit count is out of range)";
+      return lineError(lineOfAttribute(text, attribute.keyword, i / 3),
+                       std::string("a number on this '") + attribute.keyword +
+                           "' line reads as infinite or NaN (its exponent or digit count is out "
+                           "of range)");
     }
   }
   return {};

@@ -39,10 +39,6 @@ bool parseIndex(std::string_view token, long* out) {
   return true;
 }
 
-std::string lineError(size_t lineNumber, const std::string& what) {
-  return "line " + std::to_string(lineNumber) + ": " + what;
-}
-
 // One face corner: "v", "v/t", "v//n" or "v/t/n". Returns an empty string when valid.
 std::string checkCorner(std::string_view corner, const ObjCounts& counts) {
   const size_t available[3] = {counts.positions, counts.texcoords, counts.normals};
@@ -90,6 +86,10 @@ void forEachLine(const std::string& text, Visit visit) {
 }
 
 }  // namespace
+
+std::string lineError(size_t lineNumber, const std::string& what) {
+  return "line " + std::to_string(lineNumber) + ": " + what;
+}
 
 size_t lineOfAttribute(const std::string& text, std::string_view keyword, size_t ordinal) {
   size_t found = 0;

@@ -20,6 +20,9 @@ struct ObjCounts {
 // Returns the counts, or an error "line N: ..." (without the file name; the caller adds it).
 Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limits);
 
+// "line N: what", the form of every per-line message about an OBJ file.
+std::string lineError(size_t lineNumber, const std::string& what);
+
 // The 1-based line number of the ordinal-th (0-based) line starting with `keyword` ("v", "vn"),
 // split into lines as validateObjText does; 0 if there are fewer such lines.
 size_t lineOfAttribute(const std::string& text, std::string_view keyword, size_t ordinal);
