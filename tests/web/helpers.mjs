@@ -117,10 +117,6 @@ export function expectedSphereBox(width, height, options) {
   return { x0, y0, x1, y1, cx: (x0 + x1) / 2, cy: (y0 + y1) / 2 };
 }
 
-// Gold-sphere pixels: shading is 0.78 * reflection + 0.3 * (0.95, 0.85, 0.4), so wherever the
-// sphere reflects the grey background or the blue ground (both have red == green) its red exceeds
-// its green by 0.3 * 0.1 * 255 = 7.65 levels. The ground and the background have red == green;
-// the red figure has red - green >= 30; the green figure has green > red.
 // Pixels inside the sphere's expected box whose colour differs by more than 8 levels.
 export function changedInSphere(a, b) {
   const box = expectedSphereBox(a.width, a.height);
@@ -128,12 +124,17 @@ export function changedInSphere(a, b) {
   for (let y = box.y0; y <= box.y1; ++y) {
     for (let x = box.x0; x <= box.x1; ++x) {
       const i = (y * a.width + x) * 4;
-      if (Math.max(...[0, 1, 2].map((k) => Math.abs(a.data[i + k] - b.data[i + k]))) > 8) ++n;
+      const differs = (k) => Math.abs(a.data[i + k] - b.data[i + k]) > 8;
+      if (differs(0) || differs(1) || differs(2)) ++n;
     }
   }
   return n;
 }
 
+// Gold-sphere pixels: shading is 0.78 * reflection + 0.3 * (0.95, 0.85, 0.4), so wherever the
+// sphere reflects the grey background or the blue ground (both have red == green) its red exceeds
+// its green by 0.3 * 0.1 * 255 = 7.65 levels. The ground and the background have red == green;
+// the red figure has red - green >= 30; the green figure has green > red.
 export function isGold([r, g, b]) {
   const d = r - g;
   return d >= 4 && d <= 12 && r > 60;
