@@ -33,8 +33,7 @@ struct CliOptions {
   bool sweep = false;        // bench: accuracy settings against the ray-traced reference
   std::string referenceOut;  // render: also write the ray-traced reference of the same frame
   std::string csv;           // sweep: CSV output
-  std::string
-      svg;  // sweep: SVG plot output  // bench: frames compared against the every-frame policy
+  std::string svg;           // sweep: SVG plot output
 };
 
 Result<CliOptions> parseCli(const std::vector<std::string>& args);
