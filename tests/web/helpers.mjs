@@ -117,18 +117,23 @@ export function expectedSphereBox(width, height, options) {
   return { x0, y0, x1, y1, cx: (x0 + x1) / 2, cy: (y0 + y1) / 2 };
 }
 
-// Pixels inside the sphere's expected box whose colour differs by more than 8 levels.
-export function changedInSphere(a, b) {
-  const box = expectedSphereBox(a.width, a.height);
+// Pixels of two same-sized images, within `box` (default: all of them), whose colour differs in
+// some channel by more than `threshold` levels.
+export function countChanged(a, b, threshold, box = { x0: 0, y0: 0, x1: a.width - 1, y1: a.height - 1 }) {
   let n = 0;
   for (let y = box.y0; y <= box.y1; ++y) {
     for (let x = box.x0; x <= box.x1; ++x) {
       const i = (y * a.width + x) * 4;
-      const differs = (k) => Math.abs(a.data[i + k] - b.data[i + k]) > 8;
+      const differs = (k) => Math.abs(a.data[i + k] - b.data[i + k]) > threshold;
       if (differs(0) || differs(1) || differs(2)) ++n;
     }
   }
   return n;
+}
+
+// Pixels inside the sphere's expected box whose colour differs by more than 8 levels.
+export function changedInSphere(a, b) {
+  return countChanged(a, b, 8, expectedSphereBox(a.width, a.height));
 }
 
 // Gold-sphere pixels: shading is 0.78 * reflection + 0.3 * (0.95, 0.85, 0.4), so wherever the

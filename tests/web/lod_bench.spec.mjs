@@ -1,7 +1,7 @@
 // Levels of detail built in the browser with meshoptimizer (for captures and the main view), and
 // the page's bench mode.
 import { test, expect } from '@playwright/test';
-import { collectErrors, openDemo, renderAndRead } from './helpers.mjs';
+import { collectErrors, countChanged, openDemo, renderAndRead } from './helpers.mjs';
 
 test('LOD levels are built for every mesh after the scene loads, by the native rules', async ({ page }) => {
   const infos = [];
@@ -56,11 +56,7 @@ test('view LOD draws the figures with fewer triangles in the main pass; vlod= is
   expect(coarse.stats.mainTriangles, `main triangles ${coarse.stats.mainTriangles} vs ${full.stats.mainTriangles}`)
     .toBeLessThan(full.stats.mainTriangles * 0.75);
   // The picture changes little: the figures are small on screen.
-  let differing = 0;
-  for (let i = 0; i < full.data.length; i += 4) {
-    if (Math.max(...[0, 1, 2].map((c) => Math.abs(full.data[i + c] - coarse.data[i + c]))) > 16) ++differing;
-  }
-  expect(differing / (full.width * full.height)).toBeLessThan(0.02);
+  expect(countChanged(full, coarse, 16) / (full.width * full.height)).toBeLessThan(0.02);
   await expect.poll(() => new URL(page.url()).search).not.toContain('vlod=');
   expect(errors).toEqual([]);
 });
