@@ -35,4 +35,7 @@ fi
 echo "== web build and Playwright"
 cmake --preset web >/dev/null
 cmake --build --preset web
+# A port nobody holds right now (a shared machine may run another server on any fixed one).
+TEST_PORT="${TEST_PORT:-$(node -e "const s=require('net').createServer().listen(0,'127.0.0.1',()=>{console.log(s.address().port);s.close();})")}"
+export TEST_PORT
 npx playwright test

@@ -5,7 +5,7 @@ import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize, resolve, sep } from 'node:path';
 
 const root = resolve(process.argv[2] || 'build/web/site');
-const port = Number(process.env.PORT || process.argv[3] || 8080);
+const port = Number(process.argv[3] ?? process.env.PORT ?? 8080);  // the argument wins
 const types = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8',
   '.mjs': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',

@@ -12,8 +12,10 @@ ensure_debian_packages() {
   echo "Installing Debian packages: ${missing[*]}"
   local sudo=""
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
-  $sudo apt-get update -q
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+  # Retries ride out a mirror's brief hiccup, which would otherwise fail a whole CI run.
+  $sudo apt-get -o Acquire::Retries=5 update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get -o Acquire::Retries=5 install -y -q \
+    --no-install-recommends "${missing[@]}"
 }
 
 ensure_npm_packages() {
@@ -22,7 +24,7 @@ ensure_npm_packages() {
   local want
   want=$(sha256sum package-lock.json | cut -d' ' -f1)
   if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
-    npm ci --no-audit --no-fund
+    npm ci --no-audit --no-fund --fetch-retries=5
     echo "$want" >"$stamp"
   fi
 }
@@ -32,5 +34,6 @@ export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 
 WEB_PACKAGES=(emscripten node-acorn libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev cmake make)
 NATIVE_PACKAGES=(g++ cmake make pkg-config libglm-dev nlohmann-json3-dev libembree-dev libstb-dev libtinyobjloader-dev libgtest-dev libmeshoptimizer-dev
-                 libgles-dev libegl-dev libegl-mesa0 libgl1-mesa-dri clang lld libclang-rt-14-dev clang-format)
+                 libgles-dev libegl-dev libegl-mesa0 libgl1-mesa-dri clang lld libclang-rt-14-dev clang-format
+                 libcli11-dev)
 BROWSER_PACKAGES=(chromium)

@@ -8,6 +8,7 @@
 #include "core/mesh_chunks.h"
 #include "core/mesh_lod.h"
 #include "core/obj_loader.h"
+#include "core/probe_layout.h"
 #include "core/scene_file.h"
 #include "gfx/gl.h"
 
@@ -60,7 +61,6 @@ std::string Demo::addLodLevel(const std::string& name, const std::vector<uint32_
   chunkMesh(level);
   if (renderer_) renderer_->setMesh(name, static_cast<int>(it->second.size()), level);
   it->second.push_back(std::move(level));
-  ++optionsRevision_;  // faces drawn before may have used a coarser level than now exists
   return {};
 }
 
@@ -77,10 +77,7 @@ std::string Demo::setMaterialJson(int index, const std::string& json) {
   if (index < 0 || index >= static_cast<int>(scene_.objects.size())) {
     return "no object " + std::to_string(index);
   }
-  std::string error =
-      applyMaterialJson(json, "material", scene_.objects[static_cast<size_t>(index)]);
-  if (error.empty()) ++optionsRevision_;  // other probes may show this object
-  return error;
+  return applyMaterialJson(json, "material", scene_.objects[static_cast<size_t>(index)]);
 }
 
 std::string Demo::setSkybox(CubeFaces faces) {
@@ -88,8 +85,8 @@ std::string Demo::setSkybox(CubeFaces faces) {
     std::string error = renderer_->setSkybox(faces);
     if (!error.empty()) return error;
   }
+  skyboxContent_ = contentHash(faces);
   skybox_ = std::move(faces);
-  ++optionsRevision_;  // captures show the sky
   return {};
 }
 
@@ -115,7 +112,6 @@ bool Demo::hasAllMeshes() const {
 }
 
 void Demo::setPlannerSettings(const PlannerSettings& settings) {
-  if (settings.lodTrianglesPerPixel != plannerSettings_.lodTrianglesPerPixel) ++optionsRevision_;
   plannerSettings_ = settings;
 }
 
@@ -127,8 +123,9 @@ std::string Demo::setCubeFaceSize(int size) {
 }
 
 unsigned Demo::environmentTexture() const {
+  // The first reflector in object order owns the probe it samples.
   const int reflector = scene_.reflectorIndex();
-  return renderer_ && reflector >= 0 ? renderer_->environmentTexture(scene_, reflector) : 0;
+  return renderer_ && reflector >= 0 ? renderer_->probeTexture(reflector) : 0;
 }
 
 std::string Demo::initGraphics() {
@@ -161,7 +158,6 @@ std::string Demo::setAccuracySettings(const AccuracySettings& settings) {
   }
   if (settings == accuracy_) return {};
   accuracy_ = settings;
-  ++optionsRevision_;
   return renderer_ ? initGraphics() : std::string();
 }
 
@@ -170,9 +166,9 @@ void Demo::renderLookupDirections(unsigned framebuffer, int width, int height) {
   const ViewParams view{camera_.view(),
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
-  renderer_->drawMain(scene_, clock_.seconds(), view,
-                      viewDraws(plannedObjects(clock_.seconds()), height), framebuffer, width,
-                      height, true);
+  const std::vector<PlannedObject> objects = plannedObjects(clock_.seconds());
+  renderer_->drawMain(scene_, clock_.seconds(), FramePlanner::layout(objects), view,
+                      viewDraws(objects, height), framebuffer, width, height, true);
 }
 
 std::vector<DrawItem> Demo::viewDraws(const std::vector<PlannedObject>& objects, int height) const {
@@ -211,10 +207,10 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
     p.meshRevision = revision == meshRevisions_.end() ? 0 : revision->second;
     p.model = scene_.modelMatrix(object, seconds);
     p.colour = object.colour;
+    p.look = object.look();
     p.probed = object.needsLiveProbe();
     p.probeGroup = object.probeGroup;
-    p.probeCentre = object.probeCentre;
-    if (accuracy_.captureAtOrigin) p.probeCentre = glm::vec3(0.0f);  // where the course captures
+    p.probeCentre = capturePoint(object.probeCentre, accuracy_.captureAtOrigin);
     planned.push_back(p);
   }
   return planned;
@@ -234,8 +230,15 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   if (!renderer_ || width < 1 || height < 1) return stats_;  // hidden canvas: nothing to draw
 
   const auto start = std::chrono::steady_clock::now();
-  const CaptureContext context{camera_.eye(), scene_.capture.faceSize, scene_.capture.near,
-                               scene_.capture.far, optionsRevision_};
+  const CaptureContext context{camera_.eye(),
+                               scene_.capture.faceSize,
+                               scene_.capture.near,
+                               scene_.capture.far,
+                               scene_.light,
+                               scene_.clearColour,
+                               skyboxContent_,
+                               accuracy_,
+                               plannerSettings_.captureLod};
   const std::vector<PlannedObject> objects = plannedObjects(stats_.timeSeconds);
   const FramePlan plan = planner_.plan(objects, context, plannerSettings_);
   gpuTimer_->begin(GpuTimer::kCapture);
@@ -258,8 +261,9 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
   gpuTimer_->begin(GpuTimer::kMain);
-  const PassCounts main = renderer_->drawMain(
-      scene_, stats_.timeSeconds, view, viewDraws(objects, height), framebuffer, width, height);
+  const PassCounts main =
+      renderer_->drawMain(scene_, stats_.timeSeconds, plan, view, viewDraws(objects, height),
+                          framebuffer, width, height);
   gpuTimer_->end();
   gpuTimer_->endFrame();
   if (waitForGpu) reflect::waitForGpu();

@@ -101,7 +101,7 @@ class Demo {
   FramePlanner planner_;
   PlannerSettings plannerSettings_;
   AccuracySettings accuracy_;
-  uint32_t optionsRevision_ = 0;
+  uint64_t skyboxContent_ = 0;  // contentHash(*skybox_): captures compare it by value
   std::unique_ptr<SceneRenderer> renderer_;
   std::unique_ptr<GpuTimer> gpuTimer_;
   FrameStats stats_;

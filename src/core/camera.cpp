@@ -29,6 +29,18 @@ void LookCamera::move(float steps) {
   eye_ += viewDirection() * (steps * kMoveStep);
 }
 
+void LookCamera::strafe(float steps) {
+  if (!std::isfinite(steps)) return;
+  // cross(view, up) normalised: level whatever the pitch, so looking down does not slow it.
+  const float yaw = glm::radians(yawDeg_);
+  eye_ += glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw)) * (steps * kMoveStep);
+}
+
+void LookCamera::rise(float steps) {
+  if (!std::isfinite(steps)) return;
+  eye_.y += steps * kMoveStep;
+}
+
 void LookCamera::reset() {
   eye_ = settings_.eye;
   yawDeg_ = 0.0f;

@@ -27,6 +27,11 @@ class LookCamera {
   void drag(float dx, float dy, float canvasHeight);
   // Moves along the view direction by steps * kMoveStep (negative steps move back).
   void move(float steps);
+  // Moves sideways, level with the ground, by steps * kMoveStep (positive: to the right of the
+  // view; A/D on the page).
+  void strafe(float steps);
+  // Moves straight up by steps * kMoveStep (negative: down; Q/E on the page).
+  void rise(float steps);
   void reset();
 
   glm::vec3 eye() const { return eye_; }

@@ -5,57 +5,38 @@
 
 #include "core/frustum.h"
 #include "core/mesh_chunks.h"
+#include "core/probe_layout.h"
 
 namespace reflect {
 namespace {
 
+bool sameLevels(const std::vector<PlannedLevel>& a, const std::vector<PlannedLevel>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i].triangles != b[i].triangles) return false;
+  }
+  return true;
+}
+
 bool sameState(const PlannedObject& a, const PlannedObject& b) {
-  return a.model == b.model && a.colour == b.colour && a.probeCentre == b.probeCentre &&
-         a.meshRevision == b.meshRevision && a.probed == b.probed &&
-         a.localBounds.min == b.localBounds.min && a.localBounds.max == b.localBounds.max;
+  return a.model == b.model && a.colour == b.colour && a.look == b.look &&
+         a.probeCentre == b.probeCentre && a.meshRevision == b.meshRevision &&
+         a.probed == b.probed && a.localBounds.min == b.localBounds.min &&
+         a.localBounds.max == b.localBounds.max && sameLevels(a.levels, b.levels);
 }
 
 bool contains(const std::vector<int>& list, int value) {
   return std::find(list.begin(), list.end(), value) != list.end();
 }
 
-// The centre of the members' joint world bounds (for one member: its own bounds' centre).
-glm::vec3 probeCentreOf(const std::vector<PlannedObject>& objects,
-                        const std::vector<int>& members) {
-  if (members.size() == 1) {
-    const PlannedObject& o = objects[static_cast<size_t>(members[0])];
-    if (o.probeCentre) return *o.probeCentre;
-    return glm::vec3(o.model * glm::vec4(o.localBounds.centre(), 1.0f));
+std::vector<ProbeLayout> probesOf(const std::vector<PlannedObject>& objects) {
+  std::vector<ProbeCandidate> candidates;
+  candidates.reserve(objects.size());
+  for (const PlannedObject& o : objects) {
+    candidates.push_back(ProbeCandidate{o.probed, o.probeGroup, o.probeCentre,
+                                        transformBounds(o.localBounds, o.model)});
   }
-  Bounds joint;
-  for (size_t k = 0; k < members.size(); ++k) {
-    const PlannedObject& o = objects[static_cast<size_t>(members[k])];
-    const Bounds b = transformBounds(o.localBounds, o.model);
-    joint = k == 0 ? b : Bounds{glm::min(joint.min, b.min), glm::max(joint.max, b.max)};
-  }
-  return joint.centre();
-}
-
-// Probes in object order: one per ungrouped reflector, one per group (owned by its first member).
-std::vector<std::vector<int>> probeMembers(const std::vector<PlannedObject>& objects) {
-  std::vector<std::vector<int>> probes;
-  for (size_t r = 0; r < objects.size(); ++r) {
-    if (!objects[r].probed) continue;
-    const int group = objects[r].probeGroup;
-    bool joined = false;
-    if (group >= 0) {
-      for (std::vector<int>& members : probes) {
-        const PlannedObject& owner = objects[static_cast<size_t>(members[0])];
-        if (owner.probeGroup == group) {
-          members.push_back(static_cast<int>(r));
-          joined = true;
-          break;
-        }
-      }
-    }
-    if (!joined) probes.push_back({static_cast<int>(r)});
-  }
-  return probes;
+  return layoutProbes(candidates);
 }
 
 }  // namespace
@@ -96,6 +77,20 @@ int PlannerSettings::maxStalenessFrames() const {
     default:
       return 0;
   }
+}
+
+FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects) {
+  FramePlan plan;
+  for (ProbeLayout& probe : probesOf(objects))
+    plan.probes.push_back(ProbePlan{std::move(probe), {}});
+  return plan;
+}
+
+const ProbePlan* FramePlan::probeOf(int object) const {
+  for (const ProbePlan& p : probes) {
+    if (std::find(p.members.begin(), p.members.end(), object) != p.members.end()) return &p;
+  }
+  return nullptr;
 }
 
 int FramePlan::facesCaptured() const {
@@ -157,7 +152,7 @@ std::vector<DrawItem> planViewDraws(const std::vector<PlannedObject>& objects, c
     const PlannedObject& o = objects[i];
     DrawItem item;
     item.object = static_cast<int>(i);
-    item.lod = chooseLevel(o, eye, pixelsPerTangent, settings.viewLodTrianglesPerPixel);
+    item.lod = chooseLevel(o, eye, pixelsPerTangent, settings.viewLod);
     if (!o.levels.empty()) item.triangles = o.levels[static_cast<size_t>(item.lod)].triangles;
     draws.push_back(std::move(item));
   }
@@ -183,8 +178,8 @@ std::vector<DrawItem> FramePlanner::drawsFor(const std::vector<PlannedObject>& o
     }
     if (!faceMaySee(centre, face, context.near, context.far, o.localBounds, o.model)) continue;
     // At 90 degrees one unit of tangent spans half the face.
-    item.lod = chooseLevel(o, centre, 0.5f * static_cast<float>(context.faceSize),
-                           settings.lodTrianglesPerPixel);
+    item.lod =
+        chooseLevel(o, centre, 0.5f * static_cast<float>(context.faceSize), settings.captureLod);
     if (!o.levels.empty()) {
       const PlannedLevel& level = o.levels[static_cast<size_t>(item.lod)];
       item.triangles = level.triangles;
@@ -248,8 +243,10 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   trackChanges(objects);
   FramePlan plan;
   std::vector<int> recapturedForRealChange;
-  for (const std::vector<int>& members : probeMembers(objects)) {
-    const int reflector = members.front();
+  for (ProbeLayout& layout : probesOf(objects)) {
+    ProbePlan probe{std::move(layout), {}};
+    const int reflector = probe.reflector;
+    const std::vector<int>& members = probe.members;
     auto memoryIt = std::find_if(probes_.begin(), probes_.end(),
                                  [&](const ProbeMemory& m) { return m.reflector == reflector; });
     if (memoryIt == probes_.end()) {
@@ -258,7 +255,6 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       memoryIt->reflector = reflector;
     }
     ProbeMemory& memory = *memoryIt;
-    ProbePlan probe{reflector, members, probeCentreOf(objects, members), {}};
     // The probe moved or a capture option changed: no face is valid any more.
     if (probe.centre != memory.centre || !(context == memory.context)) {
       for (FaceMemory& f : memory.faces) f.captured = false;

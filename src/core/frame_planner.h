@@ -11,7 +11,10 @@
 
 #include <glm/glm.hpp>
 
+#include "core/accuracy_settings.h"
 #include "core/mesh_data.h"
+#include "core/probe_layout.h"
+#include "core/scene.h"
 
 namespace reflect {
 
@@ -32,10 +35,10 @@ struct PlannerSettings {
   int everyN = 4;         // EveryNFrames
   // Capture level of detail: in each face an object is drawn with its coarsest level that still
   // has this many triangles per pixel of its projected bounding disc; 0 turns LOD off.
-  float lodTrianglesPerPixel = 0.0f;
+  float captureLod = 0.0f;
   // View level of detail: the same rule for the main camera's pass; 0 (the default) draws every
   // object at full detail there.
-  float viewLodTrianglesPerPixel = 0.0f;
+  float viewLod = 0.0f;
   // The largest number of frames a face may lag behind the scene under this policy.
   int maxStalenessFrames() const;
 };
@@ -51,7 +54,8 @@ struct PlannedObject {
   Bounds localBounds;
   glm::mat4 model{1.0f};
   glm::vec3 colour{1.0f};
-  uint32_t meshRevision = 0;  // bumped when the object's mesh is replaced
+  SceneObject::Look look{};   // its material, as other probes' captures show it
+  uint32_t meshRevision = 0;  // the generation of the object's mesh: new when it is replaced
   bool probed = false;        // samples a live probe of its own (mirror, glass, cube-textured)
   // Probed objects with the same group >= 0 share one probe at the centre of their joint bounds
   // (cheaper, less exact: they do not see each other); -1 = a probe of its own.
@@ -60,17 +64,18 @@ struct PlannedObject {
   std::vector<PlannedLevel> levels;      // 0 = full detail; empty: one level, no chunks
 };
 
-// Everything else a capture depends on. Any change recaptures every face.
+// Everything else a capture depends on, compared by value: any change recaptures every face.
 struct CaptureContext {
   glm::vec3 lightingEye{0.0f};  // the course lights captures from the main camera's eye
   int faceSize = 256;
   float near = 1.0f;
   float far = 100.0f;
-  uint32_t revision = 0;  // bumped by the caller for any other option (light, clear colour...)
-  bool operator==(const CaptureContext& o) const {
-    return lightingEye == o.lightingEye && faceSize == o.faceSize && near == o.near &&
-           far == o.far && revision == o.revision;
-  }
+  PhongLight light;
+  glm::vec3 clearColour{0.4f};
+  uint64_t skyboxContent = 0;  // a hash of the skybox's pixels (0: none)
+  AccuracySettings accuracy;
+  float captureLod = 0.0f;
+  bool operator==(const CaptureContext&) const = default;
 };
 
 struct DrawItem {
@@ -85,20 +90,22 @@ struct FacePlan {
   std::vector<DrawItem> draws;
 };
 
-struct ProbePlan {
-  int reflector = 0;         // index of the reflective object that owns the probe
-  std::vector<int> members;  // every reflector that samples it (the owner first)
-  glm::vec3 centre{0.0f};
+// A probe (who samples it, where it captures from) and the faces it redraws this frame.
+struct ProbePlan : ProbeLayout {
   std::vector<FacePlan> faces;  // only the faces to redraw this frame
 };
 
+// Everything a frame's passes need to know: the capture renders `faces`, and the main pass binds
+// each probed object to its probe's cube and centre from here.
 struct FramePlan {
-  std::vector<ProbePlan> probes;  // one per reflective object, even when nothing is redrawn
+  std::vector<ProbePlan> probes;  // one per probe, even when nothing is redrawn
   int facesCaptured() const;
+  // The probe object `object` samples, or null.
+  const ProbePlan* probeOf(int object) const;
 };
 
 // The main pass's draws: every object, each at the coarsest level that still has
-// settings.viewLodTrianglesPerPixel triangles per pixel of its projected bounding disc (full
+// settings.viewLod triangles per pixel of its projected bounding disc (full
 // detail when that is 0). pixelsPerTangent: half the viewport height over tan(fovY / 2).
 std::vector<DrawItem> planViewDraws(const std::vector<PlannedObject>& objects, const glm::vec3& eye,
                                     float pixelsPerTangent, const PlannerSettings& settings);
@@ -107,6 +114,9 @@ class FramePlanner {
  public:
   FramePlan plan(const std::vector<PlannedObject>& objects, const CaptureContext& context,
                  const PlannerSettings& settings);
+  // The probes alone, with no faces to capture and nothing remembered: for a pass that reads the
+  // cubes a plan() already captured.
+  static FramePlan layout(const std::vector<PlannedObject>& objects);
   // Forget every capture (the GL context was lost, or the caller wants a clean start).
   void invalidate() { probes_.clear(); }
 

@@ -20,6 +20,7 @@ struct PhongLight {
   float diffuse = 0.7f;   // Kd
   float specular = 1.0f;  // Ks
   float shininess = 10.0f;
+  bool operator==(const PhongLight&) const = default;
 };
 
 enum class Material {
@@ -50,11 +51,11 @@ struct SceneObject {
   glm::vec3 colour{1.0f};
   Material material = Material::Phong;
   Environment environment = Environment::LiveProbe;
-  // Mirror and glass: weight * environment + baseWeight * colour (the course: 0.78 and 0.3).
-  float reflectionWeight = 0.78f;
-  float baseWeight = 0.3f;
-  float refractiveIndex = 1.52f;  // glass (air to glass); also sets Fresnel's F0
-  bool fresnel = false;           // Schlick weighting instead of the fixed mix
+  // Mirror and glass: weight * environment + base * colour (the course: 0.78 and 0.3).
+  float reflection = 0.78f;
+  float base = 0.3f;
+  float ior = 1.52f;     // glass (air to glass); also sets Fresnel's F0
+  bool fresnel = false;  // Schlick weighting instead of the fixed mix
   // Objects with the same probe group >= 0 share one live probe; -1 = a probe of its own.
   int probeGroup = -1;
   // Where its live probe captures from, in world space; unset = the centre of the mesh bounds.
@@ -62,6 +63,16 @@ struct SceneObject {
   std::optional<glm::vec3> probeCentre;
 
   bool usesEnvironment() const { return material != Material::Phong; }
+  // What a capture of this object depends on besides its mesh, place and colour (compared by
+  // value).
+  struct Look {
+    Material material;
+    Environment environment;
+    float reflection, base, ior;
+    bool fresnel;
+    bool operator==(const Look&) const = default;
+  };
+  Look look() const { return {material, environment, reflection, base, ior, fresnel}; }
   bool needsLiveProbe() const { return usesEnvironment() && environment == Environment::LiveProbe; }
 };
 

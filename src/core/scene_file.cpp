@@ -4,9 +4,11 @@
 #include <cctype>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <set>
 #include <sstream>
 
 #include "core/json_reader.h"
+#include "core/settings_schema.h"
 #include "core/skybox_faces.h"
 
 namespace reflect {
@@ -35,6 +37,7 @@ std::string readPath(const JsonReader& r) {
   return path;
 }
 
+// A material's keys and ranges are settings_schema's material fields; defaults are SceneObject's.
 void readMaterial(const JsonReader& m, SceneObject& o) {
   if (m.isString() || !m.has("type")) {
     const std::string type = m.isString() ? m.string("") : "phong";
@@ -43,31 +46,32 @@ void readMaterial(const JsonReader& m, SceneObject& o) {
     return;
   }
   if (!m.requireObject()) return;
-  m.onlyKeys({"type", "reflection", "base", "ior", "fresnel", "environment"});
-  const std::string type = m["type"].string("");
-  if (type == "phong") {
-    o.material = Material::Phong;
-  } else if (type == "mirror") {
-    o.material = Material::Mirror;
-  } else if (type == "glass") {
-    o.material = Material::Glass;
-  } else if (type == "cube-textured") {
-    o.material = Material::CubeTextured;
-  } else {
-    m["type"].fail("expected \"phong\", \"mirror\", \"glass\" or \"cube-textured\"");
-    return;
-  }
-  o.reflectionWeight = static_cast<float>(m["reflection"].number(0.78, 0, 4));
-  o.baseWeight = static_cast<float>(m["base"].number(0.3, 0, 4));
-  o.refractiveIndex = static_cast<float>(m["ior"].number(1.52, 1, 4));
-  o.fresnel = m["fresnel"].boolean(false);
-  const std::string environment = m["environment"].string("live");
-  if (environment == "live") {
-    o.environment = Environment::LiveProbe;
-  } else if (environment == "skybox") {
-    o.environment = Environment::Skybox;
-  } else {
-    m["environment"].fail("expected \"live\" or \"skybox\"");
+  std::set<std::string> keys;
+  for (const auto& field : materialFields()) keys.insert(field.info.name);
+  m.onlyKeys(keys);
+  const SceneObject defaults;
+  for (const auto& field : materialFields()) {
+    const SettingInfo& info = field.info;
+    const JsonReader value = m[info.name.c_str()];
+    nlohmann::json read;
+    switch (info.kind) {
+      case SettingInfo::Kind::Choice: {
+        read = value.string(field.get(defaults).get<std::string>());
+        if (value.ok() && !info.check(read).empty()) value.fail("expected " + info.expected());
+        break;
+      }
+      case SettingInfo::Kind::Number:
+        read = value.number(field.get(defaults).get<double>(), info.min, info.max);
+        break;
+      case SettingInfo::Kind::Integer:
+        read = value.integer(field.get(defaults).get<int>(), int(info.min), int(info.max));
+        break;
+      case SettingInfo::Kind::Flag:
+        read = value.boolean(field.get(defaults).get<bool>());
+        break;
+    }
+    if (!m.ok()) return;
+    field.set(o, read);
   }
 }
 

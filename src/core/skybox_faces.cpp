@@ -64,4 +64,18 @@ Result<CubeFaces> facesFromCross(const RgbaImage& cross, const std::string& name
   return faces;
 }
 
+uint64_t contentHash(const CubeFaces& faces) {
+  uint64_t hash = 14695981039346656037ull;
+  const auto mix = [&hash](uint64_t byte) {
+    hash ^= byte;
+    hash *= 1099511628211ull;
+  };
+  for (const RgbaImage& face : faces) {
+    mix(static_cast<uint64_t>(face.width));
+    mix(static_cast<uint64_t>(face.height));
+    for (uint8_t byte : face.pixels) mix(byte);
+  }
+  return hash == 0 ? 1 : hash;
+}
+
 }  // namespace reflect

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,9 @@ Result<CubeFaces> facesFromImages(std::vector<RgbaImage> images,
 //   [-X] [+Z] [+X] [-Z]
 //        [-Y]
 Result<CubeFaces> facesFromCross(const RgbaImage& cross, const std::string& name);
+
+// A 64-bit FNV-1a hash of the faces' sizes and pixels: two skyboxes with the same pixels hash the
+// same, so a capture can tell by value whether the sky it shows changed. Never 0.
+uint64_t contentHash(const CubeFaces& faces);
 
 }  // namespace reflect

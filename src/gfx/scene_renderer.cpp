@@ -88,12 +88,6 @@ SceneRenderer::SceneRenderer(PhongProgram phong, EnvironmentProgram environment,
       cubeTextured_(std::move(cubeTextured)),
       accuracy_(accuracy) {}
 
-glm::vec3 SceneRenderer::probeCentreOf(int index) const {
-  auto owner = ownerOf_.find(index);
-  auto it = centres_.find(owner == ownerOf_.end() ? index : owner->second);
-  return it == centres_.end() ? glm::vec3(0.0f) : it->second;
-}
-
 void SceneRenderer::setMesh(const std::string& name, int lod, const MeshData& mesh) {
   std::vector<MeshBuffer>& levels = meshes_[name];
   if (lod == 0) levels.clear();
@@ -115,11 +109,16 @@ const MeshBuffer* SceneRenderer::mesh(const std::string& name, int lod) const {
   return &it->second[level];
 }
 
-GLuint SceneRenderer::environmentTexture(const Scene& scene, int index) const {
+GLuint SceneRenderer::environmentTexture(const Scene& scene, const FramePlan& plan,
+                                         int index) const {
   const SceneObject& object = scene.objects.at(static_cast<size_t>(index));
   if (object.environment == Environment::Skybox) return skybox_ ? skybox_->texture() : 0;
-  auto owner = ownerOf_.find(index);
-  auto it = probes_.find(owner == ownerOf_.end() ? index : owner->second);
+  const ProbePlan* probe = plan.probeOf(index);
+  return probe ? probeTexture(probe->reflector) : 0;
+}
+
+GLuint SceneRenderer::probeTexture(int owner) const {
+  auto it = probes_.find(owner);
   return it == probes_.end() ? 0 : it->second.texture();
 }
 
@@ -156,7 +155,8 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
   }
 }
 
-PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item, double seconds) {
+PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
+                                     const DrawItem& item, double seconds) {
   const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
   const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
@@ -169,10 +169,10 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item, d
     case ProgramKind::Environment: {
       setObjectMatrices(environment_.model, environment_.normalMatrix, model);
       glUniform3fv(environment_.colour, 1, glm::value_ptr(object.colour));
-      glUniform1f(environment_.reflectionWeight, object.reflectionWeight);
-      glUniform1f(environment_.baseWeight, object.baseWeight);
+      glUniform1f(environment_.reflection, object.reflection);
+      glUniform1f(environment_.base, object.base);
       glUniform1i(environment_.refracts, object.material == Material::Glass ? 1 : 0);
-      const float n = std::max(object.refractiveIndex, 1e-3f);
+      const float n = std::max(object.ior, 1e-3f);
       glUniform1f(environment_.eta, 1.0f / n);
       glUniform1f(environment_.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
       glUniform1i(environment_.fresnel, object.fresnel ? 1 : 0);
@@ -180,7 +180,9 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item, d
       const bool live = object.environment == Environment::LiveProbe;
       // A skybox is at infinity: its lookups stay plain (a far probe centre makes the search
       // return the ray direction itself).
-      glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(probeCentreOf(item.object)));
+      const ProbePlan* probe = plan.probeOf(item.object);
+      const glm::vec3 centre = probe ? probe->centre : glm::vec3(0.0f);
+      glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(centre));
       glUniform1f(environment_.distanceUnit, live ? scene.capture.near : 1e30f);
       break;
     }
@@ -190,14 +192,14 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const DrawItem& item, d
   }
   if (object.usesEnvironment()) {
     glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, environmentTexture(scene, item.object));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, environmentTexture(scene, plan, item.object));
   }
   buffer->draw(item.ranges);
   const size_t triangles = item.ranges.empty() ? buffer->triangleCount() : item.triangles;
   return {static_cast<int>(std::max<size_t>(item.ranges.size(), 1)), triangles};
 }
 
-PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds,
+PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const FramePlan& plan,
                                     const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
                                     const glm::vec3& viewPosition,
                                     const glm::vec3& environmentViewPosition,
@@ -219,7 +221,7 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds,
             outputDirections);
       }
       inUse = true;
-      counts += drawObject(scene, d, seconds);
+      counts += drawObject(scene, plan, d, seconds);
     }
   }
   return counts;
@@ -231,11 +233,6 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   const glm::mat4 projection = cubeFaceProjection(scene.capture.near, scene.capture.far);
-  ownerOf_.clear();
-  for (const ProbePlan& probe : plan.probes) {
-    for (int member : probe.members) ownerOf_[member] = probe.reflector;
-    centres_[probe.reflector] = probe.centre;
-  }
   const CaptureFormat format{scene.capture.faceSize, accuracy_.usesHalfFloat(), accuracy_.depthBits,
                              accuracy_.mipmaps};
   const bool storeDistance = accuracy_.distanceIterations > 0;
@@ -261,8 +258,8 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
       const glm::mat4 view = cubeFaceView(probe.centre, face.face);
       // Other mirrors in view use their cube as it was before this frame's capture of them
       // (one bounce); they are seen from the probe centre.
-      counts += drawItems(scene, seconds, face.draws, projection * view, lightingEye, probe.centre,
-                          storeDistance ? &probe.centre : nullptr, false);
+      counts += drawItems(scene, seconds, plan, face.draws, projection * view, lightingEye,
+                          probe.centre, storeDistance ? &probe.centre : nullptr, false);
       if (skybox_) skybox_->draw(projection, view);
     }
     target->second.finish();
@@ -273,16 +270,17 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
   return counts;
 }
 
-PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const ViewParams& camera,
-                                   const std::vector<DrawItem>& draws, unsigned framebuffer,
-                                   int width, int height, bool outputDirections) {
+PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const FramePlan& plan,
+                                   const ViewParams& camera, const std::vector<DrawItem>& draws,
+                                   unsigned framebuffer, int width, int height,
+                                   bool outputDirections) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // the ground quad is seen from both sides
   clearTo(scene.clearColour);
-  PassCounts counts = drawItems(scene, seconds, draws, camera.projection * camera.view, camera.eye,
-                                camera.eye, nullptr, outputDirections);
+  PassCounts counts = drawItems(scene, seconds, plan, draws, camera.projection * camera.view,
+                                camera.eye, camera.eye, nullptr, outputDirections);
   if (skybox_) skybox_->draw(camera.projection, camera.view);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindVertexArray(0);
@@ -298,8 +296,6 @@ void SceneRenderer::abandon() {
   skybox_.reset();
   for (auto& [index, target] : probes_) target.abandon();
   probes_.clear();
-  ownerOf_.clear();
-  centres_.clear();
   for (auto& [name, levels] : meshes_) {
     for (MeshBuffer& level : levels) level.abandon();
   }

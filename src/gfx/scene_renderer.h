@@ -55,15 +55,19 @@ class SceneRenderer {
   // as seen from it. Probe targets are created (or resized) on first use.
   Result<PassCounts> capture(const Scene& scene, double seconds, const FramePlan& plan,
                              const glm::vec3& lightingEye);
-  // `draws`: every object with its level of detail (planViewDraws). With `outputDirections`,
-  // mirrors and glass write the direction they look up (unit vector in RGB) instead of a colour:
-  // the accuracy measurement reads it back from a float target.
-  PassCounts drawMain(const Scene& scene, double seconds, const ViewParams& camera,
-                      const std::vector<DrawItem>& draws, unsigned framebuffer, int width,
-                      int height, bool outputDirections = false);
+  // `draws`: every object with its level of detail (planViewDraws). Probed objects sample the
+  // cubes of `plan`'s probes (as a capture left them). With `outputDirections`, mirrors and glass
+  // write the direction they look up (unit vector in RGB) instead of a colour: the accuracy
+  // measurement reads it back from a float target.
+  PassCounts drawMain(const Scene& scene, double seconds, const FramePlan& plan,
+                      const ViewParams& camera, const std::vector<DrawItem>& draws,
+                      unsigned framebuffer, int width, int height, bool outputDirections = false);
 
-  // The cube map that object `index` samples: its live probe's, or the skybox (0 if none yet).
-  GLuint environmentTexture(const Scene& scene, int index) const;
+  // The cube map that object `index` samples under `plan`: its live probe's, or the skybox (0 if
+  // none yet).
+  GLuint environmentTexture(const Scene& scene, const FramePlan& plan, int index) const;
+  // The cube captured for the probe owned by object `owner` (0 before its first capture).
+  GLuint probeTexture(int owner) const;
   // After a lost context: drop every GL name without deleting (the context took them).
   void abandon();
 
@@ -75,8 +79,8 @@ class SceneRenderer {
   };
   struct EnvironmentProgram {
     ShaderProgram program;
-    GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
-        refracts, eta, fresnelF0, fresnel, environment, probeCentre, distanceUnit, outputDirection;
+    GLint viewProjection, model, normalMatrix, colour, viewPosition, reflection, base, refracts,
+        eta, fresnelF0, fresnel, environment, probeCentre, distanceUnit, outputDirection;
   };
   struct CubeTexturedProgram {
     ShaderProgram program;
@@ -88,14 +92,14 @@ class SceneRenderer {
                 CubeTexturedProgram cubeTextured, const AccuracySettings& accuracy);
   // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
   // `distanceCentre`: the probe centre whose distances a capture stores (null in the main pass).
-  PassCounts drawItems(const Scene& scene, double seconds, const std::vector<DrawItem>& draws,
-                       const glm::mat4& viewProj, const glm::vec3& viewPosition,
-                       const glm::vec3& environmentViewPosition, const glm::vec3* distanceCentre,
-                       bool outputDirections);
-  PassCounts drawObject(const Scene& scene, const DrawItem& item, double seconds);
+  PassCounts drawItems(const Scene& scene, double seconds, const FramePlan& plan,
+                       const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
+                       const glm::vec3& viewPosition, const glm::vec3& environmentViewPosition,
+                       const glm::vec3* distanceCentre, bool outputDirections);
+  PassCounts drawObject(const Scene& scene, const FramePlan& plan, const DrawItem& item,
+                        double seconds);
   void use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
            const glm::vec3& viewPosition, const glm::vec3* distanceCentre, bool outputDirections);
-  glm::vec3 probeCentreOf(int index) const;
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;
@@ -103,8 +107,6 @@ class SceneRenderer {
   CubeTexturedProgram cubeTextured_;
   std::unique_ptr<SkyboxPass> skybox_;
   std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
-  std::map<int, int> ownerOf_;               // probed object -> owner of the probe it samples
-  std::map<int, glm::vec3> centres_;         // owner -> where its probe captured from
   AccuracySettings accuracy_;
   std::map<std::string, std::vector<MeshBuffer>> meshes_;  // levels of detail by mesh name
   ProgramKind current_ = ProgramKind::Phong;

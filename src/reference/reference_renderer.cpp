@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/frustum.h"
+#include "core/probe_layout.h"
 
 namespace reflect {
 namespace {
@@ -208,13 +209,13 @@ struct Tracer {
     if (lookup) *lookup = r;
     const glm::vec3 env = environment(hit.object, hit.position, r, depth, envHit);
     if (object.fresnel) {
-      const float n = std::max(object.refractiveIndex, 1e-3f);
+      const float n = std::max(object.ior, 1e-3f);
       const float f0 = ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f));
       const float cosine = std::clamp(glm::dot(toViewer, hit.normal), 0.0f, 1.0f);
       const float schlick = f0 + (1.0f - f0) * std::pow(1.0f - cosine, 5.0f);
       return glm::mix(object.colour, env, schlick);
     }
-    return object.reflectionWeight * env + object.baseWeight * object.colour;
+    return object.reflection * env + object.base * object.colour;
   }
 };
 
@@ -225,38 +226,20 @@ uint8_t toByte(float c) {
 }  // namespace
 
 glm::vec3 probeCentre(const Scene& scene, const MeshLookup& meshes, double seconds, int object) {
-  const auto worldBounds = [&](int i, Bounds* out) {
-    const SceneObject& o = scene.objects[static_cast<size_t>(i)];
+  std::vector<ProbeCandidate> candidates;
+  for (const SceneObject& o : scene.objects) {
     const MeshData* mesh = meshes(o.mesh);
-    if (!mesh) return false;
-    *out = transformBounds(mesh->bounds, scene.modelMatrix(o, seconds));
-    return true;
-  };
-  const SceneObject& self = scene.objects[static_cast<size_t>(object)];
-  std::vector<int> members{object};
-  if (self.probeGroup >= 0) {
-    members.clear();
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-      if (scene.objects[i].needsLiveProbe() && scene.objects[i].probeGroup == self.probeGroup) {
-        members.push_back(static_cast<int>(i));
-      }
+    const glm::mat4 model = scene.modelMatrix(o, seconds);
+    const Bounds local = mesh ? mesh->bounds : Bounds{};
+    candidates.push_back(ProbeCandidate{o.needsLiveProbe(), o.probeGroup, o.probeCentre,
+                                        transformBounds(local, model)});
+  }
+  for (const ProbeLayout& probe : layoutProbes(candidates)) {
+    for (int member : probe.members) {
+      if (member == object) return probe.centre;
     }
   }
-  if (members.size() == 1) {
-    if (self.probeCentre) return *self.probeCentre;
-    const MeshData* mesh = meshes(self.mesh);
-    if (!mesh) return glm::vec3(scene.modelMatrix(self, seconds)[3]);
-    return glm::vec3(scene.modelMatrix(self, seconds) * glm::vec4(mesh->bounds.centre(), 1.0f));
-  }
-  Bounds joint;
-  bool any = false;
-  for (int m : members) {
-    Bounds b;
-    if (!worldBounds(m, &b)) continue;
-    joint = any ? Bounds{glm::min(joint.min, b.min), glm::max(joint.max, b.max)} : b;
-    any = true;
-  }
-  return joint.centre();
+  return glm::vec3(scene.modelMatrix(scene.objects[static_cast<size_t>(object)], seconds)[3]);
 }
 
 Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& meshes,

@@ -10,7 +10,7 @@
 //    normal per vertex, interpolated, normalised), both sides of every triangle shaded alike;
 //  - Phong: colour * (Ka + Kd max(N.L, 0)) + (N.L > 0 ? Ks pow(clamp(R.V, 0, 1), shininess) : 0),
 //    viewed from the main camera's eye (also in reflections: the course lights its captures so);
-//  - a mirror: reflectionWeight * env(reflect(-V, N)) + baseWeight * colour, where env is the
+//  - a mirror: reflection * env(reflect(-V, N)) + base * colour, where env is the
 //    Phong colour of what the reflected ray from the hit point meets first among the other
 //    objects, or the clear colour; output clamped to [0, 1] and rounded to 8 bits.
 // A mirror met by a reflected ray is shaded as a mirror again (its own reflected ray, up to

@@ -20,9 +20,9 @@ const glm::vec3 kGold(0.95f, 0.85f, 0.4f);  // the sphere in makeDynamicReflecti
 const glm::vec3 kMaskColour(1.0f, 0.0f, 1.0f);
 
 // The mirror's smallest possible colour: the environment contributes >= 0, so every channel is
-// at least baseWeight x colour (one level of rounding below).
-glm::u8vec3 mirrorFloor(const glm::vec3& colour, float baseWeight) {
-  return glm::u8vec3(glm::max(glm::vec3(toBytes(baseWeight * colour)) - 1.0f, glm::vec3(0.0f)));
+// at least base x colour (one level of rounding below).
+glm::u8vec3 mirrorFloor(const glm::vec3& colour, float base) {
+  return glm::u8vec3(glm::max(glm::vec3(toBytes(base * colour)) - 1.0f, glm::vec3(0.0f)));
 }
 
 // Where `scene`'s reflective object covers the frame: the same scene with the mirror drawn as a

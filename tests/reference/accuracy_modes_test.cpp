@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "../gl/gl_fixture.h"
-#include "reference/accuracy.h"
-#include "reference/sweep.h"
+#include "bench/accuracy.h"
+#include "bench/sweep.h"
 
 namespace reflect {
 namespace {

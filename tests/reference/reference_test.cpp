@@ -12,8 +12,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/headless_frames.h"
+#include "bench/accuracy.h"
 #include "gl_fixture.h"
-#include "reference/accuracy.h"
 #include "reference/reference_renderer.h"
 
 namespace reflect {

@@ -82,6 +82,38 @@ TEST(LookCamera, MoveGoesAlongTheViewDirection) {
   EXPECT_EQ(camera.eye(), glm::vec3(0, 1, 7));
 }
 
+TEST(LookCamera, StrafeGoesLevelToTheRightAndRiseStraightUp) {
+  LookCamera camera;
+  camera.strafe(1.0f);  // looking down -Z, right is +X
+  EXPECT_NEAR(camera.eye().x, 0.1f, 1e-6f);
+  EXPECT_EQ(camera.eye().y, 1.0f);
+  EXPECT_NEAR(camera.eye().z, 7.0f, 1e-6f);
+  camera.reset();
+  camera.setAngles(90.0f, -60.0f);  // looking down towards -X: right is -Z, still level
+  camera.strafe(2.0f);
+  EXPECT_NEAR(camera.eye().x, 0.0f, 1e-6f);
+  EXPECT_EQ(camera.eye().y, 1.0f);
+  EXPECT_NEAR(camera.eye().z, 6.8f, 1e-5f);
+  // Right is perpendicular to the view and to up.
+  camera.reset();
+  camera.setAngles(33.0f, 20.0f);
+  const glm::vec3 before = camera.eye();
+  camera.strafe(1.0f);
+  const glm::vec3 right = (camera.eye() - before) / LookCamera::kMoveStep;
+  EXPECT_NEAR(glm::dot(right, camera.viewDirection()), 0.0f, 1e-5f);
+  EXPECT_NEAR(glm::length(right), 1.0f, 1e-5f);
+  EXPECT_GT(glm::cross(camera.viewDirection(), glm::vec3(0, 1, 0)).x * right.x +
+                glm::cross(camera.viewDirection(), glm::vec3(0, 1, 0)).z * right.z,
+            0.0f);
+  camera.reset();
+  camera.rise(-3.0f);
+  EXPECT_NEAR(camera.eye().y, 0.7f, 1e-6f);
+  camera.strafe(std::numeric_limits<float>::infinity());
+  camera.rise(std::numeric_limits<float>::quiet_NaN());
+  EXPECT_NEAR(camera.eye().y, 0.7f, 1e-6f);
+  EXPECT_EQ(camera.eye().x, 0.0f);
+}
+
 TEST(LookCamera, ProjectionFollowsAspectAndRejectsBadAspect) {
   LookCamera camera;
   const glm::mat4 wide = camera.projection(2.0f);

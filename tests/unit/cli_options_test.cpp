@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "app/cli_options.h"
+#include "platform/native/cli_options.h"
 
 namespace reflect {
 namespace {

@@ -124,6 +124,65 @@ TEST(FramePlanner, ProbeMoveOrOptionChangeRedrawsEverything) {
   EXPECT_EQ(planner.plan(scene, bigger, {}).facesCaptured(), 6);
 }
 
+TEST(FramePlanner, EveryCaptureInputIsComparedByValue) {
+  const std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), boxAt({5, 0, 0})};
+  // Each change of one input, from the same starting context: all six faces, once.
+  const std::vector<void (*)(CaptureContext&)> changes = {
+      [](CaptureContext& c) { c.light.position.x += 1.0f; },
+      [](CaptureContext& c) { c.light.shininess = 20.0f; },
+      [](CaptureContext& c) { c.clearColour = glm::vec3(0.0f); },
+      [](CaptureContext& c) { c.skyboxContent = 42; },
+      [](CaptureContext& c) { c.accuracy.distanceIterations = 0; },
+      [](CaptureContext& c) { c.captureLod = 0.5f; },
+      [](CaptureContext& c) { c.near = 0.5f; },
+  };
+  for (auto change : changes) {
+    FramePlanner planner;
+    CaptureContext context;
+    planner.plan(scene, context, {});
+    ASSERT_EQ(planner.plan(scene, context, {}).facesCaptured(), 0);
+    change(context);
+    EXPECT_EQ(planner.plan(scene, context, {}).facesCaptured(), 6);
+    EXPECT_EQ(planner.plan(scene, context, {}).facesCaptured(), 0);
+    CaptureContext same = context;  // an equal value is no change
+    EXPECT_EQ(planner.plan(scene, same, {}).facesCaptured(), 0);
+  }
+}
+
+TEST(FramePlanner, AMaterialOrLevelChangeRedrawsTheFacesThatShowIt) {
+  FramePlanner planner;
+  std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0}), mirrorAt({5, 0, 0})};
+  planner.plan(scene, {}, {});
+  planner.plan(scene, {}, {});  // the one bounce
+  ASSERT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 0);
+  scene[1].look.reflection = 0.5f;
+  const FramePlan plan = planner.plan(scene, {}, {});
+  ASSERT_EQ(plan.probes.size(), 2u);
+  EXPECT_EQ(facesOf(plan.probes[0]), (std::vector<int>{kPX}));  // the face that shows mirror 1
+  EXPECT_TRUE(plan.probes[1].faces.empty());
+  // Mirror 0's cube changed with it, so mirror 1's face that shows mirror 0 follows (one bounce).
+  EXPECT_EQ(facesOf(planner.plan(scene, {}, {}).probes[1]), (std::vector<int>{kNX}));
+  EXPECT_EQ(planner.plan(scene, {}, {}).facesCaptured(), 0);
+  // A level of detail built after the first capture: the faces that show the object again.
+  scene[1].levels = {PlannedLevel{100, nullptr}, PlannedLevel{25, nullptr}};
+  EXPECT_EQ(facesOf(planner.plan(scene, {}, {}).probes[0]), (std::vector<int>{kPX}));
+}
+
+TEST(FramePlanner, LayoutNamesEachObjectsProbeWithoutCapturing) {
+  PlannedObject a = mirrorAt({-1, 0, 0}), b = mirrorAt({1, 0, 0});
+  a.probeGroup = b.probeGroup = 0;
+  PlannedObject course = mirrorAt({0, 0, 9});
+  course.probeCentre = glm::vec3(0.0f);  // an explicit capture point wins over the bounds
+  const FramePlan plan = FramePlanner::layout({a, b, boxAt({0, 0, -6}), course});
+  ASSERT_EQ(plan.probes.size(), 2u);
+  EXPECT_EQ(plan.facesCaptured(), 0);
+  EXPECT_EQ(plan.probeOf(1), &plan.probes[0]);
+  EXPECT_EQ(plan.probeOf(2), nullptr);
+  ASSERT_NE(plan.probeOf(3), nullptr);
+  EXPECT_EQ(plan.probeOf(3)->centre, glm::vec3(0.0f));
+  EXPECT_EQ(plan.probeOf(3)->reflector, 3);
+}
+
 TEST(FramePlanner, ExcludesEachReflectorFromItsOwnProbeOnly) {
   FramePlanner planner;
   const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}), mirrorAt({5, 0, 0})}, {}, {});
@@ -228,7 +287,7 @@ TEST(FramePlanner, PolicyNamesRoundTrip) {
 TEST(FramePlanner, CoarserLevelsForObjectsSmallInTheFace) {
   FramePlanner planner;
   PlannerSettings lod;
-  lod.lodTrianglesPerPixel = 0.5f;  // 256-pixel faces
+  lod.captureLod = 0.5f;  // 256-pixel faces
   auto withLevels = [](PlannedObject o) {
     o.levels = {{4000, nullptr}, {1000, nullptr}, {250, nullptr}};
     return o;
@@ -267,7 +326,7 @@ TEST(FramePlanner, ViewLodPicksLevelsByTheObjectsSizeInTheView) {
   // 128 pixels per unit of tangent: a 256-pixel 90-degree view, the numbers of the capture test
   // above (level 0 at 3 units, 1 at 5, 2 at 40).
   PlannerSettings settings;
-  settings.viewLodTrianglesPerPixel = 0.5f;
+  settings.viewLod = 0.5f;
   const std::vector<DrawItem> draws = planViewDraws(objects, {0, 0, 0}, 128.0f, settings);
   ASSERT_EQ(draws.size(), 4u);
   EXPECT_EQ(draws[0].lod, 0);

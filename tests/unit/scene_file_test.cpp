@@ -74,7 +74,7 @@ TEST(SceneFile, MaterialsAnimationsProbesAndSkyboxes) {
   EXPECT_EQ(s.skybox.faces[0], "sky/day_px.png");
   EXPECT_EQ(s.skybox.faces[5], "sky/day_nz.png");
   EXPECT_EQ(s.objects[0].material, Material::Glass);
-  EXPECT_FLOAT_EQ(s.objects[0].refractiveIndex, 1.33f);
+  EXPECT_FLOAT_EQ(s.objects[0].ior, 1.33f);
   EXPECT_TRUE(s.objects[0].fresnel);
   EXPECT_EQ(s.objects[0].probeGroup, s.objects[1].probeGroup);
   EXPECT_EQ(s.objects[1].environment, Environment::Skybox);
@@ -105,8 +105,8 @@ TEST(SceneFile, ErrorsNameTheFileAndTheKeyPath) {
   EXPECT_EQ(errorOf(withObject(R"({"mesh": "c.obj", "material": {"type": "glass", "ior": 0.5}})")),
             "x.json: objects[0].material.ior: expected a number from 1 to 4");
   EXPECT_EQ(errorOf(withObject(R"({"mesh": "c.obj", "material": {"type": "chrome"}})")),
-            "x.json: objects[0].material.type: expected \"phong\", \"mirror\", \"glass\" or "
-            "\"cube-textured\"");
+            "x.json: objects[0].material.type: expected one of phong, mirror, glass, "
+            "cube-textured");
   EXPECT_EQ(errorOf(withObject(R"({"mesh": "../../etc/passwd"})")),
             "x.json: objects[0].mesh: expected a relative file path (letters, digits, _ - . /)");
   EXPECT_EQ(errorOf(withObject(R"({"colour": [1, 1, 1]})")),

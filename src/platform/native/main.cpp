@@ -4,17 +4,17 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_options.h"
 #include "app/demo.h"
-#include "app/growth_bench.h"
 #include "app/headless_frames.h"
-#include "app/policy_bench.h"
+#include "bench/accuracy.h"
+#include "bench/growth_bench.h"
+#include "bench/policy_bench.h"
+#include "bench/sweep.h"
 #include "core/image.h"
+#include "platform/native/cli_options.h"
 #include "platform/native/egl_context.h"
 #include "platform/native/model_paths.h"
-#include "reference/accuracy.h"
 #include "reference/reference_renderer.h"
-#include "reference/sweep.h"
 
 namespace {
 
@@ -58,22 +58,10 @@ int runRender(const CliOptions& o) {
   if (!error.empty()) return fail(error);
   std::printf("wrote %s (%dx%d, t=%.3f s)\n", o.out.c_str(), o.width, o.height, o.time);
   if (o.referenceOut.empty()) return 0;
-  const reflect::MeshLookup meshes = [&](const std::string& name) {
-    return demo.value()->meshLevel(name, 0);
-  };
-  reflect::Scene scene = demo.value()->scene();
-  if (o.accuracy.captureAtOrigin) {
-    for (auto& object : scene.objects) {
-      if (object.needsLiveProbe()) object.probeCentre = glm::vec3(0.0f);
-    }
-  }
-  auto reference = reflect::renderReference(scene, meshes, demo.value()->camera(),
-                                            demo.value()->clock().seconds(), o.width, o.height);
-  if (!reference) return fail(reference.error());
-  error = reflect::writePng(reference.value().image, o.referenceOut);
-  if (!error.empty()) return fail(error);
   auto report = reflect::measureAccuracy(*demo.value(), o.time, o.width, o.height);
   if (!report) return fail(report.error());
+  error = reflect::writePng(report.value().referenceImage, o.referenceOut);
+  if (!error.empty()) return fail(error);
   std::printf(
       "wrote %s; reflector: PSNR %.2f dB, RMSE %.2f, p95 %d, max %d, mean angular error "
       "%.3f deg\n",
@@ -109,13 +97,12 @@ int runPolicyBench(const CliOptions& o) {
   auto settings = [&](UpdatePolicy policy, float lod, float viewLod = 0.0f) {
     reflect::PlannerSettings s = o.planner;
     s.policy = policy;
-    s.lodTrianglesPerPixel = lod;
-    s.viewLodTrianglesPerPixel = viewLod;
+    s.captureLod = lod;
+    s.viewLod = viewLod;
     return s;
   };
-  const float lod = o.planner.lodTrianglesPerPixel > 0 ? o.planner.lodTrianglesPerPixel : 0.5f;
-  const float viewLod =
-      o.planner.viewLodTrianglesPerPixel > 0 ? o.planner.viewLodTrianglesPerPixel : 0.5f;
+  const float lod = o.planner.captureLod > 0 ? o.planner.captureLod : 0.5f;
+  const float viewLod = o.planner.viewLod > 0 ? o.planner.viewLod : 0.5f;
   char lodLabel[64], viewLodLabel[80];
   std::snprintf(lodLabel, sizeof lodLabel, "when-changed + LOD (%.2g tris/px)", lod);
   std::snprintf(viewLodLabel, sizeof viewLodLabel, "when-changed + LOD, view LOD (%.2g, %.2g)", lod,

@@ -120,8 +120,7 @@ EMSCRIPTEN_KEEPALIVE const char* rf_camera_json() {
 // faces per frame for time-sliced, N for every-n, capture and view LOD triangles per pixel
 // (0 = off). Returns "" or an error for an unknown policy.
 EMSCRIPTEN_KEEPALIVE const char* rf_set_planner(const char* policy, int facesPerFrame, int everyN,
-                                                double lodTrianglesPerPixel,
-                                                double viewLodTrianglesPerPixel) {
+                                                double captureLod, double viewLod) {
   if (!state().demo) return returnText("no scene loaded");
   reflect::PlannerSettings settings = state().demo->plannerSettings();
   if (!reflect::parsePolicy(policy, &settings.policy)) {
@@ -129,8 +128,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_set_planner(const char* policy, int facesPer
   }
   settings.facesPerFrame = facesPerFrame;
   settings.everyN = everyN;
-  settings.lodTrianglesPerPixel = static_cast<float>(lodTrianglesPerPixel);
-  settings.viewLodTrianglesPerPixel = static_cast<float>(viewLodTrianglesPerPixel);
+  settings.captureLod = static_cast<float>(captureLod);
+  settings.viewLod = static_cast<float>(viewLod);
   state().demo->setPlannerSettings(settings);
   return returnText("");
 }
@@ -144,8 +143,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_planner_json() {
   std::snprintf(buffer, sizeof buffer,
                 "{\"policy\":\"%s\",\"facesPerFrame\":%d,\"everyN\":%d,\"lod\":%g,"
                 "\"viewLod\":%g,\"maxStalenessFrames\":%d}",
-                reflect::policyName(s.policy), s.facesPerFrame, s.everyN, s.lodTrianglesPerPixel,
-                s.viewLodTrianglesPerPixel, s.maxStalenessFrames());
+                reflect::policyName(s.policy), s.facesPerFrame, s.everyN, s.captureLod, s.viewLod,
+                s.maxStalenessFrames());
   return returnText(buffer);
 }
 

@@ -207,8 +207,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_objects_json() {
                   "%s{\"mesh\":%s,\"material\":{\"type\":\"%s\",\"reflection\":%g,\"base\":%g,"
                   "\"ior\":%g,\"fresnel\":%s,\"environment\":\"%s\"}}",
                   json.size() > 1 ? "," : "", reflect::jsonQuote(o.mesh).c_str(),
-                  names[static_cast<int>(o.material)], o.reflectionWeight, o.baseWeight,
-                  o.refractiveIndex, o.fresnel ? "true" : "false",
+                  names[static_cast<int>(o.material)], o.reflection, o.base, o.ior,
+                  o.fresnel ? "true" : "false",
                   o.environment == reflect::Environment::Skybox ? "skybox" : "live");
     json += buffer;
   }

@@ -1,4 +1,4 @@
-#include "app/growth_bench.h"
+#include "bench/growth_bench.h"
 
 #include <cmath>
 #include <cstdio>

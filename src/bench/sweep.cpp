@@ -1,12 +1,12 @@
-#include "reference/sweep.h"
+#include "bench/sweep.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "app/headless_frames.h"
+#include "bench/accuracy.h"
 #include "gfx/offscreen_target.h"
-#include "reference/accuracy.h"
 
 namespace reflect {
 

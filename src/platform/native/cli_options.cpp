@@ -1,4 +1,4 @@
-#include "app/cli_options.h"
+#include "platform/native/cli_options.h"
 
 #include <cmath>
 #include <cstdio>
@@ -158,8 +158,7 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       ok = parseInt(value, 1, 1000, &o.planner.everyN);
     } else if (flag == "--lod" || flag == "--view-lod") {
       ok = parseNumber(value, &number) && number >= 0;
-      (flag == "--lod" ? o.planner.lodTrianglesPerPixel : o.planner.viewLodTrianglesPerPixel) =
-          static_cast<float>(number);
+      (flag == "--lod" ? o.planner.captureLod : o.planner.viewLod) = static_cast<float>(number);
     } else if (flag == "--yaw" || flag == "--pitch") {
       ok = parseNumber(value, &number);
       (flag == "--yaw" ? o.yawDeg : o.pitchDeg) = static_cast<float>(number);

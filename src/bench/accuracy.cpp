@@ -1,9 +1,10 @@
-#include "reference/accuracy.h"
+#include "bench/accuracy.h"
 
 #include <chrono>
 #include <cmath>
 
 #include "app/headless_frames.h"
+#include "core/probe_layout.h"
 #include "gfx/offscreen_target.h"
 
 namespace reflect {
@@ -80,12 +81,7 @@ Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int heig
   const double seconds = demo.clock().seconds();
   const MeshLookup meshes = [&demo](const std::string& name) { return demo.meshLevel(name, 0); };
   // The true directions are measured from where the probe really captured.
-  Scene scene = demo.scene();
-  if (demo.accuracySettings().captureAtOrigin) {
-    for (SceneObject& o : scene.objects) {
-      if (o.needsLiveProbe()) o.probeCentre = glm::vec3(0.0f);
-    }
-  }
+  const Scene scene = sceneAsCaptured(demo.scene(), demo.accuracySettings().captureAtOrigin);
   Result<ReferenceFrame> reference =
       renderReference(scene, meshes, demo.camera(), seconds, width, height);
   if (!reference) return Result<AccuracyReport>::failure(reference.error());
@@ -107,6 +103,7 @@ Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int heig
   Result<AccuracyReport> report = compareWithReference(raster.value(), ref);
   if (!report) return report;
   report.value().timeSeconds = t;
+  report.value().referenceImage = std::move(ref.image);
   report.value().rasterMs = rasterMs;
   return report;
 }

@@ -34,6 +34,7 @@ struct AccuracyReport {
   size_t offReflectorPixels = 0;
   double rasterMs = 0.0;     // renderFrameAt, including read-back
   double referenceMs = 0.0;  // renderReference
+  RgbaImage referenceImage;  // measureAccuracy: the reference frame itself
 };
 
 // 1 where the 3x3 neighbourhood of a pixel (clipped at the image border) holds more than one

@@ -1,4 +1,4 @@
-#include "app/policy_bench.h"
+#include "bench/policy_bench.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,0 +1,277 @@
+#include "core/settings_schema.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+namespace reflect {
+namespace {
+
+using Kind = SettingInfo::Kind;
+using nlohmann::json;
+
+std::string formatNumber(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+SettingInfo choice(std::string name, std::string label, std::string help,
+                   std::vector<std::string> choices) {
+  return {std::move(name),   std::move(label), std::move(help), Kind::Choice, 0, 0,
+          std::move(choices)};
+}
+// `only`: the values allowed within min..max, when not all of them are.
+SettingInfo integer(std::string name, std::string label, std::string help, int min, int max,
+                    std::vector<std::string> only = {}) {
+  return {std::move(name), std::move(label), std::move(help), Kind::Integer,
+          double(min),     double(max),      std::move(only)};
+}
+SettingInfo number(std::string name, std::string label, std::string help, double min, double max) {
+  return {std::move(name), std::move(label), std::move(help), Kind::Number, min, max, {}};
+}
+SettingInfo flag(std::string name, std::string label, std::string help) {
+  return {std::move(name), std::move(label), std::move(help), Kind::Flag, 0, 1, {}};
+}
+
+const char* kKindNames[] = {"choice", "integer", "number", "flag"};
+
+template <class S>
+json schemaOf(const std::vector<SettingField<S>>& fields) {
+  const S defaults{};
+  json list = json::array();
+  for (const auto& f : fields) {
+    json entry = {{"name", f.info.name},
+                  {"label", f.info.label},
+                  {"help", f.info.help},
+                  {"kind", kKindNames[static_cast<int>(f.info.kind)]},
+                  {"default", f.get(defaults)}};
+    if (f.info.kind == Kind::Integer || f.info.kind == Kind::Number) {
+      entry["min"] = f.info.min;
+      entry["max"] = f.info.max;
+    }
+    if (!f.info.choices.empty()) entry["choices"] = f.info.choices;
+    list.push_back(std::move(entry));
+  }
+  return list;
+}
+
+}  // namespace
+
+std::string SettingInfo::optionName() const {
+  std::string option = "--";
+  for (char c : name) {
+    if (std::isupper(static_cast<unsigned char>(c))) {
+      option += '-';
+      option += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    } else {
+      option += c;
+    }
+  }
+  return option;
+}
+
+std::string SettingInfo::expected() const {
+  switch (kind) {
+    case Kind::Choice:
+      return "one of " + joined(choices);
+    case Kind::Integer:
+      if (!choices.empty()) return "one of " + joined(choices);
+      return "a whole number from " + formatNumber(min) + " to " + formatNumber(max);
+    case Kind::Number:
+      return "a number from " + formatNumber(min) + " to " + formatNumber(max);
+    case Kind::Flag:
+      return "true or false";
+  }
+  return {};
+}
+
+std::string SettingInfo::check(const json& value) const {
+  const std::string shown = value.dump();
+  switch (kind) {
+    case Kind::Choice: {
+      if (value.is_string()) {
+        for (const std::string& c : choices) {
+          if (c == value.get<std::string>()) return {};
+        }
+      }
+      return name + ": " + shown + " is not " + expected();
+    }
+    case Kind::Integer:
+    case Kind::Number: {
+      if (!value.is_number()) return name + ": " + shown + " is not " + expected();
+      const double v = value.get<double>();
+      if (kind == Kind::Integer && !value.is_number_integer() && v != std::floor(v)) {
+        return name + ": " + shown + " is not a whole number";
+      }
+      if (!(v >= min && v <= max)) {
+        return name + ": " + shown + " is not in " + formatNumber(min) + ".." + formatNumber(max);
+      }
+      if (kind == Kind::Integer && !choices.empty()) {
+        for (const std::string& c : choices) {
+          if (c == formatNumber(v)) return {};
+        }
+        return name + ": " + shown + " is not " + expected();
+      }
+      return {};
+    }
+    case Kind::Flag:
+      return value.is_boolean() ? std::string() : name + ": " + shown + " is not true or false";
+  }
+  return {};
+}
+
+const std::vector<std::string>& policyNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (UpdatePolicy p : {UpdatePolicy::EveryFrame, UpdatePolicy::WhenChanged,
+                           UpdatePolicy::TimeSliced, UpdatePolicy::EveryNFrames}) {
+      list.push_back(policyName(p));
+    }
+    return list;
+  }();
+  return names;
+}
+
+const std::vector<SettingField<PlannerSettings>>& plannerFields() {
+  using P = PlannerSettings;
+  static const std::vector<SettingField<P>> fields = {
+      {choice("policy", "update policy",
+              "when a cube face is redrawn: every-frame (the course), when-changed (exact), "
+              "time-sliced (at most facesPerFrame stale faces a frame), every-n (every everyN-th "
+              "frame)",
+              policyNames()),
+       [](const P& s) { return json(policyName(s.policy)); },
+       [](P& s, const json& v) { parsePolicy(v.get<std::string>(), &s.policy); }},
+      {integer("facesPerFrame", "faces per frame", "time-sliced: faces redrawn per frame", 1, 6),
+       [](const P& s) { return json(s.facesPerFrame); },
+       [](P& s, const json& v) { s.facesPerFrame = v.get<int>(); }},
+      {integer("everyN", "every N frames", "every-n: capture on every N-th frame", 1, 1000),
+       [](const P& s) { return json(s.everyN); },
+       [](P& s, const json& v) { s.everyN = v.get<int>(); }},
+      {number("captureLod", "capture LOD (tris/px)",
+              "capture level of detail: the coarsest mesh level with at least this many "
+              "triangles per pixel of the object's disc in the face (0 = full detail)",
+              0, 1000),
+       [](const P& s) { return json(s.captureLod); },
+       [](P& s, const json& v) { s.captureLod = v.get<float>(); }},
+      {number("viewLod", "view LOD (tris/px)",
+              "the same rule for the main camera's pass (0 = full detail)", 0, 1000),
+       [](const P& s) { return json(s.viewLod); },
+       [](P& s, const json& v) { s.viewLod = v.get<float>(); }},
+  };
+  return fields;
+}
+
+const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
+  using A = AccuracySettings;
+  static const std::vector<SettingField<A>> fields = {
+      {flag("captureAtOrigin", "capture at origin",
+            "capture at (0,0,0) as the course does, not at the reflector's centre"),
+       [](const A& s) { return json(s.captureAtOrigin); },
+       [](A& s, const json& v) { s.captureAtOrigin = v.get<bool>(); }},
+      {integer("distanceIterations", "distance steps",
+               "distance-corrected lookup with this many secant steps (0 = the course's plain "
+               "lookup)",
+               0, 16),
+       [](const A& s) { return json(s.distanceIterations); },
+       [](A& s, const json& v) { s.distanceIterations = v.get<int>(); }},
+      {integer("depthBits", "depth bits", "the capture's depth buffer: 16 or 24 bits", 16, 24,
+               {"16", "24"}),
+       [](const A& s) { return json(s.depthBits); },
+       [](A& s, const json& v) { s.depthBits = v.get<int>(); }},
+      {flag("mipmaps", "mipmaps", "trilinear lookup from a mip chain rebuilt after each capture"),
+       [](const A& s) { return json(s.mipmaps); },
+       [](A& s, const json& v) { s.mipmaps = v.get<bool>(); }},
+      {flag("halfFloat", "RGBA16F", "RGBA16F capture colour instead of RGBA8"),
+       [](const A& s) { return json(s.halfFloat); },
+       [](A& s, const json& v) { s.halfFloat = v.get<bool>(); }},
+      {flag("mediump", "mediump", "fragment shaders at mediump precision instead of highp"),
+       [](const A& s) { return json(s.mediump); },
+       [](A& s, const json& v) { s.mediump = v.get<bool>(); }},
+  };
+  return fields;
+}
+
+const char* materialName(Material material) {
+  switch (material) {
+    case Material::Phong:
+      return "phong";
+    case Material::Mirror:
+      return "mirror";
+    case Material::Glass:
+      return "glass";
+    case Material::CubeTextured:
+      return "cube-textured";
+  }
+  return "?";
+}
+
+bool parseMaterial(const std::string& name, Material* material) {
+  for (Material m : {Material::Phong, Material::Mirror, Material::Glass, Material::CubeTextured}) {
+    if (name == materialName(m)) {
+      *material = m;
+      return true;
+    }
+  }
+  return false;
+}
+
+const char* environmentName(Environment environment) {
+  return environment == Environment::Skybox ? "skybox" : "live";
+}
+
+bool parseEnvironment(const std::string& name, Environment* environment) {
+  for (Environment e : {Environment::LiveProbe, Environment::Skybox}) {
+    if (name == environmentName(e)) {
+      *environment = e;
+      return true;
+    }
+  }
+  return false;
+}
+
+const std::vector<SettingField<SceneObject>>& materialFields() {
+  using O = SceneObject;
+  static const std::vector<SettingField<O>> fields = {
+      {choice("type", "material", "how the object is shaded",
+              {materialName(Material::Phong), materialName(Material::Mirror),
+               materialName(Material::Glass), materialName(Material::CubeTextured)}),
+       [](const O& o) { return json(materialName(o.material)); },
+       [](O& o, const json& v) { parseMaterial(v.get<std::string>(), &o.material); }},
+      {number("reflection", "reflection", "the environment's weight in the fixed mix", 0, 4),
+       [](const O& o) { return json(o.reflection); },
+       [](O& o, const json& v) { o.reflection = v.get<float>(); }},
+      {number("base", "base colour", "the base colour's weight in the fixed mix", 0, 4),
+       [](const O& o) { return json(o.base); },
+       [](O& o, const json& v) { o.base = v.get<float>(); }},
+      {number("ior", "index of refraction",
+              "glass: air to the material (air 1.00, ice 1.309, water 1.33, glass 1.52, "
+              "diamond 2.42); also sets Fresnel's F0",
+              1, 4),
+       [](const O& o) { return json(o.ior); }, [](O& o, const json& v) { o.ior = v.get<float>(); }},
+      {flag("fresnel", "Fresnel", "Schlick's Fresnel weighting instead of the fixed mix"),
+       [](const O& o) { return json(o.fresnel); },
+       [](O& o, const json& v) { o.fresnel = v.get<bool>(); }},
+      {choice("environment", "environment",
+              "live: a cube captured around the object each frame; skybox: the static sky",
+              {environmentName(Environment::LiveProbe), environmentName(Environment::Skybox)}),
+       [](const O& o) { return json(environmentName(o.environment)); },
+       [](O& o, const json& v) { parseEnvironment(v.get<std::string>(), &o.environment); }},
+  };
+  return fields;
+}
+
+json settingsSchemaJson() {
+  return {{"planner", schemaOf(plannerFields())},
+          {"accuracy", schemaOf(accuracyFields())},
+          {"material", schemaOf(materialFields())}};
+}
+
+}  // namespace reflect
