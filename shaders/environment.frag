@@ -3,6 +3,13 @@
 // 0.78 x environment + 0.3 x base (the weights sum past 1, so bright reflections clip to white);
 // with Fresnel on, Schlick's approximation weighs reflection against the base (mirror) or against
 // refraction (glass) instead.
+//
+// Where a ray meets the live probe's surroundings is found by the search SEARCH picks when the
+// program is built (a runtime switch would not do: software rasterisers run both sides of a
+// branch): 0 the course's plain lookup along the ray's direction, 1 the linear search of
+// linear_search.glsl, 2 the hierarchical search of depth_search.glsl. u_search turns it off per
+// draw (a skybox environment, or a probe whose surroundings are all far enough that the plain
+// lookup is within half a texel).
 in vec3 v_worldPosition;
 in vec3 v_worldNormal;
 
@@ -10,163 +17,86 @@ uniform vec3 u_colour;
 uniform vec3 u_viewPosition;
 uniform float u_reflectionWeight;
 uniform float u_baseWeight;
-uniform int u_refracts;      // 0 mirror, 1 glass
-uniform float u_eta;         // n1 / n2 for refract(): air to the material
-uniform float u_fresnelF0;   // ((n - 1) / (n + 1))^2
-uniform int u_fresnel;       // 0 fixed mix, 1 Schlick
+uniform int u_refracts;       // 0 mirror, 1 glass
+uniform float u_eta;          // n1 / n2 for refract(): air to the material
+uniform float u_fresnelF0;    // ((n - 1) / (n + 1))^2
+uniform int u_fresnel;        // 0 fixed mix, 1 Schlick
+uniform int u_twoSurfaces;    // glass: 1 refracts in and out of u_glassSphere, 0 at entry only
+uniform vec4 u_glassSphere;   // world centre and radius of the glass object, for its exit
 uniform samplerCube u_environment;
-// Distance-corrected lookup (DISTANCE_ITERATIONS > 0, defined when the program is built: a
-// runtime switch would not do, as software rasterisers run both sides of a branch): the
-// capture's alpha holds each texel's distance d from u_probeCentre, encoded as d / (d + 1).
+uniform samplerCube u_environment2;  // the probe's second layer (depth_search.glsl, 2 layers)
 uniform vec3 u_probeCentre;
-uniform float u_distanceUnit;      // the capture's near plane (distances are stored in its units)
-uniform int u_outputDirection;     // 1: write the looked-up direction instead (for measuring)
+uniform float u_distanceUnit;  // the capture's near plane (depths are stored in its units)
+uniform int u_search;          // 0: plain lookup for this draw
+uniform int u_outputDirection; // 1: write the looked-up direction instead (for measuring)
 
-out vec4 fragColour;
+#include "capture_output.glsl"
+#include "linear_search.glsl"
+#include "depth_search.glsl"
 
-// The direction from the probe centre to where the ray from the surface point x along d meets
-// the captured surroundings (the capture's alpha holds each texel's distance from the centre).
-// As in the distance-impostor method: a linear search along the ray, parametrised so that a in
-// [0, 1) covers the whole ray (t = kSearchScale * a / (1 - a) near-plane units), finds the first
-// sample behind the stored surface, then DISTANCE_ITERATIONS secant steps refine the crossing.
-// With no iterations it is d, the course's plain lookup.
-//
-// A single depth layer cannot tell a ray that meets a surface from one that slips behind an
-// occluder (a figure seen from the probe centre, with the floor hidden behind it): both go from
-// in front of the stored surface to behind it. At a true crossing the stored distance is
-// continuous, so the refined point lies on it; at an occluder's edge it jumps, and the refined
-// point stays far from it. Such a crossing would draw a ghost of the occluder's silhouette: the
-// search skips it and goes on along the ray.
-//
-// The constants were chosen on the default scene at t = 0, 2, 4 s (reflector PSNR against the
-// ray-traced reference; checked at t = 1, 3, 5, 7 s, where the gain over the old lookup held).
-const int kLinearSteps = 12;
-// The last linear sample is at t = 12 x kSearchScale near-plane units (48 in the course's
-// scenes, whose capture near plane is 1). Scale 2 and 8 lost 0.4 and 1.5 dB against 4.
-const float kSearchScale = 4.0;
-// A refined crossing counts as a surface when it lies within this fraction of its distance from
-// the stored surface. 0.05 and 0.2 lost 0.7 and 0.4 dB against 0.1.
-const float kSurfaceTolerance = 0.1;
-
-// The capture stores the clear background at the far plane, and a skybox with alpha 1, which reads
-// as 9999 units (the clamp below): infinitely far. Stored distances past kSkyDistance are sky.
-const float kSkyDistance = 5000.0;
-
-float storedDistance(vec3 direction) {
-  float a = min(textureLod(u_environment, direction, 0.0).a, 0.9999);
-  return a / (1.0 - a);
-}
-
-vec3 pointAt(vec3 x, vec3 d, float a) {
-  return x + kSearchScale * (a / (1.0 - a)) * d;
-}
-
-// Positions here are in units of the capture's near plane, as the stored distances are.
-float behind(vec3 x, vec3 d, float a) {  // > 0 in front of the stored surface, < 0 behind it
-  vec3 p = pointAt(x, d, a);
-  return storedDistance(p) - length(p);
-}
-
-// One secant refinement of the crossing bracketed by [frontA, backA] (front in front of the
-// stored surface, back behind it). Returns the refined point, and in `surface` whether it lies on
-// the stored surface (a true crossing) rather than at a depth jump (a ghost); frontA moves to
-// the last refined point in front.
-vec3 refine(vec3 x, vec3 d, inout float frontA, float frontF, float backA, float backF,
-            out bool surface) {
-  for (int k = 0; k < DISTANCE_ITERATIONS; ++k) {
-    float middle = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
-    float fm = behind(x, d, middle);
-    if (fm < 0.0) {
-      backA = middle;
-      backF = fm;
-    } else {
-      frontA = middle;
-      frontF = fm;
-    }
+// The colour the environment shows for the ray from world point `origin` along `d`, and in
+// `direction` the direction it was looked up along.
+vec3 environmentAlong(vec3 origin, vec3 d, out vec3 direction) {
+  direction = d;
+#if SEARCH == 1
+  if (u_search == 1) direction = linearSearch(origin, d);
+#elif SEARCH == 2
+  if (u_search == 1) {
+    SearchResult found = searchDepths((origin - u_probeCentre) / u_distanceUnit, d);
+    if (found.layer != 0) direction = found.point;
+    if (found.layer == 2) return texture(u_environment2, direction).rgb;
   }
-  float hit = frontA + (backA - frontA) * frontF / max(frontF - backF, 1e-6);
-  vec3 p = pointAt(x, d, hit);
-  surface = abs(storedDistance(p) - length(p)) <= kSurfaceTolerance * length(p);
-  return p;
-}
-
-vec3 lookupDirection(vec3 d) {
-#if DISTANCE_ITERATIONS == 0
-  return d;
-#else
-  vec3 x = (v_worldPosition - u_probeCentre) / u_distanceUnit;
-  // The linear search runs its whole, fixed length and notes the first two front-to-back
-  // crossings; the refinement runs after it, so nothing leaves a loop early. (A search that
-  // returned from inside its loop crashed llvmpipe 22.3's compiled shader under some settings
-  // of the sweep; in SwiftShader both forms cost the same.)
-  float previousA = 0.0;
-  float previousF = behind(x, d, 0.0);
-  vec4 first = vec4(-1.0);   // frontA, frontF, backA, backF of the first crossing (x < 0: none)
-  vec4 second = vec4(-1.0);  // and of the second
-  // The farthest sample known to be in front of the stored surface. When no surface is found,
-  // its texel is the best guess for what the ray meets: what lies beside an occluder if the ray
-  // slipped behind one. Looking up along d instead would show the occluder itself, a ghost
-  // beside its true reflection.
-  float freeA = 0.0;
-  for (int i = 1; i <= kLinearSteps; ++i) {
-    float a = float(i) / float(kLinearSteps + 1);
-    float f = behind(x, d, a);
-    if (previousF >= 0.0 && f < 0.0) {
-      if (first.x < 0.0) {
-        first = vec4(previousA, previousF, a, f);
-      } else if (second.x < 0.0) {
-        second = vec4(previousA, previousF, a, f);
-      }
-    }
-    if (f >= 0.0) freeA = a;
-    previousA = a;
-    previousF = f;
-  }
-  bool surface = false;
-  if (first.x >= 0.0) {
-    float frontA = first.x;
-    vec3 p = refine(x, d, frontA, first.y, first.z, first.w, surface);
-    if (surface) return p;
-    if (second.x < 0.0) freeA = max(freeA, frontA);
-  }
-  if (second.x >= 0.0) {
-    float frontA = second.x;
-    vec3 p = refine(x, d, frontA, second.y, second.z, second.w, surface);
-    if (surface) return p;
-  }
-  if (previousF >= 0.0) {
-    // In front of the stored surface to the end of the search. A skybox is infinitely far: seen
-    // along d itself. Anything nearer (the far plane's background, a floor 60 units off) is
-    // looked up from where the search ended.
-    vec3 last = pointAt(x, d, previousA);
-    return previousF + length(last) >= kSkyDistance ? d : last;
-  }
-  return freeA > 0.0 ? pointAt(x, d, freeA) : d;
 #endif
+  return texture(u_environment, direction).rgb;
+}
+
+// Glass seen through both surfaces: the refracted ray crosses the sphere and leaves it at the
+// far side, refracted again (n to air). Inside a sphere a ray meets the far side at the angle it
+// entered, so it always leaves; the loop covers the total internal reflection other shapes would
+// have. `origin` and `d` become the leaving ray.
+void leaveGlassSphere(inout vec3 origin, inout vec3 d) {
+  vec3 centre = u_glassSphere.xyz;
+  for (int bounce = 0; bounce < 4; ++bounce) {
+    vec3 offset = origin - centre;
+    float b = dot(offset, d);
+    float c = dot(offset, offset) - u_glassSphere.w * u_glassSphere.w;
+    float t = -b + sqrt(max(b * b - c, 0.0));  // the far root: the ray starts on the surface
+    origin += t * d;
+    vec3 inward = -normalize(origin - centre);
+    vec3 out_ = refract(d, inward, 1.0 / u_eta);
+    if (dot(out_, out_) > 0.0) {
+      d = out_;
+      return;
+    }
+    d = reflect(d, inward);
+  }
 }
 
 void main() {
   vec3 N = normalize(v_worldNormal);
   vec3 I = normalize(v_worldPosition - u_viewPosition);
-  vec3 reflectedDirection = lookupDirection(reflect(I, N));
-  if (u_outputDirection == 1) {
-    fragColour = vec4(normalize(reflectedDirection), 1.0);
-    return;
-  }
-  vec3 reflected = texture(u_environment, reflectedDirection).rgb;
+  vec3 reflectedDirection;
+  vec3 reflected = environmentAlong(v_worldPosition, reflect(I, N), reflectedDirection);
   float schlick = u_fresnelF0 + (1.0 - u_fresnelF0) * pow(1.0 - clamp(dot(-I, N), 0.0, 1.0), 5.0);
   vec3 colour;
+  vec3 measured = reflectedDirection;
   if (u_refracts == 1) {
     vec3 T = refract(I, N, u_eta);
     // Past the critical angle refract() returns a zero vector, and sampling a cube map with it is
     // undefined: all the light is reflected there.
     bool total = dot(T, T) == 0.0;
-    vec3 refracted = total ? reflected : texture(u_environment, lookupDirection(T)).rgb;
+    vec3 refracted = reflected;
+    if (!total) {
+      vec3 origin = v_worldPosition;
+      if (u_twoSurfaces == 1) leaveGlassSphere(origin, T);
+      refracted = environmentAlong(origin, T, measured);
+    }
     colour = u_fresnel == 1 ? mix(refracted, reflected, total ? 1.0 : schlick)
                             : u_reflectionWeight * refracted + u_baseWeight * u_colour;
   } else {
     colour = u_fresnel == 1 ? mix(u_colour, reflected, schlick)
                             : u_reflectionWeight * reflected + u_baseWeight * u_colour;
   }
-  fragColour = vec4(colour, 1.0);
+  if (u_outputDirection == 1) colour = normalize(measured);
+  writeOutputs(colour, v_worldPosition, N, false);
 }

@@ -10,14 +10,8 @@ uniform float u_ambient;
 uniform float u_diffuse;
 uniform float u_specular;
 uniform float u_shininess;
-// Distance-corrected captures store each texel's distance d from the probe centre, in units of
-// the capture's near plane, in alpha as d / (d + 1), which keeps near distances fine even in
-// 8 bits (u_storeDistance = 1); otherwise alpha is 1.
-uniform int u_storeDistance;
-uniform vec3 u_probeCentre;
-uniform float u_distanceUnit;  // the capture's near plane: keeps the encoding free of scene units
 
-out vec4 fragColour;
+#include "capture_output.glsl"
 
 void main() {
   vec3 N = normalize(v_worldNormal);
@@ -29,7 +23,5 @@ void main() {
     vec3 R = reflect(-L, N);
     colour += vec3(u_specular * pow(clamp(dot(R, V), 0.0, 1.0), u_shininess));
   }
-  float d = length(v_worldPosition - u_probeCentre) / u_distanceUnit;
-  float alpha = u_storeDistance == 1 ? d / (d + 1.0) : 1.0;
-  fragColour = vec4(colour, alpha);
+  writeOutputs(colour, v_worldPosition, N, false);
 }

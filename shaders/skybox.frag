@@ -1,9 +1,9 @@
-// The skybox: the static cube map along the view direction.
+// The skybox: the static cube map along the view direction. In a capture it is infinitely far.
 in vec3 v_direction;
-
 uniform samplerCube u_skybox;
 
-out vec4 fragColour;
+#include "capture_output.glsl"
 
-// Alpha 1: in a distance-storing capture, infinitely far.
-void main() { fragColour = vec4(texture(u_skybox, v_direction).rgb, 1.0); }
+void main() {
+  writeOutputs(texture(u_skybox, v_direction).rgb, vec3(0.0), vec3(0.0), true);
+}

@@ -10,6 +10,7 @@
 #include "core/obj_loader.h"
 #include "core/probe_layout.h"
 #include "core/scene_file.h"
+#include "core/settings_schema.h"
 #include "gfx/gl.h"
 
 namespace reflect {
@@ -41,6 +42,7 @@ std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   if (!mesh) return mesh.error();
   std::vector<MeshData> levels;
   levels.push_back(mesh.take());
+  levels.front().sphereRadius = sphereRadiusOf(levels.front());
   for (MeshData& coarser : buildLodLevels(levels.front())) levels.push_back(std::move(coarser));
   for (MeshData& level : levels) chunkMesh(level);
   if (renderer_) {
@@ -152,9 +154,9 @@ std::string Demo::initGraphics() {
 }
 
 std::string Demo::setAccuracySettings(const AccuracySettings& settings) {
-  if (settings.depthBits != 16 && settings.depthBits != 24) return "depth bits must be 16 or 24";
-  if (settings.distanceIterations < 0 || settings.distanceIterations > 16) {
-    return "distance iterations must be 0..16";
+  for (const auto& field : accuracyFields()) {
+    std::string problem = field.info.check(field.get(settings));
+    if (!problem.empty()) return problem;
   }
   if (settings == accuracy_) return {};
   accuracy_ = settings;
@@ -167,8 +169,8 @@ void Demo::renderLookupDirections(unsigned framebuffer, int width, int height) {
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
   const std::vector<PlannedObject> objects = plannedObjects(clock_.seconds());
-  renderer_->drawMain(scene_, clock_.seconds(), FramePlanner::layout(objects), view,
-                      viewDraws(objects, height), framebuffer, width, height, true);
+  renderer_->drawMain(scene_, clock_.seconds(), FramePlanner::layout(objects, captureContext()),
+                      view, viewDraws(objects, height), framebuffer, width, height, true);
 }
 
 std::vector<DrawItem> Demo::viewDraws(const std::vector<PlannedObject>& objects, int height) const {
@@ -189,6 +191,18 @@ void Demo::loseGraphics() {
   if (gpuTimer_) gpuTimer_->abandon();
   gpuTimer_.reset();
   planner_.invalidate();
+}
+
+CaptureContext Demo::captureContext() const {
+  return CaptureContext{camera_.eye(),
+                        scene_.capture.faceSize,
+                        scene_.capture.near,
+                        scene_.capture.far,
+                        scene_.light,
+                        scene_.clearColour,
+                        skyboxContent_,
+                        accuracy_,
+                        plannerSettings_.captureLod};
 }
 
 std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {

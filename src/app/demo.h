@@ -85,10 +85,14 @@ class Demo {
   static constexpr int kMaxCubeFaceSize = 4096;  // 6 x 4096^2 x 4 bytes = 400 MB already
   // The live cube map of the scene's first reflector (0 before the first capture), for tests.
   unsigned environmentTexture() const;
+  // The renderer (null before initGraphics), for tests that read its captures back.
+  const SceneRenderer* renderer() const { return renderer_.get(); }
 
  private:
   std::string adopt(const std::string& name, Result<MeshData> mesh);
   std::vector<PlannedObject> plannedObjects(double seconds) const;
+  // Everything besides the objects that the captures depend on, as values.
+  CaptureContext captureContext() const;
   // The main pass's draws for a viewport `height` pixels tall (view LOD, if on).
   std::vector<DrawItem> viewDraws(const std::vector<PlannedObject>& objects, int height) const;
 

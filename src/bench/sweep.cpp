@@ -14,22 +14,25 @@ std::vector<SweepSetting> sweepSettings() {
   AccuracySettings course;  // the course: captured at the origin, 16-bit depth, plain lookup
   course.captureAtOrigin = true;
   course.depthBits = 16;
-  course.distanceIterations = 0;
-  const AccuracySettings corrected;     // the shipped default (distance-corrected, RGBA8)
-  AccuracySettings centre = corrected;  // plain lookup from the reflector's centre
-  centre.distanceIterations = 0;
+  course.search = Search::Plain;
+  course.glassSurfaces = 1;
+  const AccuracySettings shipped;     // the default: hierarchical search, two layers
+  AccuracySettings centre = shipped;  // plain lookup from the reflector's centre
+  centre.search = Search::Plain;
+  AccuracySettings linear = shipped;  // the search this project shipped before
+  linear.search = Search::Linear;
+  AccuracySettings oneLayer = shipped;
+  oneLayer.layers = 1;
 
-  std::vector<SweepSetting> s = {
-      {"original", course, 256}, {"default", corrected, 256}, {"centre", centre, 256}};
+  std::vector<SweepSetting> s = {{"original", course, 256},
+                                 {"default", shipped, 256},
+                                 {"centre", centre, 256},
+                                 {"linear", linear, 256},
+                                 {"layers-1", oneLayer, 256}};
   for (int size : {32, 64, 128, 512, 1024})
     s.push_back({"size-" + std::to_string(size), centre, size});
-  for (int k : {1, 4}) {  // k = 2 is the default row
-    AccuracySettings a = centre;
-    a.distanceIterations = k;
-    s.push_back({"distance-" + std::to_string(k), a, 256});
-  }
   for (int size : {64, 128, 512})
-    s.push_back({"distance-2-size-" + std::to_string(size), corrected, size});
+    s.push_back({"default-size-" + std::to_string(size), shipped, size});
   AccuracySettings a = centre;
   a.depthBits = 16;
   s.push_back({"depth-16", a, 256});
@@ -39,15 +42,15 @@ std::vector<SweepSetting> sweepSettings() {
   a = centre;
   a.halfFloat = true;
   s.push_back({"rgba16f", a, 256});
-  a = corrected;
+  a = shipped;
   a.halfFloat = true;
-  s.push_back({"distance-2-rgba16f", a, 256});
+  s.push_back({"default-rgba16f", a, 256});
   a = centre;
   a.mediump = true;
   s.push_back({"mediump", a, 256});
-  a = corrected;
+  a = shipped;
   a.mediump = true;
-  s.push_back({"distance-2-mediump", a, 256});
+  s.push_back({"default-mediump", a, 256});
   return s;
 }
 

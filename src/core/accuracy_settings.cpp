@@ -2,12 +2,36 @@
 
 namespace reflect {
 
+const char* searchName(Search search) {
+  switch (search) {
+    case Search::Plain:
+      return "plain";
+    case Search::Linear:
+      return "linear";
+    case Search::Hierarchical:
+      return "hierarchical";
+  }
+  return "?";
+}
+
+bool parseSearch(const std::string& name, Search* search) {
+  for (Search s : {Search::Plain, Search::Linear, Search::Hierarchical}) {
+    if (name == searchName(s)) {
+      *search = s;
+      return true;
+    }
+  }
+  return false;
+}
+
 std::string AccuracySettings::describe() const {
   std::string s = captureAtOrigin ? "origin" : "centre";
-  s += distanceIterations > 0 ? ", distance x" + std::to_string(distanceIterations) : ", plain";
+  s += std::string(", ") + searchName(search);
+  if (search == Search::Hierarchical) s += ", layers " + std::to_string(layers);
+  s += ", glass " + std::to_string(glassSurfaces);
   s += ", depth " + std::to_string(depthBits);
   s += mipmaps ? ", mipmapped" : ", linear";
-  s += usesHalfFloat() ? ", RGBA16F" : ", RGBA8";
+  s += halfFloat ? ", RGBA16F" : ", RGBA8";
   s += mediump ? ", mediump" : ", highp";
   return s;
 }

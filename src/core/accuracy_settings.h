@@ -1,33 +1,47 @@
 // The knobs that trade speed for accuracy in the capture and the lookup (measured by
-// `reflect bench --sweep` against the ray-traced reference).
+// `reflect bench --sweep` against the ray-traced reference). Their names, ranges and help are in
+// settings_schema.cpp.
 #pragma once
 
 #include <string>
 
 namespace reflect {
 
+// How a mirror or glass finds where its ray meets the captured surroundings.
+enum class Search {
+  // The course: the cube map looked up along the ray's direction, exact only for a world
+  // infinitely far away.
+  Plain,
+  // The distance-impostor method (Szirmay-Kalos et al., 2005) as this project first shipped it:
+  // 12 linear steps along the ray against each texel's stored distance, then 2 secant steps.
+  // It can step over anything thinner than a step (shaders/linear_search.glsl).
+  Linear,
+  // A walk of each face's min/max depth chain that tests every texel the ray passes
+  // (shaders/depth_search.glsl): nothing is stepped over.
+  Hierarchical,
+};
+
+const char* searchName(Search search);
+bool parseSearch(const std::string& name, Search* search);
+
 struct AccuracySettings {
   bool captureAtOrigin = false;  // the course's capture point (0,0,0), not the reflector's centre
-  // 0: plain lookup along R (the course). k > 0: distance-corrected lookup, the "distance
-  // impostor" of Szirmay-Kalos et al. (2005): the capture stores each texel's distance from the
-  // probe centre (alpha, as d / (d + 1)), and the reflected ray from the surface point is
-  // intersected with that depth (a linear search, then k secant steps) before the lookup.
-  // The shipped default (2) is the Pareto-best setting of `reflect bench --sweep` within 1.1x
-  // the course's frame time; see README.
-  int distanceIterations = 2;
+  Search search = Search::Hierarchical;
+  // Stored depth layers per probe (hierarchical search): 1, or 2, where the second holds the
+  // nearest surface behind the first that faces the probe, so a ray that passes behind a figure
+  // finds what is there. The planner gives a probe its second layer only where something in its
+  // capture can hide something else.
+  int layers = 2;
+  // Glass: 2 refracts into the object and out of its far side, 1 only at entry (the course's
+  // notes).
+  int glassSurfaces = 2;
   int depthBits = 24;      // capture depth buffer: 16 or 24
   bool mipmaps = false;    // trilinear lookup from a mip chain rebuilt after each capture
   bool halfFloat = false;  // RGBA16F capture colour instead of RGBA8
   bool mediump = false;    // fragment shaders at mediump instead of highp
 
-  bool usesHalfFloat() const { return halfFloat; }
-  bool operator==(const AccuracySettings& o) const {
-    return captureAtOrigin == o.captureAtOrigin && distanceIterations == o.distanceIterations &&
-           depthBits == o.depthBits && mipmaps == o.mipmaps && halfFloat == o.halfFloat &&
-           mediump == o.mediump;
-  }
-  bool operator!=(const AccuracySettings& o) const { return !(*this == o); }
-  // e.g. "centre, distance x2, depth 24, linear, RGBA16F, highp"
+  bool operator==(const AccuracySettings&) const = default;
+  // e.g. "centre, hierarchical, layers 2, glass 2, depth 24, linear, RGBA8, highp"
   std::string describe() const;
 };
 

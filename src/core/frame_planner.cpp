@@ -79,10 +79,67 @@ int PlannerSettings::maxStalenessFrames() const {
   }
 }
 
-FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects) {
+bool plainLookupWithinHalfTexel(float reach, float nearest, int faceSize) {
+  const float halfTexel = 0.4714f / static_cast<float>(std::max(faceSize, 1));
+  return reach < nearest * std::sin(halfTexel);
+}
+
+namespace {
+
+float distanceToBox(const glm::vec3& p, const Bounds& box) {
+  return glm::length(glm::max(glm::max(box.min - p, p - box.max), glm::vec3(0.0f)));
+}
+
+float farthestInBox(const glm::vec3& p, const Bounds& box) {
+  return glm::length(glm::max(glm::abs(box.min - p), glm::abs(box.max - p)));
+}
+
+// What a probe stores (layers) and whether its reflectors need a search at all, from which
+// objects each face can see.
+void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                   const CaptureContext& context) {
+  const bool sky = context.skyboxContent != 0;
+  float reach = 0.0f;
+  // Without a sky the clear background is stored at the far plane, at least `far` away.
+  float nearest = sky ? INFINITY : context.far;
+  bool occlusion = false;
+  std::array<int, 6> visible{};
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const PlannedObject& o = objects[i];
+    const Bounds world = transformBounds(o.localBounds, o.model);
+    if (contains(probe.members, static_cast<int>(i))) {
+      reach = std::max(reach, farthestInBox(probe.centre, world));
+      continue;
+    }
+    bool seen = false;
+    for (int face = 0; face < 6; ++face) {
+      if (!faceMaySee(probe.centre, face, context.near, context.far, o.localBounds, o.model)) {
+        continue;
+      }
+      seen = true;
+      ++visible[static_cast<size_t>(face)];
+    }
+    if (seen) nearest = std::min(nearest, distanceToBox(probe.centre, world));
+  }
+  for (int count : visible) occlusion |= count >= 2 || (sky && count >= 1);
+  const bool searches = context.accuracy.search != Search::Plain;
+  probe.plainLookupSuffices =
+      searches && plainLookupWithinHalfTexel(reach, nearest, context.faceSize);
+  probe.layers = context.accuracy.search == Search::Hierarchical && context.accuracy.layers >= 2 &&
+                         occlusion && !probe.plainLookupSuffices
+                     ? 2
+                     : 1;
+}
+
+}  // namespace
+
+FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
+                               const CaptureContext& context) {
   FramePlan plan;
-  for (ProbeLayout& probe : probesOf(objects))
+  for (ProbeLayout& probe : probesOf(objects)) {
     plan.probes.push_back(ProbePlan{std::move(probe), {}});
+    decideStorage(plan.probes.back(), objects, context);
+  }
   return plan;
 }
 
@@ -245,6 +302,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   std::vector<int> recapturedForRealChange;
   for (ProbeLayout& layout : probesOf(objects)) {
     ProbePlan probe{std::move(layout), {}};
+    decideStorage(probe, objects, context);
     const int reflector = probe.reflector;
     const std::vector<int>& members = probe.members;
     auto memoryIt = std::find_if(probes_.begin(), probes_.end(),
@@ -255,11 +313,14 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       memoryIt->reflector = reflector;
     }
     ProbeMemory& memory = *memoryIt;
-    // The probe moved or a capture option changed: no face is valid any more.
-    if (probe.centre != memory.centre || !(context == memory.context)) {
+    // The probe moved, a capture option changed or it stores another number of layers: no
+    // face is valid any more.
+    if (probe.centre != memory.centre || !(context == memory.context) ||
+        probe.layers != memory.layers) {
       for (FaceMemory& f : memory.faces) f.captured = false;
       memory.centre = probe.centre;
       memory.context = context;
+      memory.layers = probe.layers;
     }
 
     std::array<std::vector<DrawItem>, 6> draws;

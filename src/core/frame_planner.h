@@ -90,10 +90,26 @@ struct FacePlan {
   std::vector<DrawItem> draws;
 };
 
-// A probe (who samples it, where it captures from) and the faces it redraws this frame.
+// A probe (who samples it, where it captures from), what it stores and the faces it redraws
+// this frame.
 struct ProbePlan : ProbeLayout {
   std::vector<FacePlan> faces;  // only the faces to redraw this frame
+  // Depth layers to store (hierarchical search): 2 only when something in the probe's view can
+  // hide something else from it (two objects in one face, or one in front of the sky).
+  int layers = 1;
+  // Everything the probe sees is so far, compared with how far its reflectors reach from its
+  // centre, that the plain lookup is within half a texel (plainLookupWithinHalfTexel): no search.
+  bool plainLookupSuffices = false;
 };
+
+// The plain lookup (the cube map along the ray's direction) is off by the parallax angle between
+// the ray from a surface point at distance r from the probe centre and the line from the centre to
+// what the ray meets, at distance D: at most asin(r / D). A texel of a face of N texels spans at
+// least 0.9428 / N radians (at the face's corners: d(angle)/ds = sqrt(1 + t^2) / (1 + s^2 + t^2)
+// is smallest at s = t = 1, sqrt(2) / 3, and a texel is 2 / N of s). So the plain lookup is within
+// half a texel wherever r < D * sin(0.4714 / N). `reach`: the reflectors' farthest point from the
+// centre; `nearest`: the nearest surface the probe can store (infinity for the sky alone).
+bool plainLookupWithinHalfTexel(float reach, float nearest, int faceSize);
 
 // Everything a frame's passes need to know: the capture renders `faces`, and the main pass binds
 // each probed object to its probe's cube and centre from here.
@@ -116,7 +132,7 @@ class FramePlanner {
                  const PlannerSettings& settings);
   // The probes alone, with no faces to capture and nothing remembered: for a pass that reads the
   // cubes a plan() already captured.
-  static FramePlan layout(const std::vector<PlannedObject>& objects);
+  static FramePlan layout(const std::vector<PlannedObject>& objects, const CaptureContext& context);
   // Forget every capture (the GL context was lost, or the caller wants a clean start).
   void invalidate() { probes_.clear(); }
 
@@ -131,6 +147,7 @@ class FramePlanner {
   struct ProbeMemory {
     int reflector = -1;
     glm::vec3 centre{0.0f};
+    int layers = 1;
     CaptureContext context;
     std::array<FaceMemory, 6> faces;
     int sliceCursor = 0;

@@ -1,5 +1,8 @@
 #include "core/mesh_data.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace reflect {
 
 Bounds computeBounds(const std::vector<Vertex>& vertices) {
@@ -10,6 +13,19 @@ Bounds computeBounds(const std::vector<Vertex>& vertices) {
     b.max = glm::max(b.max, v.position);
   }
   return b;
+}
+
+float sphereRadiusOf(const MeshData& mesh) {
+  if (mesh.vertices.empty()) return 0.0f;
+  const glm::vec3 centre = mesh.bounds.centre();
+  float lo = INFINITY, hi = 0.0f;
+  for (const Vertex& v : mesh.vertices) {
+    const float r = glm::length(v.position - centre);
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
+  }
+  if (!(lo > 0.0f) || hi > lo * 1.005f) return 0.0f;
+  return 0.5f * (lo + hi);
 }
 
 }  // namespace reflect

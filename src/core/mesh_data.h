@@ -38,10 +38,17 @@ struct MeshData {
   std::vector<uint32_t> indices;  // triangles, counter-clockwise
   Bounds bounds;
   std::vector<MeshChunk> chunks;  // empty until chunkMesh
+  // When every vertex lies on one sphere about bounds.centre(): its radius (glass then leaves the
+  // object analytically through its far side); 0 for any other shape.
+  float sphereRadius = 0.0f;
 
   size_t triangleCount() const { return indices.size() / 3; }
 };
 
 Bounds computeBounds(const std::vector<Vertex>& vertices);
+
+// The radius of the sphere about bounds.centre() that every vertex lies on, within 0.5%; 0 when
+// they do not (or the mesh is empty).
+float sphereRadiusOf(const MeshData& mesh);
 
 }  // namespace reflect

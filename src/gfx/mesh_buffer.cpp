@@ -12,7 +12,8 @@ MeshBuffer::MeshBuffer(const MeshData& mesh)
       vertices_(genBuffer()),
       indices_(genBuffer()),
       indexCount_(static_cast<GLsizei>(mesh.indices.size())),
-      bounds_(mesh.bounds) {
+      bounds_(mesh.bounds),
+      sphereRadius_(mesh.sphereRadius) {
   glBindVertexArray(vao_.id());
   glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),

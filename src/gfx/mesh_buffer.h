@@ -18,6 +18,7 @@ class MeshBuffer {
   GLsizei indexCount() const { return indexCount_; }
   size_t triangleCount() const { return static_cast<size_t>(indexCount_) / 3; }
   const Bounds& bounds() const { return bounds_; }
+  float sphereRadius() const { return sphereRadius_; }
   void abandon();
 
  private:
@@ -26,6 +27,7 @@ class MeshBuffer {
   BufferHandle indices_;
   GLsizei indexCount_ = 0;
   Bounds bounds_;
+  float sphereRadius_ = 0.0f;
 };
 
 }  // namespace reflect

@@ -1,16 +1,17 @@
 #include "gfx/scene_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/cube_faces.h"
+#include "core/depth_code.h"
+#include "core/frustum.h"
 #include "core/normal_matrix.h"
 
 namespace reflect {
 namespace {
-
-constexpr GLint kEnvironmentTextureUnit = 0;
 
 void setObjectMatrices(GLint model, GLint normalMatrix, const glm::mat4& m) {
   glUniformMatrix4fv(model, 1, GL_FALSE, glm::value_ptr(m));
@@ -18,75 +19,140 @@ void setObjectMatrices(GLint model, GLint normalMatrix, const glm::mat4& m) {
   glUniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normal));
 }
 
-void clearTo(const glm::vec3& colour, float alpha = 1.0f) {
-  glClearColor(colour.r, colour.g, colour.b, alpha);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+void bindTexture(GLint unit, GLenum target, GLuint texture) {
+  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+  glBindTexture(target, texture);
+}
+
+// The faces' view directions as the capture renders them (cubeFaceView's lookAt): right, up and
+// look direction per face, for the search's projection onto each face.
+void setFaceFrames(const ShaderProgram& p) {
+  glm::vec3 right[6], up[6], axis[6];
+  for (size_t f = 0; f < 6; ++f) {
+    const glm::mat4 view = cubeFaceView(glm::vec3(0.0f), static_cast<int>(f));
+    right[f] = glm::vec3(view[0][0], view[1][0], view[2][0]);
+    up[f] = glm::vec3(view[0][1], view[1][1], view[2][1]);
+    axis[f] = -glm::vec3(view[0][2], view[1][2], view[2][2]);
+  }
+  glUniform3fv(p.uniform("u_faceRight"), 6, glm::value_ptr(right[0]));
+  glUniform3fv(p.uniform("u_faceUp"), 6, glm::value_ptr(up[0]));
+  glUniform3fv(p.uniform("u_faceAxis"), 6, glm::value_ptr(axis[0]));
+}
+
+// The uniform scale of `model`, or 0 when it scales the axes differently (a stretched sphere is
+// no sphere).
+float uniformScale(const glm::mat4& model) {
+  const float x = glm::length(glm::vec3(model[0])), y = glm::length(glm::vec3(model[1])),
+              z = glm::length(glm::vec3(model[2]));
+  const float lo = std::min({x, y, z}), hi = std::max({x, y, z});
+  return hi <= lo * 1.001f ? hi : 0.0f;
 }
 
 }  // namespace
 
 Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   const bool mediump = accuracy.mediump;
-  Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag", mediump);
+  const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
+  Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag", mediump, precision);
   if (!phong) return Result<SceneRenderer>::failure(phong.error());
-  const std::string lookup =
-      "#define DISTANCE_ITERATIONS " + std::to_string(accuracy.distanceIterations) + "\n";
+  const std::string lookup = precision + "#define SEARCH " +
+                             std::to_string(static_cast<int>(accuracy.search)) +
+                             "\n#define DISTANCE_ITERATIONS 2\n";
   Result<ShaderProgram> environment =
       ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
   if (!environment) return Result<SceneRenderer>::failure(environment.error());
   Result<ShaderProgram> cubeTextured =
-      ShaderProgram::build("mesh.vert", "cube_textured.frag", mediump);
+      ShaderProgram::build("mesh.vert", "cube_textured.frag", mediump, precision);
   if (!cubeTextured) return Result<SceneRenderer>::failure(cubeTextured.error());
+  Result<ShaderProgram> reduce = ShaderProgram::build("fullscreen.vert", "depth_reduce.frag");
+  if (!reduce) return Result<SceneRenderer>::failure(reduce.error());
+  Result<ShaderProgram> merge = ShaderProgram::build("fullscreen.vert", "depth_merge.frag");
+  if (!merge) return Result<SceneRenderer>::failure(merge.error());
 
+  SceneRenderer r;
   const ShaderProgram& p = phong.value();
-  PhongProgram phongProgram{ShaderProgram{},
-                            p.uniform("u_viewProjection"),
-                            p.uniform("u_model"),
-                            p.uniform("u_normalMatrix"),
-                            p.uniform("u_colour"),
-                            p.uniform("u_lightPosition"),
-                            p.uniform("u_viewPosition"),
-                            p.uniform("u_ambient"),
-                            p.uniform("u_diffuse"),
-                            p.uniform("u_specular"),
-                            p.uniform("u_shininess"),
-                            p.uniform("u_storeDistance"),
-                            p.uniform("u_probeCentre"),
-                            p.uniform("u_distanceUnit")};
-  phongProgram.program = phong.take();
-  const ShaderProgram& e = environment.value();
-  EnvironmentProgram environmentProgram{ShaderProgram{},
-                                        e.uniform("u_viewProjection"),
-                                        e.uniform("u_model"),
-                                        e.uniform("u_normalMatrix"),
-                                        e.uniform("u_colour"),
-                                        e.uniform("u_viewPosition"),
-                                        e.uniform("u_reflectionWeight"),
-                                        e.uniform("u_baseWeight"),
-                                        e.uniform("u_refracts"),
-                                        e.uniform("u_eta"),
-                                        e.uniform("u_fresnelF0"),
-                                        e.uniform("u_fresnel"),
-                                        e.uniform("u_environment"),
-                                        e.optionalUniform("u_probeCentre"),
-                                        e.optionalUniform("u_distanceUnit"),
-                                        e.uniform("u_outputDirection")};
-  environmentProgram.program = environment.take();
-  const ShaderProgram& c = cubeTextured.value();
-  CubeTexturedProgram cubeTexturedProgram{ShaderProgram{}, c.uniform("u_viewProjection"),
-                                          c.uniform("u_model"), c.optionalUniform("u_normalMatrix"),
-                                          c.uniform("u_environment")};
-  cubeTexturedProgram.program = cubeTextured.take();
-  return SceneRenderer(std::move(phongProgram), std::move(environmentProgram),
-                       std::move(cubeTexturedProgram), accuracy);
-}
+  r.phong_ = PhongProgram{ShaderProgram{},
+                          CaptureUniforms::of(p),
+                          p.uniform("u_viewProjection"),
+                          p.uniform("u_model"),
+                          p.uniform("u_normalMatrix"),
+                          p.uniform("u_colour"),
+                          p.uniform("u_lightPosition"),
+                          p.uniform("u_viewPosition"),
+                          p.uniform("u_ambient"),
+                          p.uniform("u_diffuse"),
+                          p.uniform("u_specular"),
+                          p.uniform("u_shininess")};
+  r.phong_.program = phong.take();
 
-SceneRenderer::SceneRenderer(PhongProgram phong, EnvironmentProgram environment,
-                             CubeTexturedProgram cubeTextured, const AccuracySettings& accuracy)
-    : phong_(std::move(phong)),
-      environment_(std::move(environment)),
-      cubeTextured_(std::move(cubeTextured)),
-      accuracy_(accuracy) {}
+  const ShaderProgram& e = environment.value();
+  r.environment_ = EnvironmentProgram{ShaderProgram{},
+                                      CaptureUniforms::of(e),
+                                      e.uniform("u_viewProjection"),
+                                      e.uniform("u_model"),
+                                      e.uniform("u_normalMatrix"),
+                                      e.uniform("u_colour"),
+                                      e.uniform("u_viewPosition"),
+                                      e.uniform("u_reflectionWeight"),
+                                      e.uniform("u_baseWeight"),
+                                      e.uniform("u_refracts"),
+                                      e.uniform("u_eta"),
+                                      e.uniform("u_fresnelF0"),
+                                      e.uniform("u_fresnel"),
+                                      e.uniform("u_twoSurfaces"),
+                                      e.uniform("u_glassSphere"),
+                                      e.optionalUniform("u_probeCentre"),
+                                      e.optionalUniform("u_distanceUnit"),
+                                      e.optionalUniform("u_search"),
+                                      e.uniform("u_outputDirection"),
+                                      e.optionalUniform("u_layers"),
+                                      e.optionalUniform("u_faceSize"),
+                                      e.optionalUniform("u_topLevel")};
+  glUseProgram(e.id());
+  glUniform1i(e.uniform("u_environment"), kEnvironmentUnit);
+  glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
+  glUniform1i(e.optionalUniform("u_depths"), kDepthsUnit);
+  glUniform1i(e.optionalUniform("u_depths2"), kDepths2Unit);
+  if (accuracy.search == Search::Hierarchical) setFaceFrames(e);
+  r.environment_.program = environment.take();
+
+  const ShaderProgram& c = cubeTextured.value();
+  r.cubeTextured_ =
+      CubeTexturedProgram{ShaderProgram{}, CaptureUniforms::of(c), c.uniform("u_viewProjection"),
+                          c.uniform("u_model"), c.optionalUniform("u_normalMatrix")};
+  glUseProgram(c.id());
+  glUniform1i(c.uniform("u_environment"), kEnvironmentUnit);
+  r.cubeTextured_.program = cubeTextured.take();
+
+  const ShaderProgram& d = reduce.value();
+  r.reduce_ = ReduceProgram{ShaderProgram{}, d.uniform("u_sourceSize"), d.uniform("u_layer")};
+  glUseProgram(d.id());
+  glUniform1i(d.uniform("u_source"), 0);
+  r.reduce_.program = reduce.take();
+  const ShaderProgram& m = merge.value();
+  r.merge_ = MergeProgram{ShaderProgram{}, m.uniform("u_layer")};
+  glUseProgram(m.id());
+  glUniform1i(m.uniform("u_backs"), 0);
+  r.merge_.program = merge.take();
+  glUseProgram(0);
+
+  r.emptyDepths_ = TextureHandle(genTexture());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, r.emptyDepths_.id());
+  glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_RG16UI, 1, 1, 6);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  for (GLint unit : {kDepthsUnit, kDepths2Unit, kPeelDepthsUnit}) {
+    bindTexture(unit, GL_TEXTURE_2D_ARRAY, r.emptyDepths_.id());
+  }
+  glActiveTexture(GL_TEXTURE0);
+  r.emptyVertexArray_ = VertexArrayHandle(genVertexArray());
+  r.accuracy_ = accuracy;
+  if (!checkGlError("create scene renderer")) {
+    return Result<SceneRenderer>::failure("GL error while creating the scene renderer");
+  }
+  return r;
+}
 
 void SceneRenderer::setMesh(const std::string& name, int lod, const MeshData& mesh) {
   std::vector<MeshBuffer>& levels = meshes_[name];
@@ -109,26 +175,24 @@ const MeshBuffer* SceneRenderer::mesh(const std::string& name, int lod) const {
   return &it->second[level];
 }
 
-GLuint SceneRenderer::environmentTexture(const Scene& scene, const FramePlan& plan,
-                                         int index) const {
-  const SceneObject& object = scene.objects.at(static_cast<size_t>(index));
-  if (object.environment == Environment::Skybox) return skybox_ ? skybox_->texture() : 0;
-  const ProbePlan* probe = plan.probeOf(index);
-  return probe ? probeTexture(probe->reflector) : 0;
-}
-
 GLuint SceneRenderer::probeTexture(int owner) const {
   auto it = probes_.find(owner);
   return it == probes_.end() ? 0 : it->second.texture();
 }
 
+const CubeCaptureTarget* SceneRenderer::probeTarget(int owner) const {
+  auto it = probes_.find(owner);
+  return it == probes_.end() ? nullptr : &it->second;
+}
+
 void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
-                        const glm::vec3& viewPosition, const glm::vec3* distanceCentre,
+                        const glm::vec3& viewPosition, const CaptureState& pass,
                         bool outputDirections) {
   current_ = kind;
   switch (kind) {
     case ProgramKind::Phong:
       glUseProgram(phong_.program.id());
+      phong_.capture.set(pass);
       glUniformMatrix4fv(phong_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
       glUniform3fv(phong_.lightPosition, 1, glm::value_ptr(scene.light.position));
       glUniform3fv(phong_.viewPosition, 1, glm::value_ptr(viewPosition));
@@ -136,23 +200,62 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
       glUniform1f(phong_.diffuse, scene.light.diffuse);
       glUniform1f(phong_.specular, scene.light.specular);
       glUniform1f(phong_.shininess, scene.light.shininess);
-      glUniform1i(phong_.storeDistance, distanceCentre ? 1 : 0);
-      if (distanceCentre) glUniform3fv(phong_.probeCentre, 1, glm::value_ptr(*distanceCentre));
-      glUniform1f(phong_.distanceUnit, scene.capture.near);
       break;
     case ProgramKind::Environment:
       glUseProgram(environment_.program.id());
+      environment_.capture.set(pass);
       glUniformMatrix4fv(environment_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
       glUniform3fv(environment_.viewPosition, 1, glm::value_ptr(viewPosition));
-      glUniform1i(environment_.environment, kEnvironmentTextureUnit);
       glUniform1i(environment_.outputDirection, outputDirections ? 1 : 0);
       break;
     case ProgramKind::CubeTextured:
       glUseProgram(cubeTextured_.program.id());
+      cubeTextured_.capture.set(pass);
       glUniformMatrix4fv(cubeTextured_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
-      glUniform1i(cubeTextured_.environment, kEnvironmentTextureUnit);
       break;
   }
+}
+
+void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, int index) {
+  const SceneObject& object = scene.objects[static_cast<size_t>(index)];
+  GLuint colour = 0, colour2 = 0, depths = emptyDepths_.id(), depths2 = emptyDepths_.id();
+  int layers = 1, faceSize = 1, topLevel = 0;
+  bool search = false;
+  glm::vec3 centre(0.0f);
+  if (object.environment == Environment::Skybox) {
+    colour = skybox_ ? skybox_->texture() : 0;
+  } else if (const ProbePlan* probe = plan.probeOf(index)) {
+    centre = probe->centre;
+    auto it = probes_.find(probe->reflector);
+    if (it != probes_.end()) {
+      const CubeCaptureTarget& t = it->second;
+      colour = t.texture(0);
+      layers = t.format().layers;
+      colour2 = layers == 2 ? t.texture(1) : colour;
+      if (t.format().depthChain) {
+        depths = t.depthChain(0);
+        if (layers == 2) depths2 = t.depthChain(1);
+      }
+      faceSize = t.faceSize();
+      topLevel = t.topLevel();
+      search = accuracy_.search != Search::Plain && !probe->plainLookupSuffices;
+    }
+  }
+  if (current_ == ProgramKind::CubeTextured) {
+    bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, colour);
+    return;
+  }
+  bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, colour);
+  bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, colour2 ? colour2 : colour);
+  bindTexture(kDepthsUnit, GL_TEXTURE_2D_ARRAY, depths);
+  bindTexture(kDepths2Unit, GL_TEXTURE_2D_ARRAY, depths2);
+  glActiveTexture(GL_TEXTURE0);
+  glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(centre));
+  glUniform1f(environment_.distanceUnit, scene.capture.near);
+  glUniform1i(environment_.search, search ? 1 : 0);
+  glUniform1i(environment_.layers, layers);
+  glUniform1i(environment_.faceSize, faceSize);
+  glUniform1i(environment_.topLevel, topLevel);
 }
 
 PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
@@ -161,38 +264,41 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
   const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
   const glm::mat4 model = scene.modelMatrix(object, seconds);
+  // The object's size, for the third capture pass (capture_output.glsl).
+  const Bounds world = transformBounds(buffer->bounds(), model);
+  const float extent = glm::length(world.max - world.min) / scene.capture.near;
   switch (current_) {
     case ProgramKind::Phong:
       setObjectMatrices(phong_.model, phong_.normalMatrix, model);
       glUniform3fv(phong_.colour, 1, glm::value_ptr(object.colour));
+      glUniform1f(phong_.capture.extent, extent);
       break;
     case ProgramKind::Environment: {
       setObjectMatrices(environment_.model, environment_.normalMatrix, model);
       glUniform3fv(environment_.colour, 1, glm::value_ptr(object.colour));
-      glUniform1f(environment_.reflection, object.reflection);
-      glUniform1f(environment_.base, object.base);
+      glUniform1f(environment_.capture.extent, extent);
+      glUniform1f(environment_.reflectionWeight, object.reflection);
+      glUniform1f(environment_.baseWeight, object.base);
       glUniform1i(environment_.refracts, object.material == Material::Glass ? 1 : 0);
       const float n = std::max(object.ior, 1e-3f);
       glUniform1f(environment_.eta, 1.0f / n);
       glUniform1f(environment_.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
       glUniform1i(environment_.fresnel, object.fresnel ? 1 : 0);
-      // Only a live probe has distances (and a centre); the skybox is at infinity.
-      const bool live = object.environment == Environment::LiveProbe;
-      // A skybox is at infinity: its lookups stay plain (a far probe centre makes the search
-      // return the ray direction itself).
-      const ProbePlan* probe = plan.probeOf(item.object);
-      const glm::vec3 centre = probe ? probe->centre : glm::vec3(0.0f);
-      glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(centre));
-      glUniform1f(environment_.distanceUnit, live ? scene.capture.near : 1e30f);
+      // Glass leaves through its far side where the mesh is a sphere (uniformly scaled).
+      const MeshBuffer* full = mesh(object.mesh, 0);
+      const float radius = full ? full->sphereRadius() * uniformScale(model) : 0.0f;
+      const bool twoSurfaces = accuracy_.glassSurfaces == 2 && radius > 0.0f;
+      glUniform1i(environment_.twoSurfaces, twoSurfaces ? 1 : 0);
+      const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
+      glUniform4f(environment_.glassSphere, centre.x, centre.y, centre.z, radius);
+      bindEnvironment(scene, plan, item.object);
       break;
     }
     case ProgramKind::CubeTextured:
       setObjectMatrices(cubeTextured_.model, cubeTextured_.normalMatrix, model);
+      glUniform1f(cubeTextured_.capture.extent, extent);
+      bindEnvironment(scene, plan, item.object);
       break;
-  }
-  if (object.usesEnvironment()) {
-    glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, environmentTexture(scene, plan, item.object));
   }
   buffer->draw(item.ranges);
   const size_t triangles = item.ranges.empty() ? buffer->triangleCount() : item.triangles;
@@ -203,7 +309,7 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
                                     const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
                                     const glm::vec3& viewPosition,
                                     const glm::vec3& environmentViewPosition,
-                                    const glm::vec3* distanceCentre, bool outputDirections) {
+                                    const CaptureState& pass, bool outputDirections) {
   PassCounts counts;
   // One program switch per material kind present: Phong first, then the environment users.
   for (ProgramKind kind :
@@ -217,7 +323,7 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
       if (wanted != kind) continue;
       if (!inUse) {
         use(kind, scene, viewProj,
-            kind == ProgramKind::Phong ? viewPosition : environmentViewPosition, distanceCentre,
+            kind == ProgramKind::Phong ? viewPosition : environmentViewPosition, pass,
             outputDirections);
       }
       inUse = true;
@@ -233,13 +339,19 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   const glm::mat4 projection = cubeFaceProjection(scene.capture.near, scene.capture.far);
-  const CaptureFormat format{scene.capture.faceSize, accuracy_.usesHalfFloat(), accuracy_.depthBits,
-                             accuracy_.mipmaps};
-  const bool storeDistance = accuracy_.distanceIterations > 0;
-  // d / (d + 1) at the far plane, d in units of the near plane.
+  const bool chain = accuracy_.search == Search::Hierarchical;
+  // Where nothing is drawn, the stored distance is the far plane's: the world ends there, as it
+  // does for the main camera. (Measured on the default scene, this beat an infinite distance for
+  // the linear search by 2 dB.) A skybox is drawn over it, infinitely far, and is seen along the
+  // ray's own direction.
   const float farAlpha = scene.capture.far / (scene.capture.far + scene.capture.near);
+  const unsigned farCode = depthCode(scene.capture.far / scene.capture.near);
+  const float clear[3] = {scene.clearColour.r, scene.clearColour.g, scene.clearColour.b};
   for (const ProbePlan& probe : plan.probes) {
     if (probe.faces.empty()) continue;
+    const CaptureFormat format{
+        scene.capture.faceSize,  accuracy_.halfFloat, accuracy_.depthBits, accuracy_.mipmaps, chain,
+        chain ? probe.layers : 1};
     auto target = probes_.find(probe.reflector);
     if (target == probes_.end() || !(target->second.format() == format)) {
       Result<CubeCaptureTarget> created = CubeCaptureTarget::create(format);
@@ -247,25 +359,48 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
       probes_.erase(probe.reflector);
       target = probes_.emplace(probe.reflector, created.take()).first;
     }
+    const CubeCaptureTarget& t = target->second;
     for (const FacePlan& face : probe.faces) {
-      target->second.bindFace(face.face);
-      // Where nothing is drawn the stored distance is the far plane's: the world ends there, as
-      // it does for the main camera. (Measured on the default scene, this beats an infinite
-      // distance by 2 dB: a search that ends short of it looks up from its last point, beside
-      // the figures, not along its own direction, behind which a figure may stand.) A skybox is
-      // drawn over it with alpha 1, infinitely far, and is seen along the ray's direction.
-      clearTo(scene.clearColour, storeDistance ? farAlpha : 1.0f);
       const glm::mat4 view = cubeFaceView(probe.centre, face.face);
-      // Other mirrors in view use their cube as it was before this frame's capture of them
-      // (one bounce); they are seen from the probe centre.
-      counts += drawItems(scene, seconds, plan, face.draws, projection * view, lightingEye,
-                          probe.centre, storeDistance ? &probe.centre : nullptr, false);
-      if (skybox_) skybox_->draw(projection, view);
+      const glm::vec3 axis = kCubeFaces[static_cast<size_t>(face.face)].direction;
+      // Pass 1, the nearest surfaces; with two layers, pass 3 where they end and pass 2 what
+      // lies behind them (shaders/capture_output.glsl), peeled behind pass 3's depths.
+      const std::vector<int> passes =
+          t.format().layers == 2 ? std::vector<int>{1, 3, 2} : std::vector<int>{1};
+      for (int layer : passes) {
+        if (layer == 3) {
+          t.bindBackPass(face.face);
+        } else {
+          t.bindFace(face.face, layer - 1);
+          const unsigned codes[2] = {farCode, farCode};
+          t.clearFace(clear, accuracy_.search == Search::Linear ? farAlpha : 1.0f, codes);
+        }
+        bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY,
+                    layer == 1 ? emptyDepths_.id() : t.depthChain(0));
+        const CaptureState pass{layer, probe.centre, axis, scene.capture.near, face.face};
+        // Other mirrors in view use their cube as it was before this frame's capture of them
+        // (one bounce); they are seen from the probe centre.
+        counts += drawItems(scene, seconds, plan, face.draws, projection * view, lightingEye,
+                            probe.centre, pass, false);
+        if (skybox_ && layer != 3) skybox_->draw(projection, view, pass);
+        if (layer == 3) {
+          glBindVertexArray(emptyVertexArray_.id());
+          t.endBackPass(face.face, merge_.program.id(), merge_.layer);
+        }
+      }
+      bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY, emptyDepths_.id());
+      glBindVertexArray(emptyVertexArray_.id());
+      for (int layer = 0; layer < t.format().layers; ++layer) {
+        t.reduceDepths(face.face, layer, reduce_.program.id(), reduce_.sourceSize,
+                       reduce_.sourceLayer);
+      }
     }
-    target->second.finish();
+    t.finish();
   }
+  glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindVertexArray(0);
   checkGlError("capture");
   return counts;
 }
@@ -278,10 +413,13 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Fra
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // the ground quad is seen from both sides
-  clearTo(scene.clearColour);
+  glClearColor(scene.clearColour.r, scene.clearColour.g, scene.clearColour.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const CaptureState pass;  // the main pass: colour only
   PassCounts counts = drawItems(scene, seconds, plan, draws, camera.projection * camera.view,
-                                camera.eye, camera.eye, nullptr, outputDirections);
-  if (skybox_) skybox_->draw(camera.projection, camera.view);
+                                camera.eye, camera.eye, pass, outputDirections);
+  if (skybox_) skybox_->draw(camera.projection, camera.view, pass);
+  glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindVertexArray(0);
   checkGlError("main pass");
@@ -292,6 +430,10 @@ void SceneRenderer::abandon() {
   phong_.program.abandon();
   environment_.program.abandon();
   cubeTextured_.program.abandon();
+  reduce_.program.abandon();
+  merge_.program.abandon();
+  emptyDepths_.abandon();
+  emptyVertexArray_.abandon();
   if (skybox_) skybox_->abandon();
   skybox_.reset();
   for (auto& [index, target] : probes_) target.abandon();

@@ -1,6 +1,7 @@
 // Draws a Scene with GL ES 3.0 as a FramePlan says: each probe's planned cube faces (objects at
-// their planned level of detail), then the main pass. Materials: Phong, mirror and glass (an
-// environment lookup), cube-textured (Ex12-1); the skybox is drawn last into every target.
+// their planned level of detail; a second, peeled layer where the plan asks for one; then the
+// faces' depth chains), then the main pass. Materials: Phong, mirror and glass (an environment
+// lookup), cube-textured (Ex12-1); the skybox is drawn last into every target.
 #pragma once
 
 #include <map>
@@ -16,6 +17,7 @@
 #include "core/result.h"
 #include "core/scene.h"
 #include "core/skybox_faces.h"
+#include "gfx/capture_state.h"
 #include "gfx/cube_capture_target.h"
 #include "gfx/mesh_buffer.h"
 #include "gfx/shader_program.h"
@@ -63,49 +65,67 @@ class SceneRenderer {
                       const ViewParams& camera, const std::vector<DrawItem>& draws,
                       unsigned framebuffer, int width, int height, bool outputDirections = false);
 
-  // The cube map that object `index` samples under `plan`: its live probe's, or the skybox (0 if
-  // none yet).
-  GLuint environmentTexture(const Scene& scene, const FramePlan& plan, int index) const;
   // The cube captured for the probe owned by object `owner` (0 before its first capture).
   GLuint probeTexture(int owner) const;
+  // Its depth chain (0 without one), for tests.
+  const CubeCaptureTarget* probeTarget(int owner) const;
   // After a lost context: drop every GL name without deleting (the context took them).
   void abandon();
 
  private:
   struct PhongProgram {
     ShaderProgram program;
+    CaptureUniforms capture;
     GLint viewProjection, model, normalMatrix, colour, lightPosition, viewPosition, ambient,
-        diffuse, specular, shininess, storeDistance, probeCentre, distanceUnit;
+        diffuse, specular, shininess;
   };
   struct EnvironmentProgram {
     ShaderProgram program;
-    GLint viewProjection, model, normalMatrix, colour, viewPosition, reflection, base, refracts,
-        eta, fresnelF0, fresnel, environment, probeCentre, distanceUnit, outputDirection;
+    CaptureUniforms capture;
+    GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
+        refracts, eta, fresnelF0, fresnel, twoSurfaces, glassSphere, probeCentre, distanceUnit,
+        search, outputDirection, layers, faceSize, topLevel;
   };
   struct CubeTexturedProgram {
     ShaderProgram program;
-    GLint viewProjection, model, normalMatrix, environment;
+    CaptureUniforms capture;
+    GLint viewProjection, model, normalMatrix;
+  };
+  struct ReduceProgram {
+    ShaderProgram program;
+    GLint sourceSize, sourceLayer;
+  };
+  struct MergeProgram {
+    ShaderProgram program;
+    GLint layer;
   };
   enum class ProgramKind { Phong, Environment, CubeTextured };
 
-  SceneRenderer(PhongProgram phong, EnvironmentProgram environment,
-                CubeTexturedProgram cubeTextured, const AccuracySettings& accuracy);
+  SceneRenderer() = default;
   // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
-  // `distanceCentre`: the probe centre whose distances a capture stores (null in the main pass).
   PassCounts drawItems(const Scene& scene, double seconds, const FramePlan& plan,
                        const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
                        const glm::vec3& viewPosition, const glm::vec3& environmentViewPosition,
-                       const glm::vec3* distanceCentre, bool outputDirections);
+                       const CaptureState& pass, bool outputDirections);
   PassCounts drawObject(const Scene& scene, const FramePlan& plan, const DrawItem& item,
                         double seconds);
   void use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
-           const glm::vec3& viewPosition, const glm::vec3* distanceCentre, bool outputDirections);
+           const glm::vec3& viewPosition, const CaptureState& pass, bool outputDirections);
+  // Binds object `index`'s environment (its probe's layers, or the sky) for the environment
+  // program and sets the search's uniforms.
+  void bindEnvironment(const Scene& scene, const FramePlan& plan, int index);
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;
   EnvironmentProgram environment_;
   CubeTexturedProgram cubeTextured_;
+  ReduceProgram reduce_;
+  MergeProgram merge_;
   std::unique_ptr<SkyboxPass> skybox_;
+  // Bound to the depth units whenever nothing else is, so no program ever samples a texture the
+  // pass renders into (a feedback loop WebGL refuses to draw).
+  TextureHandle emptyDepths_;
+  VertexArrayHandle emptyVertexArray_;  // the reduction's fullscreen triangle has no attributes
   std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
   AccuracySettings accuracy_;
   std::map<std::string, std::vector<MeshBuffer>> meshes_;  // levels of detail by mesh name

@@ -1,6 +1,8 @@
 #include "gfx/shader_program.h"
 
 #include <cstdio>
+#include <set>
+#include <sstream>
 #include <vector>
 
 #include "gfx/shader_library.h"
@@ -8,8 +10,11 @@
 namespace reflect {
 namespace {
 
-constexpr const char* kHighp = "#version 300 es\nprecision highp float;\n";
-constexpr const char* kMediump = "#version 300 es\nprecision mediump float;\n";
+// Integers are highp in both: the fragment language's default is mediump int, which may hold only
+// 16 signed bits, and depth codes use all 16 unsigned ones.
+constexpr const char* kHighp = "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+constexpr const char* kMediump =
+    "#version 300 es\nprecision mediump float;\nprecision highp int;\n";
 
 std::string infoLog(GLuint object, bool isProgram) {
   GLint length = 0;
@@ -47,13 +52,45 @@ Result<ShaderHandle> compile(GLenum stage, const std::string& file, const char* 
   return shader;
 }
 
+// GLSL ES has no #include: a line `#include "name.glsl"` is replaced by that embedded file (once
+// per program, so two files may include the same library).
+Result<std::string> expandIncludes(const std::string& file, std::set<std::string>& included) {
+  const char* text = embeddedShader(file);
+  if (!text) return Result<std::string>::failure("shader " + file + ": not embedded in this build");
+  std::string out;
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    const size_t open = line.find("#include \"");
+    if (open != 0) {
+      out += line + "\n";
+      continue;
+    }
+    const size_t start = open + 10;
+    const size_t end = line.find('"', start);
+    const std::string name = line.substr(start, end == std::string::npos ? end : end - start);
+    if (!included.insert(name).second) continue;
+    Result<std::string> library = expandIncludes(name, included);
+    if (!library) {
+      return Result<std::string>::failure("shader " + file + " includes " + library.error());
+    }
+    out += library.value();
+  }
+  return out;
+}
+
 }  // namespace
 
 Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile,
                                            const std::string& fragmentFile, bool mediump,
                                            const std::string& defines) {
-  return buildFromSource(vertexFile, embeddedShader(vertexFile), fragmentFile,
-                         embeddedShader(fragmentFile), mediump, defines);
+  std::set<std::string> vertexIncludes, fragmentIncludes;
+  Result<std::string> vertex = expandIncludes(vertexFile, vertexIncludes);
+  if (!vertex) return Result<ShaderProgram>::failure(vertex.error());
+  Result<std::string> fragment = expandIncludes(fragmentFile, fragmentIncludes);
+  if (!fragment) return Result<ShaderProgram>::failure(fragment.error());
+  return buildFromSource(vertexFile, vertex.value().c_str(), fragmentFile, fragment.value().c_str(),
+                         mediump, defines);
 }
 
 Result<ShaderProgram> ShaderProgram::buildFromSource(const std::string& vertexFile,

@@ -15,8 +15,8 @@ inline constexpr GLuint kAttribNormal = 1;
 class ShaderProgram {
  public:
   // Prepends "#version 300 es" and the float precision in one place (fragment shaders mediump
-  // when asked). Failure carries the stage,
-  // the file name and the driver's log.
+  // when asked), and replaces each line `#include "file.glsl"` with that embedded file (once per
+  // shader). Failure carries the stage, the file name and the driver's log.
   // `defines` ("#define NAME VALUE\n" lines) follow the prelude in the fragment shader.
   static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
                                      bool mediump = false, const std::string& defines = "");

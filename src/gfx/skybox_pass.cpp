@@ -23,6 +23,7 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
   SkyboxPass pass;
   pass.viewRotationProjection_ = program.value().uniform("u_viewRotationProjection");
   pass.skybox_ = program.value().uniform("u_skybox");
+  pass.capture_ = CaptureUniforms::of(program.value());
   pass.program_ = program.take();
 
   pass.texture_ = TextureHandle(genTexture());
@@ -52,14 +53,16 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
   return pass;
 }
 
-void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view) const {
+void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view,
+                      const CaptureState& pass) const {
   const glm::mat4 rotationOnly(glm::mat3{view});
   const glm::mat4 viewRotationProjection = projection * rotationOnly;
   glDepthFunc(GL_LEQUAL);
   glUseProgram(program_.id());
   glUniformMatrix4fv(viewRotationProjection_, 1, GL_FALSE, glm::value_ptr(viewRotationProjection));
-  glUniform1i(skybox_, 0);
-  glActiveTexture(GL_TEXTURE0);
+  glUniform1i(skybox_, kEnvironmentUnit);
+  capture_.set(pass);
+  glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
   glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 36);

@@ -5,6 +5,7 @@
 
 #include "core/result.h"
 #include "core/skybox_faces.h"
+#include "gfx/capture_state.h"
 #include "gfx/gl_handle.h"
 #include "gfx/shader_program.h"
 
@@ -15,10 +16,9 @@ class SkyboxPass {
   // Uploads the faces (CLAMP_TO_EDGE, linear) and builds the program and the cube.
   static Result<SkyboxPass> create(const CubeFaces& faces);
 
-  // Draws the sky where nothing else is (depth LEQUAL at the far plane), with alpha 1: in a
-  // distance-storing capture that reads as infinitely far. `view` may contain a translation:
-  // only its rotation is used.
-  void draw(const glm::mat4& projection, const glm::mat4& view) const;
+  // Draws the sky where nothing else is (depth LEQUAL at the far plane); in a capture it is
+  // stored infinitely far. `view` may contain a translation: only its rotation is used.
+  void draw(const glm::mat4& projection, const glm::mat4& view, const CaptureState& pass) const;
   GLuint texture() const { return texture_.id(); }
   void abandon();
 
@@ -26,6 +26,7 @@ class SkyboxPass {
   ShaderProgram program_;
   GLint viewRotationProjection_ = -1;
   GLint skybox_ = -1;
+  CaptureUniforms capture_;
   TextureHandle texture_;
   VertexArrayHandle vao_;
   BufferHandle vertices_;

@@ -157,7 +157,7 @@ TEST(TransformExtremes, ScenesScaledBy1eMinus4And1e4RenderTheSamePicture) {
   // The course's plain lookup along R: a perspective picture of a uniformly scaled world is the
   // same picture. (Float rounding could move a silhouette pixel; measured: no difference at all.)
   AccuracySettings plain;
-  plain.distanceIterations = 0;
+  plain.search = Search::Plain;
   const auto [fraction, maxDifference] = scaleInvarianceError(plain, "plain");
   EXPECT_LE(fraction, 0.003) << "max difference " << maxDifference;
 }

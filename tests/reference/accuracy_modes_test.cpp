@@ -23,9 +23,9 @@ AccuracyReport measure(const AccuracySettings& settings, double t) {
 
 TEST(AccuracyModes, DistanceCorrectionLowersTheErrorOnTheDefaultScene) {
   AccuracySettings plain;
-  plain.distanceIterations = 0;
+  plain.search = Search::Plain;
   AccuracySettings corrected;
-  corrected.distanceIterations = 2;
+  corrected.search = Search::Hierarchical;
   for (double t : {0.0, 2.0, 4.0}) {
     const AccuracyReport a = measure(plain, t);
     const AccuracyReport b = measure(corrected, t);
@@ -59,7 +59,7 @@ TEST(AccuracyModes, TheDefaultIsSixDecibelsAboveTheCourse) {
 
 TEST(AccuracyModes, TheCoursesCapturePointIsWorseThanTheReflectorsCentre) {
   AccuracySettings origin;
-  origin.distanceIterations = 0;
+  origin.search = Search::Plain;
   origin.captureAtOrigin = true;
   AccuracySettings centre = origin;
   centre.captureAtOrigin = false;
@@ -114,7 +114,7 @@ TEST(Sweep, SettingsIncludeTheOriginalAndTheShippedDefault) {
   ASSERT_GE(settings.size(), 10u);
   EXPECT_EQ(settings[0].name, "original");
   EXPECT_TRUE(settings[0].accuracy.captureAtOrigin);
-  EXPECT_EQ(settings[0].accuracy.distanceIterations, 0);
+  EXPECT_EQ(settings[0].accuracy.search, Search::Plain);
   EXPECT_EQ(settings[1].name, "default");
   EXPECT_TRUE(settings[1].accuracy == AccuracySettings{});  // what Demo ships with
   EXPECT_EQ(settings[1].faceSize, 256);

@@ -132,7 +132,7 @@ TEST(FramePlanner, EveryCaptureInputIsComparedByValue) {
       [](CaptureContext& c) { c.light.shininess = 20.0f; },
       [](CaptureContext& c) { c.clearColour = glm::vec3(0.0f); },
       [](CaptureContext& c) { c.skyboxContent = 42; },
-      [](CaptureContext& c) { c.accuracy.distanceIterations = 0; },
+      [](CaptureContext& c) { c.accuracy.search = Search::Plain; },
       [](CaptureContext& c) { c.captureLod = 0.5f; },
       [](CaptureContext& c) { c.near = 0.5f; },
   };
@@ -173,7 +173,7 @@ TEST(FramePlanner, LayoutNamesEachObjectsProbeWithoutCapturing) {
   a.probeGroup = b.probeGroup = 0;
   PlannedObject course = mirrorAt({0, 0, 9});
   course.probeCentre = glm::vec3(0.0f);  // an explicit capture point wins over the bounds
-  const FramePlan plan = FramePlanner::layout({a, b, boxAt({0, 0, -6}), course});
+  const FramePlan plan = FramePlanner::layout({a, b, boxAt({0, 0, -6}), course}, {});
   ASSERT_EQ(plan.probes.size(), 2u);
   EXPECT_EQ(plan.facesCaptured(), 0);
   EXPECT_EQ(plan.probeOf(1), &plan.probes[0]);

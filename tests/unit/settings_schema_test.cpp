@@ -26,7 +26,8 @@ TEST(SettingsSchema, PlannerSettingsRoundTripThroughJson) {
 TEST(SettingsSchema, AccuracySettingsRoundTripThroughJson) {
   AccuracySettings a;
   a.captureAtOrigin = true;
-  a.distanceIterations = 0;
+  a.search = Search::Linear;
+  a.layers = 1;
   a.depthBits = 16;
   a.halfFloat = true;
   AccuracySettings back;
@@ -82,8 +83,9 @@ TEST(SettingsSchema, TheTableForThePageListsEveryNameOnceWithItsDefault) {
   EXPECT_EQ(schema["planner"][0]["choices"].size(), 4u);
   EXPECT_EQ(schema["material"][0]["choices"],
             json::parse(R"(["phong", "mirror", "glass", "cube-textured"])"));
-  EXPECT_EQ(schema["accuracy"][1]["name"], "distanceIterations");
-  EXPECT_EQ(schema["accuracy"][1]["max"], 16);
+  EXPECT_EQ(schema["accuracy"][1]["name"], "search");
+  EXPECT_EQ(schema["accuracy"][1]["default"], "hierarchical");
+  EXPECT_EQ(schema["accuracy"][2]["max"], 2);
 }
 
 TEST(SettingsSchema, EnumerationNamesRoundTrip) {

@@ -125,8 +125,12 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
       ok = parseNumber(value, &o.time);
     } else if (flag == "--out") {
       o.out = value;
-    } else if (flag == "--distance") {
-      ok = parseInt(value, 0, 16, &o.accuracy.distanceIterations);
+    } else if (flag == "--search") {
+      ok = parseSearch(value, &o.accuracy.search);
+    } else if (flag == "--layers") {
+      ok = parseInt(value, 1, 2, &o.accuracy.layers);
+    } else if (flag == "--glass-surfaces") {
+      ok = parseInt(value, 1, 2, &o.accuracy.glassSurfaces);
     } else if (flag == "--depth") {
       ok = parseInt(value, 16, 24, &o.accuracy.depthBits) &&
            (o.accuracy.depthBits == 16 || o.accuracy.depthBits == 24);

@@ -221,8 +221,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_set_accuracy(int distanceIterations, int cap
                                                  int depthBits, int mipmaps, int halfFloat,
                                                  int mediump) {
   if (!state().demo) return returnText("no scene loaded");
-  reflect::AccuracySettings a;
-  a.distanceIterations = distanceIterations;
+  reflect::AccuracySettings a = state().demo->accuracySettings();
+  a.search = distanceIterations > 0 ? reflect::Search::Hierarchical : reflect::Search::Plain;
   a.captureAtOrigin = captureAtOrigin != 0;
   a.depthBits = depthBits;
   a.mipmaps = mipmaps != 0;
@@ -238,8 +238,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_accuracy_json() {
   std::snprintf(buffer, sizeof buffer,
                 "{\"distance\":%d,\"origin\":%s,\"depth\":%d,\"mipmaps\":%s,\"halfFloat\":%s,"
                 "\"mediump\":%s,\"describe\":%s}",
-                a.distanceIterations, a.captureAtOrigin ? "true" : "false", a.depthBits,
-                a.mipmaps ? "true" : "false", a.halfFloat ? "true" : "false",
+                a.search == reflect::Search::Plain ? 0 : 2, a.captureAtOrigin ? "true" : "false",
+                a.depthBits, a.mipmaps ? "true" : "false", a.halfFloat ? "true" : "false",
                 a.mediump ? "true" : "false", reflect::jsonQuote(a.describe()).c_str());
   return returnText(buffer);
 }

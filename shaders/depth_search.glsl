@@ -1,0 +1,138 @@
+// The hierarchical search: where does the ray x + tau d (x relative to the probe centre, both in
+// near-plane units, d of unit length) first meet the surroundings a probe captured?
+//
+// Seen from the probe centre, the ray is a great-circle arc, and on each cube face a straight
+// line (the face's perspective projection keeps lines straight). Along it the ray's depth z
+// (along the face's look direction) is linear in tau. So on one face this is screen-space ray
+// marching against a depth buffer, and the search walks the face's min/max depth chain
+// (depth_reduce.frag) as hierarchical-Z tracing does (Uludag, GPU Pro 5; McGuire and Mara, JCGT
+// 2014):
+//  - the ray's depths over the current cell are [zIn, zOut], exact at the cell's borders;
+//  - in front of the cell's nearest surface: nothing in the cell can be hit, so the search jumps
+//    to the cell's border and goes up a level;
+//  - behind the back of every object stored in the cell and in front of whatever the second
+//    layer stores behind them: jump likewise;
+//  - otherwise a finer level, down to one texel, where the ray either crosses the stored surface
+//    (a hit, refined exactly: z is linear in tau) or passes behind it.
+// Every texel the ray's projection passes through is tested before the search moves past it, so
+// an object one texel thin cannot be stepped over. A face border is a cell border at every
+// level; the search then continues on the face the ray enters.
+//
+// A single layer cannot see behind what it stores, nor how deep it is: an object is taken to be
+// kThickness of its depth deep, and a ray that passes behind it goes on; if it never comes out in
+// front of a surface to cross it, the best guess is the last point where it was known to be free,
+// beside the occluder. Two layers (capture_output.glsl) also store each first object's back and
+// the nearest surface behind it that faces the probe: a ray behind an object meets what is
+// really there.
+precision highp float;
+precision highp int;
+#include "depth_encoding.glsl"
+
+uniform highp usampler2DArray u_depths;   // the first layer's chain (level 0: one code a texel)
+uniform highp usampler2DArray u_depths2;  // the second layer's (u_layers == 2)
+uniform int u_layers;                     // 1 or 2
+uniform int u_faceSize;                   // texels along a face edge at level 0
+uniform int u_topLevel;                   // the chain's last level (one texel a face)
+uniform vec3 u_faceRight[6];              // per face: the view's right, up and look directions
+uniform vec3 u_faceUp[6];
+uniform vec3 u_faceAxis[6];
+
+// Behind the nearest stored surface by up to this fraction of its depth still counts as meeting
+// it: a ray that enters a figure's texel from the side meets its side, which the probe cannot see.
+const float kThickness = 0.1;
+const int kMaxSteps = 96;
+const float kNever = 1e30;
+
+int faceOf(vec3 p) {
+  vec3 a = abs(p);
+  if (a.x >= a.y && a.x >= a.z) return p.x >= 0.0 ? 0 : 1;
+  if (a.y >= a.z) return p.y >= 0.0 ? 2 : 3;
+  return p.z >= 0.0 ? 4 : 5;
+}
+
+struct SearchResult {
+  vec3 point;  // where to look up (relative to the probe centre); the direction is what counts
+  int layer;   // 1 or 2: which layer's colour; 0: nothing met (infinitely far, along d)
+  int steps;   // iterations used (for measuring the search)
+};
+
+SearchResult searchDepths(vec3 x, vec3 d) {
+  float tau = 0.0;
+  float tauFree = 0.0;  // the farthest point known to be in front of every stored surface
+  int level = max(u_topLevel - 3, 0);
+  for (int i = 0; i < kMaxSteps; ++i) {
+    vec3 p = x + tau * d;
+    int f = faceOf(p);
+    vec3 right = u_faceRight[f], up = u_faceUp[f], axis = u_faceAxis[f];
+    float xz = dot(x, axis), dz = dot(d, axis);
+    vec2 xst = vec2(dot(x, right), dot(x, up)), dst = vec2(dot(d, right), dot(d, up));
+    float zIn = xz + tau * dz;
+    vec2 st = (xst + tau * dst) / zIn;
+    int n = max(u_faceSize >> level, 1);
+    float cells = float(n);
+    ivec2 cell = clamp(ivec2(floor((st * 0.5 + 0.5) * cells)), ivec2(0), ivec2(n - 1));
+    // Where the ray leaves the cell: s (and t) move monotonically along the ray, towards the
+    // border on the side of `motion`; s = b where xs + tau ds = b (xz + tau dz).
+    vec2 motion = dst * xz - xst * dz;
+    vec2 border = (vec2(cell) + step(0.0, motion)) / cells * 2.0 - 1.0;
+    vec2 crossing = (border * xz - xst) / (dst - border * dz);
+    // A crossing behind the ray's origin is never reached; one just behind tau is rounding.
+    bvec2 reached = bvec2(abs(motion.x) > 0.0 && crossing.x >= 0.0,
+                          abs(motion.y) > 0.0 && crossing.y >= 0.0);
+    crossing = max(crossing, vec2(tau));
+    float tauExit = min(reached.x ? crossing.x : kNever, reached.y ? crossing.y : kNever);
+    float zOut = tauExit >= kNever ? kNever : xz + tauExit * dz;
+    float zNear = min(zIn, zOut), zFar = max(zIn, zOut);
+
+    // The first chain: the nearest surfaces' depths (min over the cell) and how far back their
+    // objects reach (max; with one layer, each object is taken to be kThickness of its depth
+    // deep). The second (two layers): the depths of what lies behind them.
+    uvec2 first = texelFetch(u_depths, ivec3(cell, f), level).rg;
+    float zFront = decodeDepth(first.x), zBack = decodeDepth(first.y);
+    float zBehind = kNever, zBehindEnd = kNever;
+    if (u_layers == 2) {
+      uvec2 second = texelFetch(u_depths2, ivec3(cell, f), level).rg;
+      zBehind = decodeDepth(second.x);
+      zBehindEnd = decodeDepth(second.y) * (1.0 + kThickness);
+    } else {
+      zBack *= 1.0 + kThickness;
+    }
+    // In front of every surface in the cell, or behind every object there and in front of
+    // everything behind them: nothing in the cell can be met.
+    bool free = zFar < zFront;
+    bool passes = free || (zNear > zBack && zFar < zBehind);
+    if (!passes && level == 0) {
+      // One texel. The ray meets its object if its depths here reach into [zFront, zBack]: at
+      // the front if it crosses it, else inside (it entered through a side the probe cannot
+      // see); likewise what lies behind.
+      float mid = tauExit >= kNever ? tau : 0.5 * (tau + tauExit);
+      if (zNear <= zBack && zFar >= zFront) {
+        if (zIn > zFront) return SearchResult(x + mid * d, 1, i);
+        return SearchResult(x + clamp((zFront - xz) / dz, tau, tauExit) * d, 1, i);
+      }
+      if (u_layers == 2 && zNear <= zBehindEnd && zFar >= zBehind) {
+        if (zIn > zBehind) return SearchResult(x + mid * d, 2, i);
+        return SearchResult(x + clamp((zBehind - xz) / dz, tau, tauExit) * d, 2, i);
+      }
+      passes = true;  // behind what the texel stores: past it, unseen
+    }
+    if (!passes) {
+      level -= 1;
+      continue;
+    }
+    if (free) tauFree = tauExit;
+    if (tauExit >= kNever) {
+      // Nothing ahead: free, the ray runs to infinity (the sky); hidden, it passed behind the
+      // last surface it saw, and the last free point is the guess.
+      return free ? SearchResult(d, 0, i) : SearchResult(x + tauFree * d, 1, i);
+    }
+    // Just past the border, into the next cell (or face), one level coarser.
+    tau = tauExit + max(tauExit * 1e-5, 1e-5);
+    level = min(level + 1, u_topLevel);
+  }
+  return SearchResult(x + tauFree * d, 1, kMaxSteps);
+}
+
+#ifdef REFLECT_MEDIUMP
+precision mediump float;
+#endif
