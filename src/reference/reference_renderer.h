@@ -17,7 +17,7 @@
 //    draws it at the far plane, looked up along the ray's direction), or the clear colour; every
 //    other ray that meets nothing sees the same, along its own direction (the sky is infinitely
 //    far). The skybox is sampled as GL samples it (core/cube_sampling.h: the spec's face table,
-//    LINEAR, seamless edges, faces top row first);
+//    LINEAR, seamless edges, faces top row first; within one 8-bit level of llvmpipe's);
 //  - a mirror: reflection * env(R) + base * colour, or with Fresnel mix(colour, env(R), schlick),
 //    R = reflect(-V, N);
 //  - glass: with Fresnel mix(refracted, reflected, schlick) (total internal reflection at entry:
@@ -37,16 +37,16 @@
 // background. That is the truth for `environment: "skybox"` objects too: the static sky map
 // approximates it (the sky is behind everything else, at infinity).
 //
-// The deliberate differences from the raster (each is what the cube map approximates):
+// What differs from the raster on purpose (the truth its cube maps approximate):
 //  - env is the true ray from the surface point (from the probe centre for cube-textured objects),
 //    never a texel of a capture: no parallax error, no capture resolution, no near plane, no
 //    previous-frame cube for another reflector, not quantised to 8 bits;
-//  - glass is crossed through both surfaces (the raster refracts once, at entry); no Fresnel loss
-//    at the exit surface, no absorption, and a ray leaving a glass object does not meet that
-//    object again (exact for the convex objects shipped); objects inside a glass object are not
-//    seen through it;
-//  - a reflected, refracted or looked-up ray never meets the object it leaves (exact for convex
-//    reflectors, as every shipped one is);
+//  - glass is crossed through both surfaces (the raster refracts once, at entry).
+// What the reference leaves out or limits (none of it matters in the shipped scenes):
+//  - no Fresnel loss at a glass exit surface and no absorption inside;
+//  - a reflected, refracted or looked-up ray never meets the object it leaves, and a ray inside
+//    glass meets only that object's own surface: exact for convex reflectors and glass with
+//    nothing inside it, as every shipped one is;
 //  - the bounce limit: a mirror, glass or cube-textured surface met by a ray that has already
 //    left kMaxBounces such surfaces is not followed further: it shows the background along the
 //    ray.
