@@ -51,6 +51,8 @@ class Demo {
   // The static cube map of the scene's skybox (kept on the CPU for a context restore).
   std::string setSkybox(CubeFaces faces);
   bool hasSkybox() const { return skybox_.has_value(); }
+  // Its faces (what the skybox pass samples), or nullptr.
+  const CubeFaces* skyboxFaces() const { return skybox_ ? &*skybox_ : nullptr; }
 
   // Creates the GL resources from the CPU-side data. Call once a context is current, and again
   // after a lost context is restored. Returns "" or a message.

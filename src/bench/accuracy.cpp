@@ -83,7 +83,7 @@ Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int heig
   // The true directions are measured from where the probe really captured.
   const Scene scene = sceneAsCaptured(demo.scene(), demo.accuracySettings().captureAtOrigin);
   Result<ReferenceFrame> reference =
-      renderReference(scene, meshes, demo.camera(), seconds, width, height);
+      renderReference(scene, meshes, demo.skyboxFaces(), demo.camera(), seconds, width, height);
   if (!reference) return Result<AccuracyReport>::failure(reference.error());
   // What the raster really looked up (plain or distance-corrected), per pixel, from the GPU.
   Result<OffscreenTarget> directions = OffscreenTarget::create(width, height, true);
@@ -96,8 +96,14 @@ Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int heig
     if (!ref.reflectorMask[p]) continue;
     const glm::vec3 d = looked[p];
     // Only unit vectors are directions: a pixel the raster's mirror does not cover (silhouette;
-    // a colour or the background there) keeps the analytic R.
-    if (k < ref.lookupDirs.size() && std::abs(glm::length(d) - 1.0f) < 1e-3f) ref.lookupDirs[k] = d;
+    // a colour or the background there) keeps the analytic R. Only mirrors: glass writes its
+    // reflected lookup there, not the refracted one the reference's direction is, and a
+    // cube-textured object writes its colour.
+    const int object = ref.objectIds[p];
+    const bool mirror = scene.objects[static_cast<size_t>(object)].material == Material::Mirror;
+    if (mirror && k < ref.lookupDirs.size() && std::abs(glm::length(d) - 1.0f) < 1e-3f) {
+      ref.lookupDirs[k] = d;
+    }
     ++k;
   }
   Result<AccuracyReport> report = compareWithReference(raster.value(), ref);

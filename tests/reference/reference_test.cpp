@@ -91,7 +91,7 @@ Compared renderBoth(Demo& demo, double t) {
   EXPECT_TRUE(raster) << raster.error();
   if (!raster) return c;
   c.raster = raster.take();
-  auto reference = renderReference(demo.scene(), meshesOf(demo), demo.camera(),
+  auto reference = renderReference(demo.scene(), meshesOf(demo), demo.skyboxFaces(), demo.camera(),
                                    demo.clock().seconds(), kSize, kSize);
   EXPECT_TRUE(reference) << reference.error();
   if (!reference) return c;
@@ -168,8 +168,8 @@ TEST(Reference, MeasureAccuracyMatchesTheParts) {
 TEST(Reference, TimesOneFrameAt800) {
   auto demo = testing::makeDemo(makeDynamicReflectionScene());
   for (int threads : {1, 0}) {
-    auto frame =
-        renderReference(demo->scene(), meshesOf(*demo), demo->camera(), 5.0, 800, 800, threads);
+    auto frame = renderReference(demo->scene(), meshesOf(*demo), nullptr, demo->camera(), 5.0, 800,
+                                 800, threads);
     ASSERT_TRUE(frame) << frame.error();
     std::printf("reference 800x800, %s: %.1f ms\n",
                 threads == 1 ? "1 thread" : "all hardware threads", frame.value().renderMs);
@@ -178,8 +178,10 @@ TEST(Reference, TimesOneFrameAt800) {
 
 TEST(Reference, ThreadCountDoesNotChangeThePixels) {
   auto demo = testing::makeDemo(makeDynamicReflectionScene());
-  auto one = renderReference(demo->scene(), meshesOf(*demo), demo->camera(), 3.0, 96, 64, 1);
-  auto three = renderReference(demo->scene(), meshesOf(*demo), demo->camera(), 3.0, 96, 64, 3);
+  auto one =
+      renderReference(demo->scene(), meshesOf(*demo), nullptr, demo->camera(), 3.0, 96, 64, 1);
+  auto three =
+      renderReference(demo->scene(), meshesOf(*demo), nullptr, demo->camera(), 3.0, 96, 64, 3);
   ASSERT_TRUE(one) << one.error();
   ASSERT_TRUE(three) << three.error();
   EXPECT_EQ(one.value().image.pixels, three.value().image.pixels);
@@ -195,7 +197,7 @@ TEST(Reference, TwoMirrorsAreBothTracedAsMirrors) {
   second.placement =
       glm::translate(glm::mat4(1.0f), glm::vec3(-3.0f, 0.0f, -1.0f)) * second.placement;
   scene.objects.push_back(second);
-  auto frame = renderReference(scene, meshesOf(*demo), demo->camera(), 0.0, 256, 256);
+  auto frame = renderReference(scene, meshesOf(*demo), nullptr, demo->camera(), 0.0, 256, 256);
   ASSERT_TRUE(frame) << frame.error();
   testing::saveOutput(frame.value().image, "reference_two_mirrors.png");
   const int secondIndex = static_cast<int>(scene.objects.size()) - 1;
@@ -212,16 +214,24 @@ TEST(Reference, TwoMirrorsAreBothTracedAsMirrors) {
   EXPECT_EQ(frame.value().lookupDirs.size(), firstPixels + secondPixels);
 }
 
-TEST(Reference, RefusesWhatItDoesNotModel) {
+TEST(Reference, RefusesWhatItCannotRenderExactly) {
   auto demo = testing::makeDemo(makeDynamicReflectionScene());
-  Scene scene = demo->scene();
-  scene.objects[static_cast<size_t>(scene.reflectorIndex())].material = Material::Glass;
-  auto frame = renderReference(scene, meshesOf(*demo), demo->camera(), 0.0, 8, 8);
-  EXPECT_FALSE(frame);
+  // A scene that names a skybox, without its faces.
+  Scene sky = demo->scene();
+  sky.skybox.cross = "skybox/sky_cross.png";
+  auto noFaces = renderReference(sky, meshesOf(*demo), nullptr, demo->camera(), 0.0, 8, 8);
+  EXPECT_FALSE(noFaces);
+  // Faces that are not six equal squares.
+  CubeFaces faces;
+  for (RgbaImage& face : faces) face = RgbaImage{2, 2, std::vector<uint8_t>(16, 0)};
+  faces[3] = RgbaImage{2, 1, std::vector<uint8_t>(8, 0)};
+  auto badFaces = renderReference(sky, meshesOf(*demo), &faces, demo->camera(), 0.0, 8, 8);
+  EXPECT_FALSE(badFaces);
   auto missing = renderReference(
-      demo->scene(), [](const std::string&) -> const MeshData* { return nullptr; }, demo->camera(),
-      0.0, 8, 8);
+      demo->scene(), [](const std::string&) -> const MeshData* { return nullptr; }, nullptr,
+      demo->camera(), 0.0, 8, 8);
   EXPECT_FALSE(missing);
+  EXPECT_FALSE(renderReference(demo->scene(), meshesOf(*demo), nullptr, demo->camera(), 0.0, 0, 8));
 }
 
 }  // namespace
