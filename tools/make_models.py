@@ -1026,6 +1026,12 @@ def write_fixtures(out_dir):
     put("no_normals.obj", "\n".join([hdr, "# positions only, loader must compute normals"] + tet
                                     + ["f %d %d %d" % f for f in tet_faces]) + "\n")
 
+    # as some exporters write it: v/vt/vn faces, and no vt or vn lines at all
+    put("undefined_normals.obj", "\n".join(
+        [hdr, "# faces name normals and texture coordinates the file never defines: loads with",
+         "# computed normals and one warning for each"] + tet
+        + ["f " + " ".join("%d/%d/%d" % (v, v, v) for v in f) for f in tet_faces]) + "\n")
+
     put("pos_only_quads.obj", "\n".join([hdr, "v 0.0 0.0 0.0", "v 1.0 0.0 0.0", "v 1.0 1.0 0.0",
                                          "v 0.0 1.0 0.0", "f 1 2 3 4"]) + "\n")
 
@@ -1062,7 +1068,7 @@ def write_fixtures(out_dir):
 FIXTURE_TRIS = {
     # well-formed fixtures: expected triangle count after fan triangulation
     "quads_vtvn.obj": 12, "multi_object_usemtl.obj": 9, "crcrlf.obj": 4, "no_normals.obj": 4,
-    "pos_only_quads.obj": 2, "negative_indices.obj": 1,
+    "pos_only_quads.obj": 2, "negative_indices.obj": 1, "undefined_normals.obj": 4,
 }
 FIXTURE_BROKEN = ["garbage.obj", "truncated.obj", "empty.obj", "index_out_of_range.obj",
                   "nan_vertex.obj", "comments_only.obj"]
@@ -1083,7 +1089,8 @@ def check_fixtures(out_dir):
             fn = vcross(vsub(b, a), vsub(c, a))
             if vlen(fn) < 1e-9:
                 errors.append("degenerate triangle")
-            elif all(ni is not None for _, ni in tri) and vdot(fn, nrm[tri[0][1]]) <= 0.0:
+            elif all(ni is not None and 0 <= ni < len(nrm) for _, ni in tri) and \
+                    vdot(fn, nrm[tri[0][1]]) <= 0.0:
                 errors.append("winding disagrees with normal")
         if name == "multi_object_usemtl.obj" and len({o for o, _ in tris}) != 3:
             errors.append("expected 3 objects")

@@ -26,12 +26,21 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 Demo::Demo(Scene scene) : scene_(std::move(scene)), camera_(scene_.camera) {}
 
 std::string Demo::loadMesh(const std::string& name, const std::string& path) {
-  return adopt(name, loadObjFile(path));
+  return adoptLoaded(name, loadObjFile(path));
 }
 
 std::string Demo::loadMeshText(const std::string& name, const std::string& text,
                                const std::string& source) {
-  return adopt(name, parseObj(text, source));
+  return adoptLoaded(name, parseObj(text, source));
+}
+
+std::string Demo::adoptLoaded(const std::string& name, Result<LoadedMesh> loaded) {
+  lastWarnings_.clear();
+  if (!loaded) return loaded.error();
+  LoadedMesh mesh = loaded.take();
+  std::string error = adopt(name, Result<MeshData>(std::move(mesh.mesh)));
+  if (error.empty()) lastWarnings_ = std::move(mesh.warnings);
+  return error;
 }
 
 std::string Demo::setMeshData(const std::string& name, MeshData mesh) {
@@ -99,10 +108,13 @@ const MeshData* Demo::meshLevel(const std::string& name, int lod) const {
 }
 
 std::string Demo::loadMeshesFrom(const std::string& directory) {
+  std::vector<std::string> warnings;
   for (const std::string& name : scene_.meshNames()) {
     std::string error = loadMesh(name, directory + "/" + name);
     if (!error.empty()) return error;
+    warnings.insert(warnings.end(), lastWarnings_.begin(), lastWarnings_.end());
   }
+  lastWarnings_ = std::move(warnings);
   return {};
 }
 

@@ -15,6 +15,7 @@
 #include "core/camera.h"
 #include "core/frame_planner.h"
 #include "core/mesh_data.h"
+#include "core/obj_loader.h"
 #include "core/scene.h"
 #include "core/skybox_faces.h"
 #include "gfx/gpu_timer.h"
@@ -27,7 +28,8 @@ class Demo {
   explicit Demo(Scene scene);
 
   // Loads the OBJ at `path` as the scene's mesh `name`. On failure returns the message (naming
-  // the file) and keeps the mesh it had; on success returns "".
+  // the file) and keeps the mesh it had; on success returns "". What the loader let pass with a
+  // warning is in lastWarnings().
   std::string loadMesh(const std::string& name, const std::string& path);
   // The same for OBJ text already in memory (the page fetches files); `source` names it in
   // messages.
@@ -35,8 +37,12 @@ class Demo {
                            const std::string& source);
   // A mesh made in memory (generated scenes); levels of detail and chunks are built as for files.
   std::string setMeshData(const std::string& name, MeshData mesh);
-  // Every scene mesh from `directory`, by file name. Returns "" or the first failure's message.
+  // Every scene mesh from `directory`, by file name. Returns "" or the first failure's message;
+  // lastWarnings() holds the warnings of every file it loaded.
   std::string loadMeshesFrom(const std::string& directory);
+  // The warnings of the last loadMesh, loadMeshText or loadMeshesFrom (each names its file; empty
+  // when the files were clean or the load failed), for the caller to show.
+  const std::vector<std::string>& lastWarnings() const { return lastWarnings_; }
   bool hasAllMeshes() const;
   // The next coarser level of mesh `name`, as indices into its level-0 vertices (the page
   // simplifies with npm's meshoptimizer). Returns "" or a message.
@@ -92,6 +98,7 @@ class Demo {
 
  private:
   std::string adopt(const std::string& name, Result<MeshData> mesh);
+  std::string adoptLoaded(const std::string& name, Result<LoadedMesh> loaded);
   std::vector<PlannedObject> plannedObjects(double seconds) const;
   // Everything besides the objects that the captures depend on, as values.
   CaptureContext captureContext() const;
@@ -101,6 +108,7 @@ class Demo {
   Scene scene_;
   std::map<std::string, std::vector<MeshData>> meshes_;  // levels of detail, 0 = as loaded
   std::map<std::string, uint32_t> meshRevisions_;
+  std::vector<std::string> lastWarnings_;
   std::optional<CubeFaces> skybox_;
   LookCamera camera_;
   AnimationClock clock_;

@@ -1,5 +1,6 @@
 #include "core/obj_validation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
@@ -39,9 +40,23 @@ bool parseIndex(std::string_view token, long* out) {
   return true;
 }
 
+// What the first pass saw of the normal or texture-coordinate indices faces name, enough to tell
+// afterwards whether any of them names one the file does not define.
+struct References {
+  long maxIndex = 0;           // the largest positive index
+  bool reachesBefore = false;  // a negative index reached back before the first definition
+};
+
+struct ValidationState {
+  ObjCounts counts;
+  References texcoords, normals;
+};
+
 // One face corner: "v", "v/t", "v//n" or "v/t/n". Returns an empty string when valid.
-std::string checkCorner(std::string_view corner, const ObjCounts& counts) {
+std::string checkCorner(std::string_view corner, ValidationState& state) {
+  ObjCounts& counts = state.counts;
   const size_t available[3] = {counts.positions, counts.texcoords, counts.normals};
+  References* references[3] = {nullptr, &state.texcoords, &state.normals};
   const char* kinds[3] = {"vertex", "texture coordinate", "normal"};
   size_t field = 0;
   size_t start = 0;
@@ -55,9 +70,16 @@ std::string checkCorner(std::string_view corner, const ObjCounts& counts) {
       long index = 0;
       if (!parseIndex(part, &index)) return "'" + std::string(corner) + "' is not a face index";
       long count = static_cast<long>(available[field]);
-      if (index == 0 || index > count || index < -count) {
+      // A vertex must be defined before the face; a normal or texture coordinate the file does
+      // not define is only noted (see validateObjText). Index 0 is never valid, and
+      // tinyobjloader refuses the whole file for it.
+      if (index == 0 || (field == 0 && (index > count || index < -count))) {
         return std::string(kinds[field]) + " index " + std::to_string(index) +
                " is out of range (" + std::to_string(count) + " defined so far)";
+      }
+      if (References* seen = references[field]) {
+        seen->maxIndex = std::max(seen->maxIndex, index);
+        if (index < -count) seen->reachesBefore = true;
       }
     }
     if (slash == std::string_view::npos) return {};
@@ -108,9 +130,10 @@ size_t lineOfAttribute(const std::string& text, std::string_view keyword, size_t
 
 namespace {
 
-// Checks one line (trailing white space removed) and adds what it defines to counts. Returns the
-// problem, or an empty string.
-std::string checkLine(std::string_view line, const ObjLimits& limits, ObjCounts& counts) {
+// Checks one line (trailing white space removed) and adds what it defines to the counts. Returns
+// the problem, or an empty string.
+std::string checkLine(std::string_view line, const ObjLimits& limits, ValidationState& state) {
+  ObjCounts& counts = state.counts;
   // tinyobjloader also ends a line at a lone CR: what follows it would be a line this pass
   // never checked.
   if (line.find('\r') != std::string_view::npos) {
@@ -139,7 +162,7 @@ std::string checkLine(std::string_view line, const ObjLimits& limits, ObjCounts&
       return "a face needs at least 3 vertices, this one has " + std::to_string(tokens.size() - 1);
     }
     for (size_t i = 1; i < tokens.size(); ++i) {
-      std::string problem = checkCorner(tokens[i], counts);
+      std::string problem = checkCorner(tokens[i], state);
       if (!problem.empty()) return problem;
     }
     counts.triangles += tokens.size() - 3;
@@ -150,6 +173,41 @@ std::string checkLine(std::string_view line, const ObjLimits& limits, ObjCounts&
   return {};
 }
 
+// Field `field` (1: texture coordinate, 2: normal) of a corner that checkCorner accepted; empty
+// when the corner has none.
+std::string_view cornerField(std::string_view corner, size_t field) {
+  for (size_t i = 0; i < field; ++i) {
+    const size_t slash = corner.find('/');
+    if (slash == std::string_view::npos) return {};
+    corner.remove_prefix(slash + 1);
+  }
+  return corner.substr(0, corner.find('/'));
+}
+
+// The first line whose face names, in `field`, an index past the file's `total` definitions or
+// (negative) before the first one; 0 if none does.
+size_t firstUndefinedReference(const std::string& text, size_t field, size_t total) {
+  const std::string_view keyword = field == 2 ? "vn" : "vt";
+  long definedSoFar = 0;
+  size_t found = 0;
+  forEachLine(text, [&](size_t lineNumber, std::string_view line) {
+    std::vector<std::string_view> tokens = splitWhitespace(line);
+    if (tokens.empty()) return true;
+    if (tokens[0] == keyword) ++definedSoFar;
+    if (tokens[0] != "f") return true;
+    for (size_t i = 1; i < tokens.size(); ++i) {
+      long index = 0;
+      if (!parseIndex(cornerField(tokens[i], field), &index)) continue;
+      if (index > static_cast<long>(total) || index < -definedSoFar) {
+        found = lineNumber;
+        return false;
+      }
+    }
+    return true;
+  });
+  return found;
+}
+
 }  // namespace
 
 Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limits) {
@@ -158,17 +216,28 @@ Result<ObjCounts> validateObjText(const std::string& text, const ObjLimits& limi
                                       " bytes, over the limit of " +
                                       std::to_string(limits.maxBytes));
   }
-  ObjCounts counts;
+  ValidationState state;
   std::string problem;
   forEachLine(text, [&](size_t lineNumber, std::string_view line) {
-    problem = checkLine(line, limits, counts);
+    problem = checkLine(line, limits, state);
     if (problem.empty()) return true;
     problem = lineError(lineNumber, problem);
     return false;
   });
   if (!problem.empty()) return Result<ObjCounts>::failure(problem);
+  ObjCounts& counts = state.counts;
   if (counts.triangles == 0) {
     return Result<ObjCounts>::failure("no faces found: not an OBJ model, or an empty one");
+  }
+  // A positive index may name a normal defined further down (tinyobjloader resolves it against
+  // the whole file), so whether it is undefined is known only now; a second look, only for the
+  // rare file that has one, finds its line.
+  if (state.normals.reachesBefore || state.normals.maxIndex > static_cast<long>(counts.normals)) {
+    counts.undefinedNormalLine = firstUndefinedReference(text, 2, counts.normals);
+  }
+  if (state.texcoords.reachesBefore ||
+      state.texcoords.maxIndex > static_cast<long>(counts.texcoords)) {
+    counts.undefinedTexcoordLine = firstUndefinedReference(text, 1, counts.texcoords);
   }
   return counts;
 }

@@ -1,6 +1,9 @@
 // A line-by-line check of OBJ text before tinyobjloader sees it. tinyobjloader reads "nan" as 0,
 // skips faces with bad indices with only a warning, and trusts counts; this pass turns each of
 // those into an error with a line number, and bounds the work before any big allocation.
+// Faces that name normals or texture coordinates the file never defines are not errors (other
+// loaders take such files too): the pass notes the first line that does, for the loader's
+// warning.
 #pragma once
 
 #include <string>
@@ -15,6 +18,11 @@ struct ObjCounts {
   size_t normals = 0;
   size_t texcoords = 0;
   size_t triangles = 0;  // after fan triangulation of every face
+  // The first line whose face names a normal (texture coordinate) the file does not define: a
+  // positive index past the file's last `vn` (`vt`), or a negative one reaching back before its
+  // first. 0 when every face's indices resolve.
+  size_t undefinedNormalLine = 0;
+  size_t undefinedTexcoordLine = 0;
 };
 
 // Returns the counts, or an error "line N: ..." (without the file name; the caller adds it).

@@ -10,9 +10,10 @@ namespace {
 using Kind = SettingInfo::Kind;
 using nlohmann::json;
 
+// Whole numbers with every digit ("1000000", not %g's "1e+06"), fractions as short as they go.
 std::string formatNumber(double v) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
+  std::snprintf(buffer, sizeof buffer, "%.15g", v);
   return buffer;
 }
 

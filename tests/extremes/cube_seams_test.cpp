@@ -29,7 +29,7 @@ int faceOf(int axis, float sign) {
 SceneObject mirrorAtOrigin() {
   auto sphere = loadObjFile(builtInModelDirectory() + "/sphere.obj");
   EXPECT_TRUE(sphere) << sphere.error();
-  const glm::vec3 centre = sphere ? sphere.value().bounds.centre() : glm::vec3(0.0f);
+  const glm::vec3 centre = sphere ? sphere.value().mesh.bounds.centre() : glm::vec3(0.0f);
   return extremes::mirrorObject("sphere.obj",
                                 glm::translate(glm::mat4(1.0f), -0.5f * centre) *
                                     glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)),

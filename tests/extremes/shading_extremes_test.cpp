@@ -89,8 +89,8 @@ constexpr const char* kZeroAreaObj = "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 
 TEST(ShadingExtremes, DegenerateNormalsFromObjAreFiniteUnitVectors) {
   auto mesh = parseObj(kDegenerateObj, "degenerate.obj");
   ASSERT_TRUE(mesh) << mesh.error();
-  ASSERT_EQ(mesh.value().vertices.size(), 5u);
-  for (const Vertex& v : mesh.value().vertices) {
+  ASSERT_EQ(mesh.value().mesh.vertices.size(), 5u);
+  for (const Vertex& v : mesh.value().mesh.vertices) {
     ASSERT_TRUE(std::isfinite(v.normal.x) && std::isfinite(v.normal.y) &&
                 std::isfinite(v.normal.z));
     EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-6f);
@@ -101,7 +101,7 @@ TEST(ShadingExtremes, DegenerateNormalsFromObjAreFiniteUnitVectors) {
   }
   auto flat = parseObj(kZeroAreaObj, "zero_area.obj");
   ASSERT_TRUE(flat) << flat.error();
-  for (const Vertex& v : flat.value().vertices) EXPECT_EQ(v.normal, glm::vec3(0, 1, 0));
+  for (const Vertex& v : flat.value().mesh.vertices) EXPECT_EQ(v.normal, glm::vec3(0, 1, 0));
 }
 
 TEST(ShadingExtremes, DegenerateMeshesRenderWithoutBlackOrNaNPixels) {

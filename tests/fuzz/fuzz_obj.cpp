@@ -1,7 +1,8 @@
 // libFuzzer target: parseObj (the validating pre-pass, then tinyobjloader) on arbitrary bytes.
 // Besides crashes and sanitizer reports, it aborts when a mesh that parseObj accepted breaks what
 // the renderer relies on: whole triangles, indices in range, finite positions, unit normals,
-// bounds that hold every vertex; and when a rejection's message does not name the input.
+// bounds that hold every vertex; and when a rejection's message or a warning does not name the
+// input.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -49,13 +50,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   limits.maxBytes = 256u << 10;
   limits.maxTriangles = 20'000u;
   const std::string text(reinterpret_cast<const char*>(data), size);
-  reflect::Result<reflect::MeshData> mesh = reflect::parseObj(text, kName, limits);
+  reflect::Result<reflect::LoadedMesh> mesh = reflect::parseObj(text, kName, limits);
   if (mesh) {
-    checkMesh(mesh.value());
+    checkMesh(mesh.value().mesh);
+    // At most one warning for undefined normals and one for texture coordinates, not one a face.
+    if (mesh.value().warnings.size() > 2) fail("more than one warning per problem");
+    for (const std::string& warning : mesh.value().warnings) {
+      if (warning.rfind(std::string(kName) + ": ", 0) != 0) {
+        fail("warning does not start with the input's name");
+      }
+    }
   } else if (mesh.error().rfind(std::string(kName) + ": ", 0) != 0) {
     fail("error message does not start with the input's name");
-  } else if (mesh.error().find("refers to a vertex or normal that does not exist") !=
-             std::string::npos) {
+  } else if (mesh.error().find("refers to a vertex that does not exist") != std::string::npos) {
     // parseObj's last guard caught what the validating pre-pass let through: the two read the
     // text differently, so the user gets a message without a line number. Find those.
     fail("the pre-pass accepted indices tinyobjloader reads out of range");

@@ -149,7 +149,7 @@ TEST(GlassPath, AFineSphereLeavesWhereTheBallLensDoes) {
 TEST(GlassPath, TheGlassSphereSceneLeavesWhereTheBallLensDoesToItsTessellation) {
   auto loaded = loadObjFile(std::string(MODEL_DIR) + "/sphere.obj");
   ASSERT_TRUE(loaded) << loaded.error();
-  const MeshData& sphere = loaded.value();
+  const MeshData& sphere = loaded.value().mesh;
   // glass-sphere.json: sphere.obj at scale 0.5; its vertices lie on a sphere around the bounds'
   // centre.
   const glm::mat4 model = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));

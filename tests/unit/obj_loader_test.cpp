@@ -13,9 +13,19 @@ const std::string kData = std::string(TEST_DATA_DIR) + "/obj/";
 const std::string kModels = std::string(MODEL_DIR) + "/";
 
 MeshData mustLoad(const std::string& path) {
-  Result<MeshData> r = loadObjFile(path);
+  Result<LoadedMesh> r = loadObjFile(path);
   EXPECT_TRUE(r) << r.error();
-  return r ? r.take() : MeshData{};
+  if (r) {
+    EXPECT_TRUE(r.value().warnings.empty()) << path << ": " << r.value().warnings[0];
+  }
+  return r ? r.take().mesh : MeshData{};
+}
+
+// Loads OBJ text that must load, and returns it with its warnings.
+LoadedMesh mustParse(const std::string& text, const std::string& name = "x.obj") {
+  Result<LoadedMesh> r = parseObj(text, name);
+  EXPECT_TRUE(r) << r.error();
+  return r ? r.take() : LoadedMesh{};
 }
 
 void expectUnitNormals(const MeshData& mesh) {
@@ -26,7 +36,7 @@ void expectUnitNormals(const MeshData& mesh) {
 }
 
 std::string errorOf(const std::string& path, const ObjLimits& limits = {}) {
-  Result<MeshData> r = loadObjFile(path, limits);
+  Result<LoadedMesh> r = loadObjFile(path, limits);
   EXPECT_FALSE(r) << path << " should not load";
   return r ? std::string() : r.error();
 }
@@ -133,19 +143,113 @@ TEST(ObjLoader, SizeLimitsProtectMemory) {
 }
 
 TEST(ObjLoader, ParsesTextInMemoryWithTheGivenName) {
-  Result<MeshData> r = parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "inline.obj");
+  Result<LoadedMesh> r = parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "inline.obj");
   ASSERT_TRUE(r) << r.error();
-  EXPECT_EQ(r.value().name, "inline.obj");
-  EXPECT_EQ(r.value().vertices[0].normal, glm::vec3(0, 0, 1));
+  EXPECT_EQ(r.value().mesh.name, "inline.obj");
+  EXPECT_EQ(r.value().mesh.vertices[0].normal, glm::vec3(0, 0, 1));
+  EXPECT_TRUE(r.value().warnings.empty());
   EXPECT_EQ(parseObj("f 1 2 3\n", "x.obj").error(),
             "x.obj: line 1: vertex index 1 is out of range (0 defined so far)");
   EXPECT_EQ(parseObj("v 1 2\n", "x.obj").error(), "x.obj: line 1: 'v' needs three numbers");
   EXPECT_EQ(parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", "x.obj").error(),
             "x.obj: line 4: vertex index 0 is out of range (3 defined so far)");
   // A zero-area triangle loads; its computed normal falls back to a finite default.
-  Result<MeshData> flat = parseObj("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "flat.obj");
+  Result<LoadedMesh> flat = parseObj("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "flat.obj");
   ASSERT_TRUE(flat) << flat.error();
-  for (const Vertex& v : flat.value().vertices) EXPECT_EQ(v.normal, glm::vec3(0, 1, 0));
+  for (const Vertex& v : flat.value().mesh.vertices) EXPECT_EQ(v.normal, glm::vec3(0, 1, 0));
+}
+
+// Real exports often name normals (or texture coordinates) they never write. Such a file loads,
+// as in other loaders: those corners get computed normals, and the file one warning per problem.
+constexpr const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";  // computed normal +Z
+
+TEST(ObjLoader, NormalsTheFileNeverDefinesAreComputedWithOneWarning) {
+  LoadedMesh m = mustParse(std::string(kTriangle) + "f 1//1 2//2 3//3\nf 1//4 2//5 3//6\n");
+  EXPECT_EQ(m.warnings,
+            std::vector<std::string>{"x.obj: faces name normals the file does not define (first "
+                                     "on line 4); using computed normals"});
+  ASSERT_EQ(m.mesh.triangleCount(), 2u);
+  EXPECT_EQ(m.mesh.vertices.size(), 3u);  // an undefined normal is no normal: one vertex each
+  for (const Vertex& v : m.mesh.vertices) EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
+}
+
+TEST(ObjLoader, ANormalIndexPastTheLastNormalIsComputedTheOthersKept) {
+  LoadedMesh m = mustParse(std::string(kTriangle) +
+                           "v 0 0 1\nvn 1 0 0\nf 1//1 2//1 3//1\nf 1//2 2//2 4//2\nf 1//9 2//9 "
+                           "4//9\n");
+  EXPECT_EQ(m.warnings,
+            std::vector<std::string>{"x.obj: faces name normals the file does not define (first "
+                                     "on line 7); using computed normals"});
+  ASSERT_EQ(m.mesh.triangleCount(), 3u);
+  // The first face keeps the file's normal; the others (the same two undefined indices read as
+  // none) share a computed one: their positions' area-weighted sums, normalised.
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(m.mesh.vertices[m.mesh.indices[i]].normal, glm::vec3(1, 0, 0));
+  }
+  const Vertex& corner = m.mesh.vertices[m.mesh.indices[3]];
+  EXPECT_EQ(corner.position, glm::vec3(0, 0, 0));
+  // Position 1 is in all three faces: (0, 0, 1) from the first, (0, -1, 0) from each other one.
+  EXPECT_NEAR(corner.normal.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(corner.normal.y, -2.0f / std::sqrt(5.0f), 1e-6f);
+  EXPECT_NEAR(corner.normal.z, 1.0f / std::sqrt(5.0f), 1e-6f);
+  EXPECT_EQ(m.mesh.vertices[m.mesh.indices[6]].normal, corner.normal);
+}
+
+TEST(ObjLoader, ANegativeNormalIndexReachingBeforeTheFirstIsComputed) {
+  LoadedMesh m = mustParse(std::string(kTriangle) + "vn 1 0 0\nf 1//-2 2//-2 3//-2\n");
+  EXPECT_EQ(m.warnings,
+            std::vector<std::string>{"x.obj: faces name normals the file does not define (first "
+                                     "on line 5); using computed normals"});
+  for (const Vertex& v : m.mesh.vertices) EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
+}
+
+TEST(ObjLoader, ANormalDefinedAfterTheFaceIsTheFilesNotAWarning) {
+  LoadedMesh m = mustParse(std::string(kTriangle) + "f 1//1 2//1 3//1\nvn 1 0 0\n");
+  EXPECT_TRUE(m.warnings.empty());
+  for (const Vertex& v : m.mesh.vertices) EXPECT_EQ(v.normal, glm::vec3(1, 0, 0));
+}
+
+TEST(ObjLoader, TextureCoordinatesTheFileNeverDefinesAreIgnoredWithOneWarning) {
+  LoadedMesh m =
+      mustParse(std::string(kTriangle) + "vn 1 0 0\nf 1/1/1 2/2/1 3/3/1\nf 1/7 2/8 3/9\n");
+  EXPECT_EQ(m.warnings, std::vector<std::string>{
+                            "x.obj: faces name texture coordinates the file does not define "
+                            "(first on line 5); ignored, as texture coordinates are not used"});
+  ASSERT_EQ(m.mesh.triangleCount(), 2u);
+  // The normals are the file's where it names one, computed where not.
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(m.mesh.vertices[m.mesh.indices[i]].normal, glm::vec3(1, 0, 0));
+    EXPECT_EQ(m.mesh.vertices[m.mesh.indices[i + 3]].normal, glm::vec3(0, 0, 1));
+  }
+}
+
+TEST(ObjLoader, AFileWithBothNamesItselfInEachWarning) {
+  Result<LoadedMesh> r = loadObjFile(kData + "undefined_normals.obj");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r.value().warnings,
+            (std::vector<std::string>{
+                kData + "undefined_normals.obj: faces name normals the file does not define "
+                        "(first on line 8); using computed normals",
+                kData + "undefined_normals.obj: faces name texture coordinates the file does not "
+                        "define (first on line 8); ignored, as texture coordinates are not used"}));
+  EXPECT_EQ(r.value().mesh.triangleCount(), 4u);
+  expectUnitNormals(r.value().mesh);
+  // The same normals as the file without any normals.
+  const MeshData plain = mustLoad(kData + "no_normals.obj");
+  ASSERT_EQ(plain.vertices.size(), r.value().mesh.vertices.size());
+  for (size_t i = 0; i < plain.vertices.size(); ++i) {
+    EXPECT_EQ(plain.vertices[i].normal, r.value().mesh.vertices[i].normal);
+  }
+}
+
+TEST(ObjLoader, WhatIsTrulyBrokenIsStillRefused) {
+  // Index 0 is never valid (tinyobjloader refuses the file), nor is a vertex the file lacks.
+  EXPECT_EQ(parseObj(std::string(kTriangle) + "f 1//0 2//0 3//0\n", "x.obj").error(),
+            "x.obj: line 4: normal index 0 is out of range (0 defined so far)");
+  EXPECT_EQ(parseObj(std::string(kTriangle) + "f 1//1 2//1 4//1\n", "x.obj").error(),
+            "x.obj: line 4: vertex index 4 is out of range (3 defined so far)");
+  EXPECT_EQ(parseObj(std::string(kTriangle) + "f 1//x 2//1 3//1\n", "x.obj").error(),
+            "x.obj: line 4: '1//x' is not a face index");
 }
 
 }  // namespace

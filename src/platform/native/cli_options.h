@@ -1,9 +1,15 @@
-// The `reflect` command line, parsed into plain values (no GL, so it is unit-tested).
+// The `reflect` command line, parsed into plain values (no GL, so it is unit-tested). Each command
+// is defined once, with CLI11: its options, their help, and what each value must be. The capture
+// planning and accuracy options come from the settings table (core/settings_schema.h): a setting
+// added there is an option here, named in kebab case (facesPerFrame -> --faces-per-frame) and
+// checked with the same messages as the page's.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bench/bench_commands.h"
 #include "core/accuracy_settings.h"
 #include "core/frame_planner.h"
 #include "core/result.h"
@@ -11,32 +17,39 @@
 namespace reflect {
 
 struct CliOptions {
-  std::string command;  // "render", "bench" or "help"
+  std::string command;    // "render", "bench" or "help"
+  std::string helpTopic;  // help: "" (every command), "render" or "bench"
   int width = 800;
   int height = 800;
-  double time = 0.0;
-  std::string out = "frame.png";
-  std::string assets;            // a folder with the course's models, by their file names
-  std::string scene = "ex12-2";  // a scene name from assets/scenes, or a .json path
-  int frames = 120;              // bench: frames to time
-  int warmup = 10;               // bench: frames not timed
-  int cubeSize = 256;
-  bool cubeSizeSet = false;  // otherwise the scene's capture.faceSize
+  double time = 0.0;              // render
+  std::string out = "frame.png";  // render
+  std::string referenceOut;       // render: also write the ray-traced reference of the frame
+  std::string assets;             // a folder with the course's models, by their file names
+  std::string scene = "ex12-2";   // a shipped scene's name, or a .json path
+  std::optional<int> cubeSize;    // otherwise the scene's capture.faceSize
   float yawDeg = 0.0f;
   float pitchDeg = 0.0f;
-  // Capture planning. `policySet`: bench times just this policy instead of comparing them all.
   PlannerSettings planner;
   AccuracySettings accuracy;
-  bool policySet = false;
-  int accuracyFrames = 60;
-  bool growth = false;       // bench: frame time against reflectors and triangles
-  bool sweep = false;        // bench: accuracy settings against the ray-traced reference
-  std::string referenceOut;  // render: also write the ray-traced reference of the same frame
-  std::string csv;           // sweep: CSV output
-  std::string svg;           // sweep: SVG plot output
+  bool policySet = false;     // bench: time just this policy instead of comparing them all
+  std::optional<int> frames;  // bench: otherwise the mode's default
+  std::optional<int> warmup;  // bench: otherwise the mode's default
+  int accuracyFrames = 60;    // bench: frames compared with every-frame
+  bool growth = false;        // bench: frame time against reflectors and triangles
+  bool sweep = false;         // bench: accuracy settings against the ray-traced reference
+  std::string csv;            // sweep: CSV output
+  std::string svg;            // sweep: SVG plot output
+
+  // bench: which mode the options select, and the options it takes.
+  BenchMode benchMode() const;
+  BenchCommandOptions benchOptions() const;
 };
 
+// `args` without the program name. Every failure says what was expected, e.g.
+// "--cube: 100000 is not in 1..4096", "render: unknown option --bogus".
 Result<CliOptions> parseCli(const std::vector<std::string>& args);
-const char* cliHelp();
+
+// The help text: "" for an overview and every command's options, or one command's.
+std::string cliHelp(const std::string& command = "");
 
 }  // namespace reflect

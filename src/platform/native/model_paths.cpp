@@ -1,7 +1,9 @@
 #include "platform/native/model_paths.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <system_error>
 #include <vector>
 
 #include "core/scene_file.h"
@@ -43,16 +45,58 @@ std::string builtInModelDirectory() {
   return builtInAssetDirectory() + "/models";
 }
 
-Result<Scene> loadNamedScene(const std::string& nameOrPath) {
-  const bool isPath =
-      nameOrPath.find('/') != std::string::npos || nameOrPath.find(".json") != std::string::npos;
-  return loadSceneFile(isPath ? nameOrPath
-                              : builtInAssetDirectory() + "/scenes/" + nameOrPath + ".json");
+std::vector<std::string> shippedSceneNames() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(builtInAssetDirectory() + "/scenes", error)) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  auto byDefault = std::find(names.begin(), names.end(), "ex12-2");
+  if (byDefault != names.end()) std::rotate(names.begin(), byDefault, byDefault + 1);
+  return names;
 }
 
-std::string loadSceneModels(Demo& demo, const std::string& userDirectory) {
+namespace {
+
+std::string shippedScenePath(const std::string& name) {
+  return builtInAssetDirectory() + "/scenes/" + name + ".json";
+}
+
+bool isShippedScene(const std::string& name) {
+  const std::vector<std::string> names = shippedSceneNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+std::string checkSceneName(const std::string& nameOrPath) {
+  std::error_code error;
+  if (isShippedScene(nameOrPath) || std::filesystem::is_regular_file(nameOrPath, error)) return {};
+  std::string shipped;
+  for (const std::string& name : shippedSceneNames())
+    shipped += (shipped.empty() ? "" : ", ") + name;
+  return nameOrPath + ": no such scene (shipped: " + shipped + ") and no such .json file";
+}
+
+Result<Scene> loadNamedScene(const std::string& nameOrPath) {
+  if (isShippedScene(nameOrPath)) return loadSceneFile(shippedScenePath(nameOrPath));
+  std::string problem = checkSceneName(nameOrPath);
+  if (!problem.empty()) return Result<Scene>::failure(problem);
+  return loadSceneFile(nameOrPath);
+}
+
+std::string loadSceneModels(Demo& demo, const std::string& userDirectory,
+                            std::vector<std::string>* warnings) {
+  auto keepWarnings = [&] {
+    if (warnings) {
+      warnings->insert(warnings->end(), demo.lastWarnings().begin(), demo.lastWarnings().end());
+    }
+  };
   std::string error = demo.loadMeshesFrom(builtInModelDirectory());
   if (!error.empty()) return error;
+  keepWarnings();
   if (!userDirectory.empty()) {
     if (!std::filesystem::is_directory(userDirectory)) return userDirectory + ": not a folder";
     for (const std::string& name : demo.scene().meshNames()) {
@@ -64,6 +108,7 @@ std::string loadSceneModels(Demo& demo, const std::string& userDirectory) {
       }
       error = demo.loadMesh(name, path);
       if (!error.empty()) return error;
+      keepWarnings();
     }
   }
   return loadSkybox(demo);
