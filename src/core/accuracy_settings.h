@@ -31,4 +31,9 @@ struct AccuracySettings {
   std::string describe() const;
 };
 
+// The inverse of describe(), for the rows of the measured sweep (their `setting` column): each
+// comma-separated part sets one setting, parts it does not name keep their default. False (and
+// `settings` unchanged) when a part is not one describe() writes.
+bool parseAccuracyDescription(const std::string& text, AccuracySettings* settings);
+
 }  // namespace reflect
