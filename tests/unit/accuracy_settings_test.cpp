@@ -32,7 +32,7 @@ TEST(AccuracySettings, EveryDescriptionReadsBackAsItsSettings) {
       }
     }
   }
-  EXPECT_EQ(combinations, 256);
+  EXPECT_EQ(combinations, 2 * 4 * 2 * 2 * 2 * 2);
 }
 
 TEST(AccuracySettings, PartsNotGivenKeepTheirDefaults) {

@@ -219,13 +219,23 @@ EMSCRIPTEN_KEEPALIVE const char* rf_add_lod(const char* request, const uint32_t*
   return replyError(state().demo->addLodLevel(name, list));
 }
 
-// Adds an object to the current scene: the request is an entry of a scene file's "objects" (its
-// mesh loaded first with rf_load_mesh). {} or {"error"}.
+// Adds an object to the current scene: the request is an entry of a scene file's "objects" whose
+// mesh was loaded first with rf_load_mesh. The mesh may have any name (a user's file name): it is
+// not a path to fetch, so the scene file's path rule does not apply to it. {} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* rf_add_object(const char* request) {
+  auto r = parseRequest(request, "rf_add_object");
+  if (!r) return replyError(r.error());
   if (!state().demo) return replyError("no scene loaded");
+  json entry = r.value();
+  if (!entry.contains("mesh") || !entry["mesh"].is_string()) {
+    return replyError("object: mesh: expected the name of a loaded mesh");
+  }
+  const std::string mesh = entry["mesh"].get<std::string>();
+  entry["mesh"] = "added.obj";  // checked as a scene file's entry, then given its own name
   reflect::Result<reflect::SceneObject> object =
-      reflect::parseSceneObjectJson(request ? request : "", "object");
+      reflect::parseSceneObjectJson(entry.dump(), "object");
   if (!object) return replyError(object.error());
+  object.value().mesh = mesh;
   return replyError(state().demo->addObject(object.value()));
 }
 
