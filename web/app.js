@@ -9,32 +9,20 @@ import { parseSweep } from './accuracy.js';
 import { benchPage } from './bench.js';
 import { AddressBar, readPixels, screenshot } from './capture.js';
 import { attachDrop } from './drop.js';
-import { attachInput } from './input.js';
+import { attachInput, helpOverlay } from './input.js';
 import { showMessage } from './messages.js';
 import { buildPanel } from './panel.js';
+import { sceneTitles } from './scene_loader.js';
 import { Session } from './session.js';
 import { frameTimes, Progress, Sparkline, StatsLine } from './stats.js';
 import { testApi } from './test_api.js';
-import { DEFAULT_SCENE, parseQuery } from './url_state.js';
+import { parseQuery } from './url_state.js';
 import { createBridge } from './wasm_bridge.js';
 
 const canvas = document.getElementById('canvas');
 let resolveReady, rejectReady;
 const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });
 ready.catch(() => {});  // failures are shown on the page; tests await it themselves
-
-// The shipped scenes, in the picker's order: scenes/index.json, which the build writes from
-// assets/scenes/*.json (cmake/SceneIndex.cmake). Without it the picker offers the default alone.
-async function sceneTitles() {
-  try {
-    const response = await fetch('scenes/index.json');
-    if (!response.ok) throw new Error(`${response.status}`);
-    const list = await response.json();
-    return list.map(({ name, title, description }) => ({ name, title: title || name, description: description || '' }));
-  } catch {
-    return [{ name: DEFAULT_SCENE, title: DEFAULT_SCENE, description: '' }];
-  }
-}
 
 // The link's settings: the first scene (at the link's cube size, or its accuracy mode's), then
 // the accuracy mode and settings, materials, planner settings, camera, time and pause. A value
@@ -50,7 +38,9 @@ async function applyLink(session, link) {
   session.cubeSize = link.cube || row?.faceSize || 0;
   session.paused = link.paused;
   await session.switchScene(link.scene);
+  // All at once (one GL rebuild for accuracy settings); when that fails, one by one.
   const each = (changes, set) => {
+    if (!Object.keys(changes).length || !set(changes)) return;
     for (const [key, value] of Object.entries(changes)) {
       const error = set({ [key]: value });
       if (error) showMessage(`${error} (from the link; ignored)`);
@@ -110,9 +100,7 @@ async function start() {
       .then((results) => { window.demo.benchResults = results; return results; });
   document.getElementById('bench-close').onclick = () => { document.getElementById('bench-box').hidden = true; };
 
-  const help = document.getElementById('help-overlay');
-  const toggleHelp = (show = help.hidden) => { help.hidden = !show; };
-  document.getElementById('help-close').onclick = () => toggleHelp(false);
+  const help = helpOverlay();
   const camera = (change) => session.camera(change);
   attachInput(canvas, {
     drag: (dx, dy) => camera((b) => b.dragCamera({ dx, dy, height: canvas.clientHeight })),
@@ -121,12 +109,8 @@ async function start() {
     rise: (steps) => camera((b) => b.moveCamera({ up: steps })),
     reset: () => camera((b) => b.resetCamera()),
     togglePause: () => session.setPaused(!session.paused),
-    toggleHelp: () => toggleHelp(),
-    closeHelp: () => {
-      if (help.hidden) return false;
-      toggleHelp(false);
-      return true;
-    },
+    toggleHelp: () => help.toggle(),
+    closeHelp: () => help.close(),
   });
   attachDrop(session);
 
@@ -139,7 +123,7 @@ async function start() {
     pickFiles: () => document.getElementById('file-input').click(),
     pickFolder: () => document.getElementById('folder-input').click(),
     bench: () => bench().catch(() => {}),
-    toggleHelp: () => toggleHelp(),
+    toggleHelp: () => help.toggle(),
   }) : null;
   const description = document.getElementById('scene-description');
   const describe = () => {

@@ -81,3 +81,19 @@ export function attachInput(canvas, actions) {
     e.preventDefault();
   });
 }
+
+// The help overlay that lists the keys: toggle(show = it is hidden) and close() (false when it
+// was not open); its × button closes it.
+export function helpOverlay() {
+  const help = document.getElementById('help-overlay');
+  const toggle = (show = help.hidden) => { help.hidden = !show; };
+  document.getElementById('help-close').onclick = () => toggle(false);
+  return {
+    toggle,
+    close: () => {
+      if (help.hidden) return false;
+      toggle(false);
+      return true;
+    },
+  };
+}

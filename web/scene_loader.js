@@ -4,6 +4,7 @@
 // succeeds the scene on screen stays, so a bad file never costs the user what they had. A user's
 // model that is missing or broken is reported and the built-in one is kept.
 import { showMessage } from './messages.js';
+import { DEFAULT_SCENE } from './url_state.js';
 
 // Models larger than this are refused before they are read (the wasm heap holds the text, the
 // parsed mesh and its levels of detail at once).
@@ -118,4 +119,17 @@ export async function loadScene(bridge, url, {
   if (result.error) throw new Error(result.error);
   if (result.notice) showMessage(result.notice, 'info');
   return files.title;
+}
+
+// The shipped scenes, in the picker's order: scenes/index.json, which the build writes from
+// assets/scenes/*.json (cmake/SceneIndex.cmake). Without it the picker offers the default alone.
+export async function sceneTitles() {
+  try {
+    const response = await fetch('scenes/index.json');
+    if (!response.ok) throw new Error(`${response.status}`);
+    const list = await response.json();
+    return list.map(({ name, title, description }) => ({ name, title: title || name, description: description || '' }));
+  } catch {
+    return [{ name: DEFAULT_SCENE, title: DEFAULT_SCENE, description: '' }];
+  }
 }

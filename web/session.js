@@ -3,7 +3,7 @@
 // camera, time and pause. Every change goes through here, to the C++ side through the bridge,
 // and tells the listeners (the panel, the address bar) what changed. Scene loads, model changes
 // and the bench run one at a time in a job queue; idle() resolves when it is empty.
-import { AccuracyModes, sameSettings } from './accuracy.js';
+import { AccuracyModes } from './accuracy.js';
 import { buildLods } from './lod.js';
 import { showMessage } from './messages.js';
 import { loadScene, sceneUrl } from './scene_loader.js';
@@ -199,7 +199,6 @@ export class Session {
   accuracyReadout() {
     return this.modes.readout(this.accuracyRow(), this.bridge.accuracyDescription(), this.faceSize());
   }
-  isDefaultAccuracy() { return sameSettings(this.bridge.accuracy(), this.defaultAccuracy); }
 
   // --- camera, time, pause --------------------------------------------------------------------
 
