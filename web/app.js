@@ -53,7 +53,7 @@ async function applyLink(session, link) {
   }
   each(link.accuracy, (c) => bridge.setAccuracy(c));
   for (const { index, changes, entry } of link.materials) {
-    const error = bridge.setMaterial(index, changes);
+    const error = bridge.setMaterial({ index, changes });
     if (error) showMessage(`mat=${entry}: ${error}; ignored`);
   }
   each(link.planner, (c) => bridge.setPlanner(c));

@@ -87,7 +87,7 @@ export class Session {
                       this.bridge.addObject(f.object);
         if (error) showMessage(`${f.source}: ${error}`);
       }
-      for (const { index, changes } of edits) this.bridge.setMaterial(index, changes);
+      for (const edit of edits) this.bridge.setMaterial(edit);
     } else {
       this.figures = [];
     }
@@ -162,7 +162,7 @@ export class Session {
   }
   setPlanner(changes) { return this.report(this.bridge.setPlanner(changes)); }
   setAccuracy(changes) { return this.report(this.bridge.setAccuracy(changes)); }
-  setMaterial(index, changes) { return this.report(this.bridge.setMaterial(index, changes)); }
+  setMaterial(index, changes) { return this.report(this.bridge.setMaterial({ index, changes })); }
 
   // The materials that differ from the scene file's: [{ index, changes }] by schema name.
   changedMaterials() {

@@ -68,7 +68,8 @@ export async function createBridge(canvas) {
 
     // [{ mesh, material: { type, reflection, ... }, summary, reflective, editable, orbits, translate }]
     objects: () => call('rf_objects_json'),
-    setMaterial: (index, changes) => errorOf(call('rf_set_material', { index, changes })),
+    // { index: the object's place, changes: { reflection: 0.5, ... } }
+    setMaterial: ({ index, changes }) => errorOf(call('rf_set_material', { index, changes })),
     // Adds a scene-file object entry (its mesh loaded first with loadMesh).
     addObject: (object) => errorOf(call('rf_add_object', object)),
     // { name, title, meshes, cubeFaceSize, environments }
