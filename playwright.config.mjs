@@ -9,6 +9,9 @@ export default defineConfig({
   outputDir: 'build/playwright-results',
   workers: 1,  // two cores: one browser at a time keeps SwiftShader timings sane
   timeout: 60_000,
+  // Scene reloads and model loads on a shared 2-core machine can take seconds; tests that wait
+  // for the page's jobs await demo.idle() instead of a time.
+  expect: { timeout: 15_000 },
   reporter: [['list']],
   use: {
     baseURL: `http://127.0.0.1:${port}/`,

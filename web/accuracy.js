@@ -1,7 +1,8 @@
-// The accuracy modes the page offers: the rows of sweep.csv (`reflect bench --sweep`, measured on
-// the native reference machine against the ray-traced reference), each a point on the measured
-// speed/accuracy curve. A row's `setting` is rf_accuracy_json's `describe` string, e.g.
-// "centre, distance x2, depth 24, linear, RGBA8, highp", and its face_size the cube size.
+// The measured accuracy modes: the rows of sweep.csv (`reflect bench --sweep`, measured on the
+// native reference machine against the ray-traced reference, shipped as assets/sweep.csv), each a
+// named point on the measured speed/accuracy curve. A row's `settings` column holds its accuracy
+// settings as JSON by the schema's names (what the page applies), `setting` their description for
+// people, and face_size its cube size.
 
 // Splits one CSV line (quoted fields may hold commas; "" is a quote).
 function csvFields(line) {
@@ -27,7 +28,7 @@ function csvFields(line) {
 }
 
 // sweep.csv text -> [{ name, setting, faceSize, ms, msP10, msP90, psnr, rmse, p95, max,
-// angularError, offPsnr, pareto, accuracy }] (rows whose setting cannot be parsed are left out).
+// angularError, offPsnr, pareto, accuracy }] (rows whose settings do not parse are left out).
 export function parseSweep(text) {
   const lines = text.split(/\r?\n/).filter((l) => l.trim() !== '');
   if (!lines.length) return [];
@@ -37,7 +38,12 @@ export function parseSweep(text) {
     const fields = csvFields(line);
     const get = (key) => fields[header.indexOf(key)];
     const num = (key) => Number(get(key));
-    const accuracy = parseSetting(get('setting') || '');
+    let accuracy = null;
+    try {
+      accuracy = JSON.parse(get('settings'));
+    } catch {
+      continue;
+    }
     if (!get('name') || !accuracy) continue;
     rows.push({
       name: get('name'), setting: get('setting'), faceSize: num('face_size'), ms: num('ms'),
@@ -49,51 +55,46 @@ export function parseSweep(text) {
   return rows;
 }
 
-// "centre|origin, plain|distance xK, depth N, linear|mipmapped, RGBA8|RGBA16F, highp|mediump"
-// -> { distance, origin, depth, mipmaps, halfFloat, mediump } (rf_accuracy_json's keys), or null.
-export function parseSetting(text) {
-  const parts = text.split(',').map((p) => p.trim());
-  if (parts.length !== 6) return null;
-  const [where, lookup, depth, filter, format, precision] = parts;
-  const distance = lookup === 'plain' ? 0 : Number((/^distance x(\d+)$/.exec(lookup) || [])[1]);
-  const depthBits = Number((/^depth (\d+)$/.exec(depth) || [])[1]);
-  if (!['centre', 'origin'].includes(where) || !Number.isInteger(distance) || !depthBits ||
-      !['linear', 'mipmapped'].includes(filter) || !['RGBA8', 'RGBA16F'].includes(format) ||
-      !['highp', 'mediump'].includes(precision)) return null;
-  return {
-    distance, origin: where === 'origin', depth: depthBits, mipmaps: filter === 'mipmapped',
-    halfFloat: format === 'RGBA16F', mediump: precision === 'mediump',
-  };
-}
+// Whether two settings objects (by the schema's names) hold the same values.
+export const sameSettings = (a, b) => Object.keys({ ...a, ...b }).every((k) => a[k] === b[k]);
 
-// rf_accuracy_json's description of an accuracy object (the same words as the C side).
-export function describeAccuracy(a) {
-  return [a.origin ? 'origin' : 'centre', a.distance > 0 ? `distance x${a.distance}` : 'plain',
-          `depth ${a.depth}`, a.mipmaps ? 'mipmapped' : 'linear', a.halfFloat ? 'RGBA16F' : 'RGBA8',
-          a.mediump ? 'mediump' : 'highp'].join(', ');
-}
+// The rows and the one the user picked (a row name or null).
+export class AccuracyModes {
+  constructor(rows) {
+    this.rows = rows;
+    this.chosen = null;
+  }
 
-// A combination no sweep row measured, in a URL: the describe words without spaces,
-// "centre,distance-x2,depth-24,mipmapped,RGBA8,highp". Both ways; fromUrlSetting gives the
-// accuracy object or null.
-export function toUrlSetting(describe) {
-  return describe.split(',').map((p) => p.trim().replace(/ /g, '-')).join(',');
-}
-export function fromUrlSetting(text) {
-  return parseSetting(text.split(',').map((p) => p.replace(/-/g, ' ')).join(', '));
-}
+  find(name) {
+    return this.rows.find((r) => r.name === name) || null;
+  }
 
-// The sweep row measuring `describe` at cube size `faceSize`: `preferred` (a row name) when it
-// matches, else the first that does; null when that combination was not measured.
-export function matchingRow(rows, describe, faceSize, preferred = null) {
-  const hits = rows.filter((r) => r.setting === describe && r.faceSize === faceSize);
-  return hits.find((r) => r.name === preferred) || hits[0] || null;
-}
+  names() {
+    return this.rows.map((r) => r.name).join(', ');
+  }
 
-// The readout under the selector: the expected error of the current setting.
-export function readout(row, describe, faceSize) {
-  if (!row) return `${describe}, ${faceSize}²: not measured (no sweep row for this combination)`;
-  return `${row.name}: reflector PSNR ${row.psnr.toFixed(2)} dB · mean angular error ` +
-         `${row.angularError.toFixed(2)}° · ${row.ms.toFixed(1)} ms a frame on the native reference ` +
-         `machine · ${row.pareto ? 'on the Pareto front' : 'not on the Pareto front'}`;
+  // The row measuring `settings` at cube size `faceSize`: the picked one when it does, else the
+  // first that does; null when that combination was not measured.
+  current(settings, faceSize) {
+    const hits = this.rows.filter((r) => sameSettings(r.accuracy, settings) && r.faceSize === faceSize);
+    return hits.find((r) => r.name === this.chosen) || hits[0] || null;
+  }
+
+  // acc= for a link: the picked row while its settings are current, else the first row with
+  // them; null for the shipped defaults (not picked) and for settings no row has.
+  linkName(settings, defaults) {
+    const picked = this.find(this.chosen);
+    if (picked && sameSettings(picked.accuracy, settings)) return picked.name;
+    if (sameSettings(settings, defaults)) return null;
+    return this.rows.find((r) => sameSettings(r.accuracy, settings))?.name || null;
+  }
+
+  // The readout under the selector: the expected error of the current setting.
+  readout(row, describe, faceSize) {
+    if (!this.rows.length) return 'sweep.csv is not available: no measured modes';
+    if (!row) return `${describe}, ${faceSize}²: not measured (no sweep row for this combination)`;
+    return `${row.name}: reflector PSNR ${row.psnr.toFixed(2)} dB · mean angular error ` +
+           `${row.angularError.toFixed(2)}° · ${row.ms.toFixed(1)} ms a frame on the native reference ` +
+           `machine · ${row.pareto ? 'on the Pareto front' : 'not on the Pareto front'}`;
+  }
 }

@@ -2,15 +2,17 @@
 // the current scene, with the render cost and how far each policy's pictures are from
 // re-capturing every frame. The page's own frame loop is held while it runs, so nothing else
 // renders in between.
+import { showMessage } from './messages.js';
 
-// lod: capture LOD, viewLod: view LOD (triangles per pixel; 0 = full detail).
+// The planner settings of each run, by the schema's names (the rest stay the defaults below).
+const BASE = { policy: 'when-changed', facesPerFrame: 2, everyN: 4, captureLod: 0, viewLod: 0 };
 export const BENCH_CONFIGS = [
-  { label: 'every-frame', policy: 'every-frame', slice: 2, every: 4, lod: 0, viewLod: 0 },
-  { label: 'when-changed', policy: 'when-changed', slice: 2, every: 4, lod: 0, viewLod: 0 },
-  { label: 'when-changed+LOD 0.5', policy: 'when-changed', slice: 2, every: 4, lod: 0.5, viewLod: 0 },
-  { label: 'when-changed+LOD+view 0.5', policy: 'when-changed', slice: 2, every: 4, lod: 0.5, viewLod: 0.5 },
-  { label: 'time-sliced 2', policy: 'time-sliced', slice: 2, every: 4, lod: 0, viewLod: 0 },
-  { label: 'every-n 4', policy: 'every-n', slice: 2, every: 4, lod: 0, viewLod: 0 },
+  { label: 'every-frame', settings: { ...BASE, policy: 'every-frame' } },
+  { label: 'when-changed', settings: BASE },
+  { label: 'when-changed+LOD 0.5', settings: { ...BASE, captureLod: 0.5 } },
+  { label: 'when-changed+LOD+view 0.5', settings: { ...BASE, captureLod: 0.5, viewLod: 0.5 } },
+  { label: 'time-sliced 2', settings: { ...BASE, policy: 'time-sliced' } },
+  { label: 'every-n 4', settings: { ...BASE, policy: 'every-n' } },
 ];
 
 function percentile(values, p) {
@@ -34,8 +36,8 @@ function compare(a, b) {
   return { max, differing };
 }
 
-// demo: { frame(dt) -> stats (waits for the GPU), setTime, setPlanner(p, slice, every, lod, viewLod),
-// readPixels() -> { width, height, data }, planner(), scene() }.
+// demo: { frame(dt) -> stats (waits for the GPU), setTime, setPlanner(settings) -> "" or the error,
+// readPixels() -> { width, height, data }, scene() }.
 // Returns { scene, frames, width, height, rows: [...], table }.
 export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}) {
   const memoryLimit = 512 * 1024 * 1024;  // reference frames kept for the comparison
@@ -46,7 +48,7 @@ export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}
   for (const config of BENCH_CONFIGS) {
     onProgress(`bench: ${config.label} (${rows.length + 1}/${BENCH_CONFIGS.length}), ${frames} frames…`);
     await new Promise((r) => setTimeout(r, 0));  // let the progress line show
-    const error = demo.setPlanner(config.policy, config.slice, config.every, config.lod, config.viewLod);
+    const error = demo.setPlanner(config.settings);
     if (error) throw new Error(`bench: ${config.label}: ${error}`);
     demo.setTime(0);
     const frameMs = [], faces = [], draws = [], triangles = [], captureTriangles = [];
@@ -67,7 +69,7 @@ export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}
         const bytes = pixels.data.length * Math.ceil(frames);
         compareEvery = Math.max(1, Math.ceil(bytes / memoryLimit));
       }
-      if (config.policy === 'every-frame' && rows.length === 0) {
+      if (rows.length === 0) {  // the first run, every-frame: the reference
         reference.push(pixels.data);
       } else {
         const ref = reference[i / compareEvery];
@@ -79,11 +81,10 @@ export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}
       }
     }
     rows.push({
-      label: config.label, policy: config.policy, slice: config.slice, every: config.every, lod: config.lod,
-      viewLod: config.viewLod,
+      label: config.label, settings: config.settings,
       timing: gpuTiming ? 'gpu' : 'cpu',
       frameMs: { median: percentile(frameMs, 0.5), p10: percentile(frameMs, 0.1), p90: percentile(frameMs, 0.9) },
-      facesPerFrame: mean(faces), drawCallsPerFrame: mean(draws), trianglesPerFrame: mean(triangles),
+      facesCapturedPerFrame: mean(faces), drawCallsPerFrame: mean(draws), trianglesPerFrame: mean(triangles),
       captureTrianglesPerFrame: mean(captureTriangles),
       maxDiff: rows.length === 0 ? 0 : maxDiff, differingFrames: rows.length === 0 ? 0 : differingFrames,
       comparedFrames: rows.length === 0 ? reference.length : compared,
@@ -107,7 +108,7 @@ export function formatTable({ scene, frames, width, height, compareEvery, rows }
   ];
   for (const r of rows) {
     lines.push(`${r.label.padEnd(26)}${pad(r.frameMs.median.toFixed(2), 8)}${pad(r.frameMs.p10.toFixed(2), 8)}` +
-               `${pad(r.frameMs.p90.toFixed(2), 8)}${pad(r.facesPerFrame.toFixed(2), 7)}` +
+               `${pad(r.frameMs.p90.toFixed(2), 8)}${pad(r.facesCapturedPerFrame.toFixed(2), 7)}` +
                `${pad(r.drawCallsPerFrame.toFixed(1), 7)}${pad(Math.round(r.trianglesPerFrame), 9)}` +
                `${pad(Math.round(r.captureTrianglesPerFrame), 10)}${pad(r.maxDiff, 10)}` +
                `${pad(`${r.differingFrames}/${r.comparedFrames}`, 9)}`);
@@ -115,4 +116,40 @@ export function formatTable({ scene, frames, width, height, compareEvery, rows }
   lines.push('ms: frame time per demo.frame(1/60) (GPU timer where available, else CPU with a GPU wait); ' +
              'faces/draws/tris: per frame; max diff: largest RGB difference (0..255) from every-frame');
   return lines.join('\n');
+}
+
+// The bench on the page (?bench, the panel's button, demo.runBench): in the session's job queue,
+// with the frame loop held (`hold(true)` ... `hold(false)`), the user's planner settings and time
+// restored afterwards, and the table shown. Resolves to the results.
+export function benchPage(session, { frames = 60, readPixels, hold }) {
+  return session.serial(async () => {
+    await session.lodReady;
+    const { bridge } = session;
+    const saved = { planner: bridge.planner(), time: bridge.time() };
+    const status = document.getElementById('progress');
+    hold(true);
+    try {
+      const results = await runBench({
+        frame: (dt) => session.frame(dt, true),
+        setTime: (t) => bridge.setTime(t),
+        setPlanner: (settings) => bridge.setPlanner(settings),
+        readPixels,
+        scene: () => bridge.scene(),
+      }, { frames, onProgress: (text) => { status.hidden = false; status.textContent = text; } });
+      document.getElementById('bench').textContent = results.table;
+      document.getElementById('bench-box').hidden = false;
+      console.info(results.table);
+      return results;
+    } catch (e) {
+      showMessage(e.message);
+      throw e;
+    } finally {
+      status.hidden = true;
+      status.textContent = '';
+      bridge.setPlanner(saved.planner);
+      bridge.setTime(saved.time);
+      hold(false);
+      session.changed('settings');
+    }
+  });
 }

@@ -1,5 +1,10 @@
 // The user's own models: .obj files (or whole folders) dropped on the page or picked with the
-// file and folder pickers. This module only gathers the files; app.js decides what each one does.
+// file and folder pickers. Each is read (size limit, progress) and either replaces the scene's
+// model of the same name or joins as an orbiting figure (figures.js places it); the session keeps
+// them. File names go through as they are (any length, any characters).
+import { figureObject, freeAngle, takenAngles } from './figures.js';
+import { showMessage } from './messages.js';
+import { MAX_MODEL_BYTES, readFileBytes, tooLargeMessage } from './scene_loader.js';
 
 // Every file in a FileSystemDirectoryEntry, recursively, as { file, path }.
 async function readDirectory(entry) {
@@ -64,4 +69,99 @@ export function sortFiles(files, meshNames) {
     else extra.push(f);
   }
   return { replace, extra, ignored };
+}
+
+// Reads a dropped or picked file (size limit, progress). Resolves to its bytes or null (the
+// problem shown).
+async function readUserFile(f, progress) {
+  if (f.file.size > MAX_MODEL_BYTES) {
+    showMessage(tooLargeMessage(f.path, f.file.size));
+    return null;
+  }
+  try {
+    return await readFileBytes(f.file, progress?.track(f.path));
+  } catch (e) {
+    showMessage(`${f.path}: could not be read (${e.message})`);
+    return null;
+  } finally {
+    progress?.clear();
+  }
+}
+
+// The message for a model that could not be used (the C++ message names the file when it can).
+const failed = (f, error, outcome) => `${error.includes(f.path) ? error : `${f.path}: ${error}`}\n(${outcome})`;
+
+// The user's .obj files: those named like a model of the scene replace it; the others are added
+// as orbiting figures. Resolves to { replaced, added, extra, ignored } (mesh names and paths).
+export function handleFiles(session, files) {
+  return session.serial(async () => {
+    const { bridge, progress } = session;
+    const { replace, extra, ignored } = sortFiles(files, bridge.scene().meshes || []);
+    const list = (fs) => fs.map((f) => f.path).join(', ');
+    if (ignored.length) showMessage(`${list(ignored)}: not .obj files; ignored`, 'info', 8000);
+    const replaced = [], added = [];
+    const replaceWith = (f, mesh, bytes) => {
+      const error = session.replaceModel(f, mesh, bytes);
+      if (error) showMessage(failed(f, error, `keeping the ${mesh} it had`));
+      else replaced.push({ ...f, mesh });
+    };
+    for (const f of replace) {
+      const bytes = await readUserFile(f, progress);
+      if (bytes) replaceWith(f, f.mesh, bytes);
+    }
+    const objects = () => bridge.objects();
+    for (const f of extra) {
+      const bytes = await readUserFile(f, progress);
+      if (!bytes) continue;
+      const base = f.path.split('/').pop();
+      // A second file of the same name (another folder) replaces the figure added before.
+      const known = (bridge.scene().meshes || []).find((m) => m.toLowerCase() === base.toLowerCase());
+      if (known) {
+        replaceWith(f, known, bytes);
+        continue;
+      }
+      const place = (bounds, figures) =>
+        figureObject(base, bounds, freeAngle(takenAngles(objects())), figures.length);
+      const error = session.addFigure(f, base, bytes, place);
+      if (error) showMessage(failed(f, error, 'not added'));
+      else added.push({ ...f, mesh: base });
+    }
+    if (replaced.length || added.length) {
+      showMessage([...replaced.map((f) => `${f.mesh} replaced by ${f.path}`),
+                   ...added.map((f) => `added ${f.path} as an orbiting figure`)].join('\n'), 'info', 5000);
+      await session.modelsChanged([...replaced, ...added].map((f) => f.mesh));
+    }
+    return { replaced: replaced.map((f) => f.mesh), added: added.map((f) => f.mesh),
+             extra: added.map((f) => f.path), ignored: ignored.map((f) => f.path) };
+  });
+}
+
+// Files dropped anywhere on the page, and the two pickers (#file-input, #folder-input).
+export function attachDrop(session) {
+  for (const id of ['file-input', 'folder-input']) {
+    const input = document.getElementById(id);
+    input.addEventListener('change', () => {
+      const files = filesFromList(input.files);
+      input.value = '';
+      handleFiles(session, files);
+    });
+  }
+  const hint = document.getElementById('drop-hint');
+  let depth = 0;
+  window.addEventListener('dragenter', (e) => {
+    if (![...(e.dataTransfer?.types || [])].includes('Files')) return;
+    ++depth;
+    hint.hidden = false;
+  });
+  window.addEventListener('dragleave', () => {
+    depth = Math.max(0, depth - 1);
+    if (!depth) hint.hidden = true;
+  });
+  window.addEventListener('dragover', (e) => { e.preventDefault(); });
+  window.addEventListener('drop', (e) => {
+    e.preventDefault();
+    depth = 0;
+    hint.hidden = true;
+    filesFromDrop(e.dataTransfer).then((files) => handleFiles(session, files));
+  });
 }

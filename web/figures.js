@@ -1,6 +1,6 @@
 // New figures from the user's .obj files (names that are not models of the scene): each becomes
 // an orbiting figure scaled to fit, on a ring around the scene's centre, as a scene-file object
-// entry for rf_add_object.
+// entry (bridge.addObject).
 
 export const FIGURE_SIZE = 1.5;      // world units: the largest extent of the bounding box
 export const RING_RADIUS = 3;        // world units from the origin
@@ -35,11 +35,12 @@ export function freeAngle(taken) {
   return best;
 }
 
-// Angles of the scene file's orbiting objects (from their translate) and of figures added before.
-export function takenAngles(sceneJson, added) {
+// Angles of the scene's orbiting objects (bridge.objects(): { orbits, translate }), the figures
+// added before among them.
+export function takenAngles(objects) {
   const out = [];
-  for (const o of [...(sceneJson?.objects || []), ...added]) {
-    if (o.animation?.type !== 'orbit' || !Array.isArray(o.translate)) continue;
+  for (const o of objects || []) {
+    if (!o.orbits || !Array.isArray(o.translate)) continue;
     const [x, , z] = o.translate;
     if (Math.hypot(x, z) > 0.1) out.push(angleOf(x, z));
   }

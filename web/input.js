@@ -2,8 +2,9 @@
 // the canvas has touch-action: none so a one-finger drag turns the view instead of scrolling, and
 // two fingers pinch to move along the view.
 //
-// actions: drag(dx, dy), move(steps), strafe(steps), rise(steps), reset(), togglePause(),
-// toggleHelp(), closeHelp()
+// actions: drag(dx, dy) in CSS pixels, move(steps) along the view, strafe(steps) to the right,
+// rise(steps) up, reset(), togglePause(), toggleHelp(), closeHelp(). The steps' length and
+// directions are the C++ camera's (LookCamera); this module only turns events into steps.
 
 // Typing in a control moves nothing; Space and Enter on a focused button press the button.
 function isTextField(target) {
@@ -81,13 +82,18 @@ export function attachInput(canvas, actions) {
   });
 }
 
-// The camera's right and forward vectors from yaw and pitch in degrees (the C++ LookCamera's
-// convention: yaw 0 looks down -Z, positive yaw turns left, positive pitch looks up).
-export function cameraBasis(yawDeg, pitchDeg) {
-  const yaw = (yawDeg * Math.PI) / 180, pitch = (pitchDeg * Math.PI) / 180;
-  const view = [-Math.sin(yaw) * Math.cos(pitch), Math.sin(pitch), -Math.cos(yaw) * Math.cos(pitch)];
-  // right = normalize(cross(view, up)) with up = +Y
-  const rx = -view[2], rz = view[0];
-  const length = Math.hypot(rx, rz) || 1;
-  return { view, right: [rx / length, 0, rz / length] };
+// The help overlay that lists the keys: toggle(show = it is hidden) and close() (false when it
+// was not open); its × button closes it.
+export function helpOverlay() {
+  const help = document.getElementById('help-overlay');
+  const toggle = (show = help.hidden) => { help.hidden = !show; };
+  document.getElementById('help-close').onclick = () => toggle(false);
+  return {
+    toggle,
+    close: () => {
+      if (help.hidden) return false;
+      toggle(false);
+      return true;
+    },
+  };
 }

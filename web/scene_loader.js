@@ -4,6 +4,7 @@
 // succeeds the scene on screen stays, so a bad file never costs the user what they had. A user's
 // model that is missing or broken is reported and the built-in one is kept.
 import { showMessage } from './messages.js';
+import { DEFAULT_SCENE } from './url_state.js';
 
 // Models larger than this are refused before they are read (the wasm heap holds the text, the
 // parsed mesh and its levels of detail at once).
@@ -66,45 +67,33 @@ export function readFileBytes(file, onProgress = null) {
   return readStream(file.stream(), file.size, onProgress, 0, file.name);
 }
 
-// Copies bytes into wasm memory for the duration of call(ptr, length).
-export function withBytes(Module, bytes, call) {
-  const ptr = Module._malloc(Math.max(bytes.length, 1));
-  Module.HEAPU8.set(bytes, ptr);
-  try { return call(ptr, bytes.length); } finally { Module._free(ptr); }
-}
-
 export function sceneUrl(nameOrUrl) {
   return /[/:]|\.json$/.test(nameOrUrl) ? nameOrUrl : `scenes/${nameOrUrl}.json`;
 }
 
-// Loads a scene. `overrides` maps a model file name to { bytes, source } the user supplied
-// (dropped files); `progress` is a Progress (or null) that shows the bytes still coming.
-// Returns { title, json } (json: the parsed scene file, for the page's read-only material view).
-// Throws an Error with the message to show when the scene cannot be loaded.
-// `beforeCommit` runs right before the new scene replaces the old one (to carry over what the
-// user did to the old one while the new one was loading).
-export async function loadScene(Module, api, url, {
+// Loads a scene through the bridge (wasm_bridge.js). `overrides` maps a model file name to
+// { bytes, source } the user supplied (dropped files); `progress` is a Progress (or null) that
+// shows the bytes still coming. Returns the scene's title. Throws an Error with the message to
+// show when the scene cannot be loaded. `beforeCommit` runs right before the new scene replaces
+// the old one (to carry over what the user did to the old one while the new one was loading).
+export async function loadScene(bridge, url, {
   userPrefix = null, cubeSize = 0, overrides = null, progress = null, beforeCommit = null,
 } = {}) {
   const track = (name) => (progress ? progress.track(name) : null);
-  const jsonBytes = await fetchBytes(url);
-  const beginError = withBytes(Module, jsonBytes, (ptr, n) => api.beginScene(ptr, n, url));
+  const beginError = bridge.beginScene({ source: url, bytes: await fetchBytes(url) });
   if (beginError) throw new Error(beginError);
-  let json = null;
-  try { json = JSON.parse(new TextDecoder().decode(jsonBytes)); } catch { /* the C side parsed it */ }
-  const files = JSON.parse(api.pendingFiles());
+  const files = bridge.pendingFiles();
+  const load = (name, source, bytes) => bridge.loadMesh({ name, source, bytes, pending: true });
 
   try {
     await Promise.all(files.meshes.map(async (name) => {
       const builtIn = `models/${name}`;
-      const bytes = await fetchBytes(builtIn, { onProgress: track(builtIn), limit: MAX_MODEL_BYTES });
-      const error = withBytes(Module, bytes, (ptr, n) => api.loadMesh(1, name, ptr, n, builtIn));
+      const error = load(name, builtIn, await fetchBytes(builtIn, { onProgress: track(builtIn), limit: MAX_MODEL_BYTES }));
       if (error) throw new Error(error);
       if (userPrefix) {
         const url2 = userPrefix + name;
         try {
-          const user = await fetchBytes(url2, { onProgress: track(url2), limit: MAX_MODEL_BYTES });
-          const userError = withBytes(Module, user, (ptr, n) => api.loadMesh(1, name, ptr, n, url2));
+          const userError = load(name, url2, await fetchBytes(url2, { onProgress: track(url2), limit: MAX_MODEL_BYTES }));
           if (userError) showMessage(`${userError}\n(keeping the built-in ${name})`);
         } catch (e) {
           showMessage(`${e.message}\n(keeping the built-in ${name})`);
@@ -112,14 +101,13 @@ export async function loadScene(Module, api, url, {
       }
       const own = overrides?.get(name);
       if (own) {
-        const ownError = withBytes(Module, own.bytes, (ptr, n) => api.loadMesh(1, name, ptr, n, own.source));
+        const ownError = load(name, own.source, own.bytes);
         if (ownError) showMessage(`${ownError}\n(keeping the built-in ${name})`);
       }
     }));
 
     await Promise.all(files.skybox.map(async (path, index) => {
-      const bytes = await fetchBytes(path, { onProgress: track(path) });
-      const error = withBytes(Module, bytes, (ptr, n) => api.skyboxImage(index, ptr, n, path));
+      const error = bridge.skyboxImage({ index, source: path, bytes: await fetchBytes(path, { onProgress: track(path) }) });
       if (error) throw new Error(error);
     }));
   } finally {
@@ -127,8 +115,21 @@ export async function loadScene(Module, api, url, {
   }
 
   beforeCommit?.();
-  const result = api.commitScene(cubeSize);
-  if (result && !result.startsWith('{')) throw new Error(result);
-  if (result) showMessage(JSON.parse(result).notice, 'info');
-  return { title: files.title, json };
+  const result = bridge.commitScene({ cubeSize });
+  if (result.error) throw new Error(result.error);
+  if (result.notice) showMessage(result.notice, 'info');
+  return files.title;
+}
+
+// The shipped scenes, in the picker's order: scenes/index.json, which the build writes from
+// assets/scenes/*.json (cmake/SceneIndex.cmake). Without it the picker offers the default alone.
+export async function sceneTitles() {
+  try {
+    const response = await fetch('scenes/index.json');
+    if (!response.ok) throw new Error(`${response.status}`);
+    const list = await response.json();
+    return list.map(({ name, title, description }) => ({ name, title: title || name, description: description || '' }));
+  } catch {
+    return [{ name: DEFAULT_SCENE, title: DEFAULT_SCENE, description: '' }];
+  }
 }

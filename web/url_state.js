@@ -1,71 +1,76 @@
-// The page's settings as a URL query, both ways: the address bar mirrors every control
-// (history.replaceState), and opening such a link restores it.
+// The page's settings as a URL query, both ways: the address bar follows every change
+// (history.replaceState), and opening such a link restores it. Settings go by their names in the
+// settings schema (rf_schema_json: the same names as the C++ fields and the CLI's options):
 //
-//   scene=NAME  cube=PIXELS  policy=every-frame|when-changed|time-sliced|every-n  slice=FACES
-//   every=N  lod=TRIANGLES_PER_PIXEL  vlod=TRIANGLES_PER_PIXEL (view LOD)  paused  t=SECONDS (when paused)  cam=x,y,z,yaw,pitch
-//   assets=PREFIX (the user's models by the scene's file names)
-//   acc=ROW (an accuracy mode: a row name of sweep.csv; its cube size unless cube= is given)
-//     or acc=SETTINGS for a combination no row measured: centre,distance-x2,depth-24,mipmapped,RGBA8,highp
-//   mat=INDEX:REFLECTION,BASE,FRESNEL(0|1),IOR[,sky];... (changed materials; INDEX from 0)
-// Not mirrored (one-off actions): bench, frames.
+//   scene=NAME|URL  cube=PIXELS (the capture's face size; default: the scene file's)
+//   policy=…&facesPerFrame=…&everyN=…&captureLod=…&viewLod=…   (the planner's settings)
+//   acc=ROW (a measured accuracy mode: a row name of sweep.csv, with its cube size unless cube=)
+//   captureAtOrigin=…&distanceIterations=…&…   (accuracy settings, written when no row has them)
+//   mat=INDEX:NAME=VALUE,…;…   (changed material settings; INDEX is the object's place from 0)
+//   paused  t=SECONDS (while paused)  cam=x,y,z,yaw,pitch (unless the scene's own)  assets=PREFIX
+// Not written (one-off actions): bench, frames.
 
 export const DEFAULT_SCENE = 'ex12-2';
-export const POLICIES = ['every-frame', 'when-changed', 'time-sliced', 'every-n'];
+
+// Links written before each setting had one name: their keys, read as the new ones (with a
+// message naming the new key).
+const RENAMED = { slice: 'facesPerFrame', every: 'everyN', lod: 'captureLod', vlod: 'viewLod' };
+// The old mat= entries' order: INDEX:REFLECTION,BASE,FRESNEL(0|1),IOR[,sky].
+const OLD_MATERIAL_ORDER = ['reflection', 'base', 'fresnel', 'ior', 'environment'];
 
 const round = (x, digits) => {
   const s = Number(x).toFixed(digits);
   return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
 };
 
-// Returns { state, problems }: state has every key (null where the URL has none), problems lists
-// the values that could not be used (shown to the user).
-export function parseQuery(search) {
-  const params = new URLSearchParams(search);
-  const problems = [];
-  const state = {
-    scene: params.get('scene') || DEFAULT_SCENE,
-    cube: 0, policy: null, slice: null, every: null, lod: null, vlod: null,
-    paused: params.has('paused'), t: null, cam: null,
-    assets: params.get('assets'),
-    bench: params.has('bench'),
-    frames: null,
-    acc: params.get('acc') || null,  // checked against sweep.csv by the page
-    mat: [],
-  };
-  const integer = (key, min, max) => {
-    if (!params.has(key)) return null;
-    const v = Number(params.get(key));
-    if (!Number.isInteger(v) || v < min || v > max) {
-      problems.push(`${key}=${params.get(key)}: expected a whole number from ${min} to ${max}; ignored`);
-      return null;
-    }
-    return v;
-  };
-  const number = (key, min, max) => {
-    if (!params.has(key)) return null;
-    const raw = params.get(key);
-    const v = Number(raw);
-    if (raw.trim() === '' || !Number.isFinite(v) || v < min || v > max) {
-      problems.push(`${key}=${raw}: expected a number from ${min} to ${max}; ignored`);
-      return null;
-    }
-    return v;
-  };
-  if (params.has('cube')) {
-    const v = Number(params.get('cube'));
-    if (!Number.isInteger(v) || v < 1) {
-      problems.push(`cube=${params.get('cube')}: expected a whole number of pixels; using the scene's size`);
-    } else {
-      state.cube = v;
-    }
+// A link's text as the value the schema's kind wants; what is not one stays text, for the C++
+// side to name in its message.
+export function fromText(info, text) {
+  if (!info) return text;
+  if (info.kind === 'integer' || info.kind === 'number') {
+    const v = Number(text);
+    return text.trim() !== '' && Number.isFinite(v) ? v : text;
   }
-  if (params.has('policy')) state.policy = params.get('policy');  // the C side names bad ones
-  state.slice = integer('slice', 1, 6);
-  state.every = integer('every', 1, 1000);
-  state.lod = number('lod', 0, 1000);
-  state.vlod = number('vlod', 0, 1000);
-  state.t = number('t', -1e9, 1e9);
-  state.frames = integer('frames', 1, 100000);
+  if (info.kind === 'flag') {
+    if (['', 'true', '1'].includes(text)) return true;
+    if (['false', '0'].includes(text)) return false;
+  }
+  return text;
+}
+
+function toText(info, value) {
+  if (typeof value === 'number') return round(value, 4);
+  if (typeof value === 'boolean') return value ? 'true' : 'false';
+  return encodeURIComponent(String(value ?? (info ? info.default : '')));
+}
+
+const byName = (list, name) => list.find((info) => info.name === name);
+const changesText = (changes, list) =>
+  Object.entries(changes).map(([k, v]) => `${k}=${toText(byName(list, k), v)}`).join(',');
+
+// Returns { state, problems, notes }: state has every key (null or empty where the link has
+// none); problems are values that cannot be used (shown as errors), notes the old keys read as
+// new ones. `fromDescription(text)` gives the settings of an old acc= settings value, or null.
+export function parseQuery(search, schema, fromDescription) {
+  const params = new URLSearchParams(search);
+  const problems = [], notes = [];
+  const state = {
+    scene: params.get('scene') || DEFAULT_SCENE, cube: 0, paused: params.has('paused'), t: null,
+    cam: null, assets: params.get('assets'), bench: params.has('bench'), frames: null, acc: null,
+    planner: {}, accuracy: {}, materials: [],
+  };
+  const number = (key, ok, expected) => {
+    if (!params.has(key)) return null;
+    const raw = params.get(key), v = Number(raw);
+    if (raw.trim() === '' || !Number.isFinite(v) || !ok(v)) {
+      problems.push(`${key}=${raw}: expected ${expected}; ignored`);
+      return null;
+    }
+    return v;
+  };
+  state.cube = number('cube', (v) => Number.isInteger(v) && v >= 1, "a whole number of pixels (the scene's size stays)") || 0;
+  state.t = number('t', (v) => Math.abs(v) <= 1e9, 'a number of seconds');
+  state.frames = number('frames', (v) => Number.isInteger(v) && v >= 1 && v <= 100000, 'a whole number from 1 to 100000');
   if (params.has('cam')) {
     const parts = params.get('cam').split(',').map(Number);
     if (parts.length !== 5 || parts.some((v) => !Number.isFinite(v))) {
@@ -74,62 +79,97 @@ export function parseQuery(search) {
       state.cam = parts;
     }
   }
-  if (params.has('mat')) {
-    for (const entry of params.get('mat').split(';').filter(Boolean)) {
-      const material = parseMaterialEntry(entry);
-      if (material) state.mat.push(material);
-      else problems.push(`mat=${entry}: expected INDEX:REFLECTION,BASE,FRESNEL(0|1),IOR[,sky]; ignored`);
+  for (const group of ['planner', 'accuracy']) {
+    for (const info of schema[group]) {
+      if (params.has(info.name)) state[group][info.name] = fromText(info, params.get(info.name));
     }
   }
-  return { state, problems };
-}
-
-// "3:0.5,0.3,1,1.52[,sky]" -> { index, reflection, base, fresnel, ior, environment } or null.
-export function parseMaterialEntry(entry) {
-  const m = /^(\d+):(.*)$/.exec(entry);
-  if (!m) return null;
-  const parts = m[2].split(',');
-  if (parts.length < 4 || parts.length > 5) return null;
-  const [reflection, base, fresnel, ior] = parts.slice(0, 4).map(Number);
-  const environment = parts[4] === undefined || parts[4] === 'live' ? 'live' : parts[4] === 'sky' ? 'skybox' : null;
-  if (![reflection, base, ior].every(Number.isFinite) || reflection < 0 || reflection > 4 ||
-      base < 0 || base > 4 || ior < 1 || ior > 4 || (fresnel !== 0 && fresnel !== 1) || !environment) {
-    return null;
+  for (const [old, name] of Object.entries(RENAMED)) {
+    if (!params.has(old)) continue;
+    const value = params.get(old);
+    if (name in state.planner) {
+      notes.push(`${old}=${value}: an old link's key, now ${name}; ignored (the link also has ${name})`);
+      continue;
+    }
+    state.planner[name] = fromText(byName(schema.planner, name), value);
+    notes.push(`${old}=${value}: an old link's key, now ${name}=${value} (applied)`);
   }
-  return { index: Number(m[1]), reflection, base, fresnel: fresnel === 1, ior, environment };
-}
-
-// { index, reflection, base, fresnel, ior, environment } -> "3:0.5,0.3,1,1.52[,sky]".
-export function materialEntry(m) {
-  return `${m.index}:${[round(m.reflection, 3), round(m.base, 3), m.fresnel ? 1 : 0, round(m.ior, 3)].join(',')}` +
-         (m.environment === 'skybox' ? ',sky' : '');
-}
-
-// The query for the page as it is now. `planner` is rf_planner_json's, `camera` rf_camera_json's,
-// `home` the scene's own camera (cam= is left out while the camera is there), `acc` a sweep row
-// name (or null; with it the cube size `faceSize` is written even when the user did not set one,
-// since acc= alone means the row's size), `materials` the changed materials (see materialEntry).
-export function buildQuery({ scene, cube, planner, paused, time, camera, home, assets, acc = null,
-                             materials = [], faceSize = 0 }) {
-  const parts = [`scene=${encodeURIComponent(scene)}`];
-  if (cube || (acc && faceSize)) parts.push(`cube=${cube || faceSize}`);
-  if (planner && planner.policy) {
-    parts.push(`policy=${planner.policy}`);
-    if (planner.policy === 'time-sliced') parts.push(`slice=${planner.facesPerFrame}`);
-    if (planner.policy === 'every-n') parts.push(`every=${planner.everyN}`);
-    if (planner.lod > 0) parts.push(`lod=${round(planner.lod, 3)}`);
-    if (planner.viewLod > 0) parts.push(`vlod=${round(planner.viewLod, 3)}`);
+  const acc = params.get('acc');
+  if (acc && acc.includes(',')) {
+    // The old form of settings no row has: the description's words without spaces.
+    const settings = fromDescription(acc.split(',').map((p) => p.replace(/-/g, ' ')).join(', '));
+    if (!settings) {
+      problems.push(`acc=${acc}: neither a measured accuracy mode nor settings; ignored`);
+    } else {
+      const changed = Object.fromEntries(schema.accuracy.filter((i) => settings[i.name] !== i.default)
+        .map((i) => [i.name, settings[i.name]]));
+      state.accuracy = { ...changed, ...state.accuracy };
+      notes.push(`acc=${acc}: an old link's form, now ${changesText(changed, schema.accuracy).replace(/,/g, '&') || 'the defaults'} (applied)`);
+    }
+  } else if (acc) {
+    state.acc = acc;  // checked against sweep.csv by the page
   }
-  if (paused) {
+  for (const entry of (params.get('mat') || '').split(';').filter(Boolean)) {
+    const m = /^(\d+):(.+)$/.exec(entry);
+    if (!m) {
+      problems.push(`mat=${entry}: expected INDEX:NAME=VALUE,… (${schema.material.map((i) => i.name).join(', ')}); ignored`);
+      continue;
+    }
+    const fields = m[2].split(',');
+    const changes = {};
+    if (!m[2].includes('=')) {  // the old positional form
+      fields.forEach((text, i) => {
+        const name = OLD_MATERIAL_ORDER[i] || `value${i + 1}`;
+        changes[name] = name === 'environment' ? (text === 'sky' ? 'skybox' : text) : fromText(byName(schema.material, name), text);
+      });
+      if (fields.length === 4) changes.environment = 'live';
+      notes.push(`mat=${entry}: an old link's form, now mat=${m[1]}:${changesText(changes, schema.material)} (applied)`);
+    } else {
+      for (const field of fields) {
+        const [name, ...rest] = field.split('=');
+        changes[name] = fromText(byName(schema.material, name), rest.join('='));
+      }
+    }
+    state.materials.push({ index: Number(m[1]), changes, entry });
+  }
+  return { state, problems, notes };
+}
+
+// The query for the page as it is now (Session.linkState): planner settings are written when
+// they are the policy or its parameters, or differ from their default (never a setting the
+// policy does not read); accuracy settings as acc=ROW when a measured row has them (with the
+// cube size), else those that differ from their default.
+export function buildQuery(link, schema) {
+  const parts = [`scene=${encodeURIComponent(link.scene)}`];
+  if (link.cube || (link.acc && link.faceSize)) parts.push(`cube=${link.cube || link.faceSize}`);
+  const planner = link.planner.settings || {};
+  for (const info of schema.planner) {
+    const value = planner[info.name];
+    if (value === undefined || link.planner.unusedSettings?.includes(info.name)) continue;
+    if (info.name === 'policy' || link.planner.policyParameters?.includes(info.name) || value !== info.default) {
+      parts.push(`${info.name}=${toText(info, value)}`);
+    }
+  }
+  if (link.paused) {
     parts.push('paused');
-    if (time !== undefined && time !== null) parts.push(`t=${round(time, 4)}`);
+    if (Number.isFinite(link.time)) parts.push(`t=${round(link.time, 4)}`);
   }
-  if (camera && camera.eye && !sameCamera(camera, home)) {
-    parts.push(`cam=${[...camera.eye.map((v) => round(v, 4)), round(camera.yaw, 3), round(camera.pitch, 3)].join(',')}`);
+  if (link.camera?.eye && !sameCamera(link.camera, link.home)) {
+    const c = link.camera;
+    parts.push(`cam=${[...c.eye.map((v) => round(v, 4)), round(c.yaw, 3), round(c.pitch, 3)].join(',')}`);
   }
-  if (acc) parts.push(`acc=${encodeURIComponent(acc)}`);
-  if (materials.length) parts.push(`mat=${materials.map(materialEntry).join(';')}`);
-  if (assets) parts.push(`assets=${encodeURIComponent(assets)}`);
+  if (link.acc) {
+    parts.push(`acc=${encodeURIComponent(link.acc)}`);
+  } else {
+    for (const info of schema.accuracy) {
+      const value = link.accuracy?.[info.name];
+      if (value !== undefined && value !== info.default) parts.push(`${info.name}=${toText(info, value)}`);
+    }
+  }
+  if (link.materials?.length) {
+    parts.push(`mat=${link.materials.map((m) => `${m.index}:${changesText(m.changes, schema.material)}`).join(';')}`);
+  }
+  if (link.assets) parts.push(`assets=${encodeURIComponent(link.assets)}`);
   return `?${parts.join('&')}`;
 }
 

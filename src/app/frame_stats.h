@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace reflect {
@@ -31,10 +32,8 @@ struct FrameStats {
 
   int drawCalls() const { return captureDrawCalls + mainDrawCalls; }
   size_t triangles() const { return captureTriangles + mainTriangles; }
-  std::string toJson() const;
+  // The numbers by name (demo.stats() in the page); "error" only when there is one.
+  nlohmann::json toJson() const;
 };
-
-// s as a JSON string literal, quotes included.
-std::string jsonQuote(const std::string& s);
 
 }  // namespace reflect

@@ -6,6 +6,7 @@
 
 #include "app/headless_frames.h"
 #include "bench/accuracy.h"
+#include "core/settings_schema.h"
 #include "gfx/offscreen_target.h"
 
 namespace reflect {
@@ -143,18 +144,28 @@ std::string sweepTable(const std::vector<SweepRow>& rows) {
   return out;
 }
 
+namespace {
+
+// A CSV field in quotes, with its quotes doubled.
+std::string csvQuoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+}  // namespace
+
 std::string sweepCsv(const std::vector<SweepRow>& rows) {
   std::string out =
-      "name,setting,face_size,ms,ms_p10,ms_p90,psnr_db,rmse,p95,max,mean_angular_error_deg,"
-      "off_reflector_psnr_db,pareto\n";
-  char line[512];
+      "name,setting,settings,face_size,ms,ms_p10,ms_p90,psnr_db,rmse,p95,max,"
+      "mean_angular_error_deg,off_reflector_psnr_db,pareto\n";
+  char numbers[256];
   for (const SweepRow& r : rows) {
-    std::snprintf(line, sizeof line,
-                  "%s,\"%s\",%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.0f,%.4f,%.3f,%d\n",
-                  r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
-                  r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95, r.maxError,
-                  r.meanAngularErrorDeg, r.offReflectorPsnrDb, r.pareto ? 1 : 0);
-    out += line;
+    std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.0f,%.4f,%.3f,%d\n",
+                  r.setting.faceSize, r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95,
+                  r.maxError, r.meanAngularErrorDeg, r.offReflectorPsnrDb, r.pareto ? 1 : 0);
+    out += r.setting.name + "," + csvQuoted(r.setting.accuracy.describe()) + "," +
+           csvQuoted(settingsJson(r.setting.accuracy, accuracyFields()).dump()) + "," + numbers;
   }
   return out;
 }

@@ -36,4 +36,5 @@ std::string AccuracySettings::describe() const {
   return s;
 }
 
+
 }  // namespace reflect

@@ -1,12 +1,12 @@
-// The accuracy selector: a point on the measured speed/accuracy curve (docs/sweep.csv, copied to
-// the site), its settings applied with rf_set_accuracy and its cube size, and a readout of the
-// expected error from the CSV. Mirrored in the URL as acc=ROW (or acc=SETTINGS, unmeasured).
+// The accuracy selector: a point on the measured speed/accuracy curve (assets/sweep.csv, copied to
+// the site), its settings applied and its cube size, and a readout of the expected error from the
+// CSV. Mirrored in the URL as acc=ROW, or, for settings no row has, as the settings' own keys.
 import { test, expect } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { changedInSphere, collectErrors, expectedSphereBox, openDemo, renderAndRead } from './helpers.mjs';
+import { changedInSphere, collectErrors, expectedSphereBox, idle, messages, openDemo, renderAndRead } from './helpers.mjs';
 
-const CSV = readFileSync(fileURLToPath(new URL('../../docs/sweep.csv', import.meta.url)), 'utf8');
+const CSV = readFileSync(fileURLToPath(new URL('../../assets/sweep.csv', import.meta.url)), 'utf8');
 // name -> { psnr, faceSize } from the CSV (the setting column is quoted and holds commas).
 const ROWS = Object.fromEntries(CSV.trim().split('\n').slice(1).map((line) => {
   const [, name, setting, rest] = /^([^,]+),"([^"]*)",(.*)$/.exec(line);
@@ -35,9 +35,9 @@ test('choosing "original" sets the course settings, changes the reflection and s
   const before = await renderAndRead(page);
 
   await choose(page, 'original');
-  await expect.poll(async () => (await accuracy(page)).origin).toBe(true);
-  expect(await accuracy(page)).toMatchObject({ distance: 0, origin: true, depth: 16, mipmaps: false,
-                                               halfFloat: false, mediump: false,
+  await idle(page);
+  expect(await accuracy(page)).toMatchObject({ distanceIterations: 0, captureAtOrigin: true, depthBits: 16,
+                                               mipmaps: false, halfFloat: false, mediump: false,
                                                describe: ROWS.original.setting });
   const readout = page.locator('#accuracy-readout');
   await expect(readout).toContainText(`original: reflector PSNR ${ROWS.original.psnr.toFixed(2)} dB`);
@@ -52,7 +52,8 @@ test('choosing "original" sets the course settings, changes the reflection and s
 
   // A row with another cube size reloads the scene at that size.
   await choose(page, 'distance-2-size-64');
-  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
   expect((await accuracy(page)).describe).toBe(ROWS['distance-2-size-64'].setting);
   await expect(readout).toContainText('on the Pareto front');
   await expect.poll(() => query(page)).toContain('cube=64&');
@@ -62,32 +63,49 @@ test('choosing "original" sets the course settings, changes the reflection and s
   expect(await page.evaluate(() => window.demo.setAccuracy({ mipmaps: true }))).toBe('');
   await expect(readout).toContainText('not measured');
   await expect.poll(() => select(page).evaluate((s) => s.options[s.selectedIndex].textContent)).toBe('not measured');
-  // No row has these settings: the link carries the settings themselves, and opening it
-  // applies them.
-  const settings = 'centre,distance-x2,depth-24,mipmapped,RGBA8,highp';
-  await expect.poll(() => query(page)).toContain(`&acc=${encodeURIComponent(settings)}`);
+  // No row has these settings: the link carries the settings themselves (those not at their
+  // defaults, by the schema's names), and opening it applies them.
+  await expect.poll(() => query(page)).toBe('?scene=ex12-2&cube=64&policy=every-frame&paused&t=1&mipmaps=true');
   expect(errors).toEqual([]);
 
   await openDemo(page, query(page));
-  expect(await accuracy(page)).toMatchObject({ distance: 2, origin: false, depth: 24, mipmaps: true,
-                                               halfFloat: false, mediump: false });
+  expect(await accuracy(page)).toMatchObject({ distanceIterations: 2, captureAtOrigin: false, depthBits: 24,
+                                               mipmaps: true, halfFloat: false, mediump: false });
   expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
   await expect(readout).toContainText('not measured');
   await expect(page.locator('#messages .message')).toHaveCount(0);
+  expect(await messages(page)).toEqual([]);
   expect(errors).toEqual([]);
 });
 
 test('acc= in a link applies the row; an unknown row is named', async ({ page }) => {
   await openDemo(page, '?paused&acc=original');
-  expect(await accuracy(page)).toMatchObject({ distance: 0, origin: true, depth: 16 });
+  expect(await accuracy(page)).toMatchObject({ distanceIterations: 0, captureAtOrigin: true, depthBits: 16 });
   expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(256);
   await expect(page.locator('#accuracy-readout')).toContainText(`PSNR ${ROWS.original.psnr.toFixed(2)} dB`);
   await expect.poll(() => query(page)).toBe('?scene=ex12-2&cube=256&policy=when-changed&paused&t=0&acc=original');
   // Settings carry over to another scene.
   await page.evaluate(() => window.demo.loadScene('two-mirrors'));
-  expect((await accuracy(page)).origin).toBe(true);
+  expect((await accuracy(page)).captureAtOrigin).toBe(true);
 
   await openDemo(page, '?paused&acc=nonsense');
   await expect(page.locator('#messages .message', { hasText: 'acc=nonsense: not a measured accuracy mode' })).toBeVisible();
   expect((await accuracy(page)).describe).toBe(ROWS.default.setting);
+});
+
+test('the accuracy settings have controls of their own, made from the schema', async ({ page }) => {
+  await openDemo(page, '?paused');
+  const schema = await page.evaluate(() => window.demo.schema().accuracy);
+  for (const info of schema) {
+    await expect(page.locator(`#control-acc-${info.name}`)).toBeAttached();
+    await expect(page.locator(`#control-acc-${info.name} .lil-name`)).toHaveText(info.label);
+  }
+  await page.locator('#accuracy .lil-title', { hasText: 'settings' }).click();
+  await page.locator('#control-acc-mipmaps input').check();
+  await expect.poll(async () => (await accuracy(page)).mipmaps).toBe(true);
+  await expect(page.locator('#accuracy-readout')).toContainText('not measured');
+  await expect.poll(() => query(page)).toContain('&mipmaps=true');
+  // A bad value is named by the C++ side and changes nothing.
+  expect(await page.evaluate(() => window.demo.setAccuracy({ depthBits: 20 }))).toBe('depthBits: 20 is not one of 16, 24');
+  expect((await accuracy(page)).depthBits).toBe(24);
 });

@@ -5,7 +5,9 @@ import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'nod
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { collectErrors, colourSummary, openDemo, readyOutcome, renderAndRead } from './helpers.mjs';
+import {
+  collectErrors, colourSummary, expectMessage, idle, messages, openDemo, readyOutcome, renderAndRead,
+} from './helpers.mjs';
 
 const MODELS = fileURLToPath(new URL('../../assets/models/', import.meta.url));
 const real = (name) => readFileSync(MODELS + name, 'utf8');
@@ -33,19 +35,22 @@ test('dropping mario.obj replaces the model; its levels of detail are rebuilt', 
   expect(await page.evaluate(() => window.demo.lodLevels('mario.obj'))).toEqual([7258, 1814, 560]);
   // sonic's mesh under mario's name: a different, known triangle count.
   await drop(page, [{ name: 'mario.obj', text: real('sonic.obj') }]);
-  await expect(page.locator('#messages .message.info', { hasText: 'mario.obj replaced by mario.obj' })).toBeVisible();
+  await expectMessage(page, 'mario.obj replaced by mario.obj', 'info');
+  await idle(page);
   const after = await triangles(page);
   expect(after).not.toBe(before);
-  await expect.poll(() => page.evaluate(() => window.demo.lodLevels('mario.obj')?.[0])).toBe(5288);
+  expect(await page.evaluate(() => window.demo.lodLevels('mario.obj')?.[0])).toBe(5288);
   expect((await page.evaluate(() => window.demo.lodLevels('mario.obj'))).length).toBeGreaterThan(1);
   // The replacement survives a cube-size reload (the page keeps the user's file).
   await page.locator('#control-cube select').selectOption('128');
-  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
   expect(await triangles(page)).toBe(after);
   // And goes with the built-in-models button.
   await page.locator('#control-files').evaluate((e) => e.closest('.lil-gui').querySelector('.lil-title').click());
   await page.locator('#control-builtin button').click();
-  await expect.poll(() => triangles(page)).toBe(before);
+  await idle(page);
+  expect(await triangles(page)).toBe(before);
   expect(errors).toEqual([]);
 });
 
@@ -68,7 +73,7 @@ test('non-.obj files are reported, not loaded; files over 64 MB are refused unre
   const before = await triangles(page);
   const objects = await page.evaluate(() => window.demo.objects().length);
   await drop(page, [{ name: 'notes.txt', text: 'hello' }]);
-  await expect(page.locator('#messages .message', { hasText: 'notes.txt: not .obj files' })).toBeVisible();
+  await expectMessage(page, 'notes.txt: not .obj files');
   await drop(page, [{ name: 'Sonic.OBJ', size: 65 * 1024 * 1024 }]);
   await expect(page.locator('#messages .message.error', { hasText: 'Sonic.OBJ: 65.0 MB is over the 64 MB limit' })).toBeVisible();
   await drop(page, [{ name: 'teapot.obj', size: 65 * 1024 * 1024 }]);
@@ -94,7 +99,8 @@ test('dropping a new .obj adds it as an orbiting figure scaled to fit', async ({
   const before = await page.evaluate(() => ({ objects: window.demo.objects(), stats: window.demo.frame(0) }));
   const imageBefore = await renderAndRead(page);
   await drop(page, [{ name: 'teapot.obj', text: CUBE }]);
-  await expect(page.locator('#messages .message.info', { hasText: 'added teapot.obj as an orbiting figure' })).toBeVisible();
+  await expectMessage(page, 'added teapot.obj as an orbiting figure', 'info');
+  await idle(page);
   const after = await page.evaluate(() => ({ objects: window.demo.objects(), figures: window.demo.figures() }));
   expect(after.objects.length).toBe(before.objects.length + 1);
   expect(after.objects.at(-1).mesh).toBe('teapot.obj');
@@ -116,15 +122,18 @@ test('dropping a new .obj adds it as an orbiting figure scaled to fit', async ({
   // A second new file goes to another place on the ring; the figures stay through a cube-size
   // reload and go with the built-in-models button.
   await drop(page, [{ name: 'box.obj', text: CUBE }]);
-  await expect(page.locator('#messages .message.info', { hasText: 'added box.obj as an orbiting figure' })).toBeVisible();
+  await expectMessage(page, 'added box.obj as an orbiting figure', 'info');
+  await idle(page);
   const placed = (await page.evaluate(() => window.demo.figures())).map((f) => f.object.translate);
   expect(Math.hypot(placed[0][0] - placed[1][0], placed[0][2] - placed[1][2])).toBeGreaterThan(2);
   await page.locator('#control-cube select').selectOption('128');
-  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
   expect(await page.evaluate(() => window.demo.objects().length)).toBe(before.objects.length + 2);
   await page.locator('#control-files').evaluate((e) => e.closest('.lil-gui').querySelector('.lil-title').click());
   await page.locator('#control-builtin button').click();
-  await expect.poll(() => page.evaluate(() => window.demo.objects().length)).toBe(before.objects.length);
+  await idle(page);
+  expect(await page.evaluate(() => window.demo.objects().length)).toBe(before.objects.length);
 
   // A broken new file is named and nothing is added.
   await drop(page, [{ name: 'broken.obj', text: 'v 0 0 0\nf 1 2 3\n' }]);
@@ -140,7 +149,8 @@ test('the file picker and the folder picker (recursing into sub-folders) replace
   try {
     writeFileSync(join(dir, 'sonic.obj'), CUBE);
     await page.setInputFiles('#file-input', join(dir, 'sonic.obj'));
-    await expect(page.locator('#messages .message', { hasText: 'sonic.obj replaced by sonic.obj' })).toBeVisible();
+    await expectMessage(page, 'sonic.obj replaced by sonic.obj', 'info');
+    await idle(page);
     const sonicAsCube = await triangles(page);
     expect(sonicAsCube).toBeLessThan(base);
 
@@ -149,9 +159,78 @@ test('the file picker and the folder picker (recursing into sub-folders) replace
     writeFileSync(join(folder, 'figures', 'red', 'mario.obj'), CUBE);
     writeFileSync(join(folder, 'readme.txt'), 'not a model');
     await page.setInputFiles('#folder-input', folder);
-    await expect(page.locator('#messages .message', { hasText: 'mario.obj replaced by course/figures/red/mario.obj' })).toBeVisible();
-    await expect(page.locator('#messages .message', { hasText: 'readme.txt: not .obj files' })).toBeVisible();
+    await expectMessage(page, 'mario.obj replaced by course/figures/red/mario.obj', 'info');
+    await expectMessage(page, 'readme.txt: not .obj files');
+    await idle(page);
     expect(await triangles(page)).toBeLessThan(sonicAsCube);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+// File names as users have them: not ASCII, over 1,000 characters, with quotes, backslashes and
+// spaces. They go through the bridge as JSON strings, whole.
+const ODD_NAMES = [
+  'マリオ.obj',
+  'ü.obj',
+  `${'a long name '.repeat(90)}end.obj`,  // 1,087 characters
+  'my "quoted" \\ back\\slashed name\'s file.obj',
+];
+
+test('dropped files keep their names intact: messages, figures and objects carry them whole', async ({ page }) => {
+  const errors = collectErrors(page);
+  expect(ODD_NAMES[2].length).toBeGreaterThan(1000);
+  await openDemo(page, '?paused');
+  const before = await page.evaluate(() => window.demo.objects().length);
+  for (const name of ODD_NAMES) {
+    await drop(page, [{ name, text: CUBE }]);
+    await expectMessage(page, `added ${name} as an orbiting figure`, 'info');
+    await idle(page);
+  }
+  const after = await page.evaluate(() => ({
+    figures: window.demo.figures(), objects: window.demo.objects(), meshes: window.demo.scene().meshes,
+  }));
+  expect(after.figures.map((f) => f.name)).toEqual(ODD_NAMES);
+  expect(after.figures.map((f) => f.source)).toEqual(ODD_NAMES);
+  expect(after.figures.map((f) => f.object.mesh)).toEqual(ODD_NAMES);
+  expect(after.objects.slice(before).map((o) => o.mesh)).toEqual(ODD_NAMES);
+  for (const name of ODD_NAMES) expect(after.meshes).toContain(name);
+  // Each is drawn (12 triangles more each), and the names survive a cube-size reload.
+  await page.locator('#control-cube select').selectOption('128');
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.objects())).slice(before).map((o) => o.mesh)).toEqual(ODD_NAMES);
+
+  // A broken file of such a name is named whole in the error, and nothing is added.
+  const broken = `ü "broken" \\ ${'x'.repeat(1000)}.obj`;
+  await drop(page, [{ name: broken, text: 'v 0 0 0\nf 1 2 3\n' }]);
+  await expectMessage(page, broken, 'error');
+  const message = (await messages(page)).find((m) => m.text.includes(broken));
+  expect(message.text).toContain('not added');
+  expect(await page.evaluate(() => window.demo.objects().length)).toBe(before + ODD_NAMES.length);
+  // Dropping a file of a name already added replaces that figure's mesh, found by its name.
+  await drop(page, [{ name: ODD_NAMES[0], text: real('sonic.obj') }]);
+  await expectMessage(page, `${ODD_NAMES[0]} replaced by ${ODD_NAMES[0]}`, 'info');
+  expect(errors).toEqual([]);
+});
+
+test('picked files and folders keep their names intact', async ({ page }) => {
+  await openDemo(page, '?paused');
+  // The file picker, with names the file system does not hold (given as buffers).
+  for (const name of ODD_NAMES) {
+    await page.setInputFiles('#file-input', { name, mimeType: 'text/plain', buffer: Buffer.from(CUBE) });
+    await expectMessage(page, `added ${name} as an orbiting figure`, 'info');
+    await idle(page);
+  }
+  expect((await page.evaluate(() => window.demo.figures())).map((f) => f.name)).toEqual(ODD_NAMES);
+  // A folder whose name has them: the path in the message is whole. (No backslash here: the
+  // browser itself turns one in a folder name into a / in the file's relative path.)
+  const dir = mkdtempSync(join(tmpdir(), 'reflect-names-'));
+  try {
+    const folder = join(dir, `コース "a" ü ${'f'.repeat(200)}`);
+    mkdirSync(folder);
+    writeFileSync(join(folder, 'mario.obj'), CUBE);
+    await page.setInputFiles('#folder-input', folder);
+    await expectMessage(page, `mario.obj replaced by コース "a" ü ${'f'.repeat(200)}/mario.obj`, 'info');
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }

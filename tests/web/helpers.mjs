@@ -29,6 +29,24 @@ export async function openDemo(page, query = '?paused') {
   await page.evaluate(() => window.demo.ready);
 }
 
+// Resolves once the page's job queue (scene loads, model changes, the bench) is empty.
+export async function idle(page) {
+  await page.evaluate(() => window.demo.idle());
+}
+
+// Every message the page has shown ([{ text, kind }]), also those that have gone by themselves.
+export function messages(page) {
+  return page.evaluate(() => window.demo.messages());
+}
+
+// Waits until the page has shown a message containing `text` (of `kind`, when given): from the
+// message history, so a message that removes itself after a few seconds is not missed.
+export async function expectMessage(page, text, kind = null) {
+  await expect.poll(async () => (await messages(page))
+    .some((m) => m.text.includes(text) && (!kind || m.kind === kind)), { message: `a message with "${text}"` })
+    .toBe(true);
+}
+
 // The settled outcome of demo.ready: 'resolved' or 'rejected: <message>'.
 export async function readyOutcome(page) {
   await page.waitForFunction(() => window.demo !== undefined);

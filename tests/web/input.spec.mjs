@@ -186,7 +186,7 @@ test('A / D strafe and Q / E go down / up by 0.1, also when turned', async ({ pa
 
 test('keys typed into a panel field move nothing', async ({ page }) => {
   await openDemo(page, '?paused');
-  const field = page.locator('#control-lod input');
+  const field = page.locator('#control-captureLod input');
   await field.focus();
   for (const key of ['w', 'a', 's', 'd', 'q', 'e', 'r', ' ', 'ArrowUp']) await field.press(key);
   expect(await camera(page)).toEqual({ eye: [0, 1, 7], yaw: 0, pitch: 0 });

@@ -6,8 +6,11 @@ test('the stats line and the sparkline follow the running demo', async ({ page }
   await openDemo(page, '?t=0');
   const stats = page.locator('#stats');
   await expect(stats).toHaveText(/fps/);
+  // Frames come as the display loop runs; how many in a given time depends on the machine, so
+  // the test waits (with a long limit) for a couple more, not for a number in a time.
   const first = await page.evaluate(() => window.demo.sparkSamples());
-  await expect.poll(() => page.evaluate(() => window.demo.sparkSamples())).toBeGreaterThan(first + 5);
+  await expect.poll(() => page.evaluate(() => window.demo.sparkSamples()), { timeout: 30_000 })
+    .toBeGreaterThanOrEqual(first + 2);
   // The line names which timer its numbers come from.
   const s = await page.evaluate(() => window.demo.stats());
   const label = s.gpuFrameMs >= 0 ? 'gpu' : 'cpu';
@@ -15,7 +18,7 @@ test('the stats line and the sparkline follow the running demo', async ({ page }
   expect(s.time).toBeGreaterThan(0);
   // The line changes as the demo runs (the triangle and face counts of a moving scene, the fps).
   const a = await stats.textContent();
-  await expect.poll(() => stats.textContent(), { timeout: 5000 }).not.toBe(a);
+  await expect.poll(() => stats.textContent(), { timeout: 30_000 }).not.toBe(a);
   // The sparkline has drawn something.
   const inked = await page.evaluate(() => {
     const c = document.getElementById('spark');

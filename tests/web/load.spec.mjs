@@ -42,9 +42,20 @@ test('stats line shows fps, faces, draws and triangles; demo.stats() has the cou
   const stats = page.locator('#stats');
   // Two lines: timings (GPU timer queries where the browser has them, else CPU), then counts.
   await expect(stats).toHaveText(/^\d+ fps · frame \d+\.\d ms · (cpu|gpu) \d+\.\d\d ms \(capture \d+\.\d\d\)\n\d faces · \d+ draws · \d+\.\dk tris · paused$/);
-  // Paused, every rAF frame draws the same thing, so the line and demo.stats() agree.
-  const text = await stats.textContent();
-  const loop = await page.evaluate(() => window.demo.stats());
+  // The line is redrawn at most every 250 ms, from the frame drawn then; read it together with
+  // demo.stats() (in one task) until both come from a frame of the same counts.
+  const sample = () => page.evaluate(() => ({
+    text: document.getElementById('stats').textContent, loop: window.demo.stats(),
+  }));
+  const agree = ({ text, loop }) => text.includes(`\n${loop.facesCaptured} faces · ${loop.drawCalls} draws · `) &&
+                                     text.includes(`${(loop.triangles / 1000).toFixed(1)}k tris`);
+  let agreed = null;
+  await expect.poll(async () => {
+    const now = await sample();
+    if (agree(now)) agreed = now;
+    return agreed !== null;
+  }).toBe(true);
+  const { text, loop } = agreed;
   const [, fps, frameMs] = text.match(/^(\d+) fps · frame ([\d.]+) ms/);
   expect(Number(fps)).toBeGreaterThan(0);
   expect(Number(frameMs)).toBeLessThan(5000);

@@ -24,13 +24,13 @@ test('LOD levels are built for every mesh after the scene loads, by the native r
   await expect(page.locator('#control-lod-levels input')).toHaveValue(/mario 3/);
 });
 
-test('with lod=0.5 the capture draws fewer triangles than with lod=0 (skybox scene)', async ({ page }) => {
-  await openDemo(page, '?paused&scene=skybox&lod=0.25');
-  expect((await page.evaluate(() => window.demo.planner())).lod).toBe(0.25);
+test('with captureLod=0.5 the capture draws fewer triangles than with captureLod=0 (skybox scene)', async ({ page }) => {
+  await openDemo(page, '?paused&scene=skybox&captureLod=0.25');
+  expect((await page.evaluate(() => window.demo.planner())).captureLod).toBe(0.25);
   await page.evaluate(() => window.demo.lodReady());
   // A new LOD setting makes when-changed recapture every face, so both frames capture all of them.
   const captureTriangles = (lod) => page.evaluate((l) => {
-    window.demo.setPlanner('when-changed', 2, 4, l);
+    window.demo.setPlanner({ policy: 'when-changed', captureLod: l });
     window.demo.setTime(1);
     return window.demo.frame(0);
   }, lod);
@@ -42,22 +42,22 @@ test('with lod=0.5 the capture draws fewer triangles than with lod=0 (skybox sce
     .toBeLessThan(full.captureTriangles * 0.75);
 });
 
-test('view LOD draws the figures with fewer triangles in the main pass; vlod= is in the URL', async ({ page }) => {
+test('view LOD draws the figures with fewer triangles in the main pass; viewLod= is in the URL', async ({ page }) => {
   const errors = collectErrors(page);
   // The default scene's figures are light (12k triangles in all): at 0.5 triangles per pixel
   // they keep full detail, so ask for 0.05.
-  await openDemo(page, '?paused&t=1&vlod=0.05');
+  await openDemo(page, '?paused&t=1&viewLod=0.05');
   expect((await page.evaluate(() => window.demo.planner())).viewLod).toBe(0.05);
   await page.evaluate(() => window.demo.lodReady());
   const coarse = await renderAndRead(page);
-  await expect.poll(() => new URL(page.url()).search).toContain('vlod=0.05');
-  await page.evaluate(() => window.demo.setPlanner('when-changed', 2, 4, 0, 0));
+  await expect.poll(() => new URL(page.url()).search).toContain('viewLod=0.05');
+  expect(await page.evaluate(() => window.demo.setPlanner({ captureLod: 0, viewLod: 0 }))).toBe('');
   const full = await renderAndRead(page);
   expect(coarse.stats.mainTriangles, `main triangles ${coarse.stats.mainTriangles} vs ${full.stats.mainTriangles}`)
     .toBeLessThan(full.stats.mainTriangles * 0.75);
   // The picture changes little: the figures are small on screen.
   expect(countChanged(full, coarse, 16) / (full.width * full.height)).toBeLessThan(0.02);
-  await expect.poll(() => new URL(page.url()).search).not.toContain('vlod=');
+  await expect.poll(() => new URL(page.url()).search).not.toContain('viewLod=');
   expect(errors).toEqual([]);
 });
 
@@ -74,12 +74,12 @@ test('?bench runs every policy and prints the table; when-changed matches every-
     ['every-frame', 'when-changed', 'when-changed+LOD 0.5', 'when-changed+LOD+view 0.5', 'time-sliced 2',
      'every-n 4']);
   const row = Object.fromEntries(results.rows.map((r) => [r.label, r]));
-  expect(row['every-frame'].facesPerFrame).toBe(6);
+  expect(row['every-frame'].facesCapturedPerFrame).toBe(6);
   expect(row['every-frame'].drawCallsPerFrame).toBe(22);
   expect(row['when-changed'].maxDiff).toBe(0);
   expect(row['when-changed'].comparedFrames).toBe(8);
-  expect(row['time-sliced 2'].facesPerFrame).toBeLessThanOrEqual(2);
-  expect(row['every-n 4'].facesPerFrame).toBeLessThan(6);
+  expect(row['time-sliced 2'].facesCapturedPerFrame).toBeLessThanOrEqual(2);
+  expect(row['every-n 4'].facesCapturedPerFrame).toBeLessThan(6);
   expect(row['every-n 4'].maxDiff).toBeGreaterThan(0);  // stale faces show
   for (const r of results.rows) {
     expect(r.frameMs.median).toBeGreaterThan(0);

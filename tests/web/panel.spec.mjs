@@ -4,7 +4,7 @@ import { test, expect } from '@playwright/test';
 import { readFileSync, readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { decodePng } from './png.mjs';
-import { collectErrors, colourSummary, openDemo, renderAndRead } from './helpers.mjs';
+import { collectErrors, colourSummary, idle, openDemo, renderAndRead } from './helpers.mjs';
 
 const SCENE_DIR = fileURLToPath(new URL('../../assets/scenes/', import.meta.url));
 const SHIPPED = readdirSync(SCENE_DIR).filter((f) => f.endsWith('.json')).map((f) => f.replace(/\.json$/, ''));
@@ -19,48 +19,56 @@ test('the update policy select, its parameters and the LOD slider set the planne
   expect((await planner(page)).policy).toBe('when-changed');
   await expect(page.locator('#control-staleness input')).toHaveValue('none: always current');
   // Parameters show only with their policy.
-  await expect(page.locator('#control-slice')).toBeHidden();
-  await expect(page.locator('#control-every')).toBeHidden();
+  await expect(page.locator('#control-facesPerFrame')).toBeHidden();
+  await expect(page.locator('#control-everyN')).toBeHidden();
 
   await select(page, 'control-policy').selectOption('time-sliced');
   await expect.poll(async () => (await planner(page)).policy).toBe('time-sliced');
-  await expect(page.locator('#control-slice')).toBeVisible();
-  await page.locator('#control-slice input').fill('3');
-  await page.locator('#control-slice input').press('Enter');
+  await expect(page.locator('#control-facesPerFrame')).toBeVisible();
+  await page.locator('#control-facesPerFrame input').fill('3');
+  await page.locator('#control-facesPerFrame input').press('Enter');
   await expect.poll(async () => (await planner(page)).facesPerFrame).toBe(3);
   await expect(page.locator('#control-staleness input')).toHaveValue('up to 1 frame behind');
   let s = await page.evaluate(() => window.demo.frame(1 / 60));
   expect(s.facesCaptured).toBeLessThanOrEqual(3);
 
-  await select(page, 'control-policy').selectOption('every N frames');
+  await select(page, 'control-policy').selectOption('every-n');
   await expect.poll(async () => (await planner(page)).policy).toBe('every-n');
-  await expect(page.locator('#control-slice')).toBeHidden();
-  await page.locator('#control-every input').fill('5');
-  await page.locator('#control-every input').press('Enter');
+  await expect(page.locator('#control-facesPerFrame')).toBeHidden();
+  await page.locator('#control-everyN input').fill('5');
+  await page.locator('#control-everyN input').press('Enter');
   await expect.poll(async () => (await planner(page)).everyN).toBe(5);
   await expect(page.locator('#control-staleness input')).toHaveValue('up to 4 frames behind');
+  // A value out of the schema's range is named, and the control shows the value kept.
+  await page.locator('#control-everyN input').fill('5000');
+  await page.locator('#control-everyN input').press('Enter');
+  await expect(page.locator('#messages .message.error', { hasText: 'everyN: 5000 is not in 1..1000' })).toBeVisible();
+  await expect(page.locator('#control-everyN input')).toHaveValue('5');
+  expect((await planner(page)).everyN).toBe(5);
 
-  await select(page, 'control-policy').selectOption('every frame');
+  await select(page, 'control-policy').selectOption('every-frame');
   await expect.poll(async () => (await planner(page)).policy).toBe('every-frame');
   s = await page.evaluate(() => window.demo.frame(1 / 60));
   expect(s.facesCaptured).toBe(6);
 
-  await page.locator('#control-lod input').fill('0.5');
-  await page.locator('#control-lod input').press('Enter');
-  await expect.poll(async () => (await planner(page)).lod).toBe(0.5);
+  await page.locator('#control-captureLod input').fill('0.5');
+  await page.locator('#control-captureLod input').press('Enter');
+  await expect.poll(async () => (await planner(page)).captureLod).toBe(0.5);
 });
 
 test('cube size reloads the scene with that face size and keeps the view and time', async ({ page }) => {
   await openDemo(page, '?paused&t=1.5');
   await page.evaluate(() => window.demo.setCamera(0.5, 1.2, 6, 10, -5));
   await select(page, 'control-cube').selectOption('128');
-  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
   const after = await page.evaluate(() => ({ camera: window.demo.camera(), stats: window.demo.stats() }));
   expect(after.camera.eye[0]).toBeCloseTo(0.5, 4);
   expect(after.camera.yaw).toBeCloseTo(10, 3);
   expect(after.stats.time).toBeCloseTo(1.5, 6);
   await select(page, 'control-cube').selectOption('512');
-  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(512);
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(512);
   await expect(select(page, 'control-cube')).toHaveValue('512');
 });
 
@@ -74,7 +82,8 @@ test('the scene picker loads every shipped scene: its name, a picture, no errors
     const title = JSON.parse(readFileSync(`${SCENE_DIR}${name}.json`, 'utf8')).title;
     expect(options, `the picker lists "${title}"`).toContain(title);
     await select(page, 'control-scene').selectOption(title);
-    await expect.poll(() => page.evaluate(() => window.demo.scene().name), { timeout: 15_000 }).toBe(name);
+    await idle(page);
+    expect(await page.evaluate(() => window.demo.scene().name)).toBe(name);
     const image = await renderAndRead(page, 1);
     const { distinct } = colourSummary(image);
     expect(distinct, `${name}: distinct colours`).toBeGreaterThan(100);

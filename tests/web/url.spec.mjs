@@ -1,7 +1,7 @@
 // The URL mirrors every control (history.replaceState), and opening such a link restores the
 // scene, the capture settings, the camera and the paused time.
 import { test, expect } from '@playwright/test';
-import { openDemo } from './helpers.mjs';
+import { expectMessage, idle, messages, openDemo } from './helpers.mjs';
 
 const query = (page) => new URL(page.url()).search;
 
@@ -10,13 +10,14 @@ test('the address bar follows the controls, the camera and the time', async ({ p
   await expect.poll(() => query(page)).toBe('?scene=ex12-2&policy=when-changed&paused&t=1');
 
   await page.locator('#control-policy select').selectOption('time-sliced');
-  await expect.poll(() => query(page)).toContain('policy=time-sliced&slice=2');
-  await page.locator('#control-lod input').fill('0.25');
-  await page.locator('#control-lod input').press('Enter');
-  await expect.poll(() => query(page)).toContain('&lod=0.25');
+  await expect.poll(() => query(page)).toContain('policy=time-sliced&facesPerFrame=2');
+  await page.locator('#control-captureLod input').fill('0.25');
+  await page.locator('#control-captureLod input').press('Enter');
+  await expect.poll(() => query(page)).toContain('&captureLod=0.25');
   await page.locator('#control-cube select').selectOption('64');
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
   await expect.poll(() => query(page)).toContain('&cube=64&');
-  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
 
   // A drag and a key press move the camera: cam=x,y,z,yaw,pitch appears.
   await page.mouse.move(300, 300);
@@ -35,27 +36,28 @@ test('the address bar follows the controls, the camera and the time', async ({ p
 
   // Another scene: its own camera again, so no cam=.
   await page.evaluate(() => window.demo.loadScene('two-mirrors'));
-  await expect.poll(() => query(page)).toMatch(/^\?scene=two-mirrors&cube=64&policy=time-sliced&slice=2&lod=0\.25&paused&t=0$/);
+  await expect.poll(() => query(page)).toMatch(/^\?scene=two-mirrors&cube=64&policy=time-sliced&facesPerFrame=2&captureLod=0\.25&paused&t=0$/);
 });
 
 test('opening a copied link restores scene, cube, policy, camera and time', async ({ page, context }) => {
   await context.grantPermissions(['clipboard-read', 'clipboard-write']);
   await openDemo(page, '?scene=ex12-2');
   await page.evaluate(() => window.demo.loadScene('skybox'));
-  await page.locator('#control-policy select').selectOption('every N frames');
-  await page.locator('#control-every input').fill('3');
-  await page.locator('#control-every input').press('Enter');
+  await page.locator('#control-policy select').selectOption('every-n');
+  await page.locator('#control-everyN input').fill('3');
+  await page.locator('#control-everyN input').press('Enter');
   await page.locator('#control-cube select').selectOption('128');
-  await expect.poll(async () => (await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(128);
   await page.evaluate(() => window.demo.setCamera(1.25, 1.5, 5, 20, -12.5));
   await page.locator('#control-paused input').check();
   await page.evaluate(() => window.demo.setTime(2.5));
-  // The copy-link button (in its folder).
+  // The copy-link button (in its folder). No frame has run since setTime: the link reads the clock.
   await page.locator('#control-link button').click();
-  await expect(page.locator('#messages .message.info', { hasText: 'Link copied' })).toBeVisible();
+  await expectMessage(page, 'Link copied', 'info');
   const link = await page.evaluate(() => navigator.clipboard.readText());
-  expect(link).toBe(page.url());
-  expect(new URL(link).search).toBe('?scene=skybox&cube=128&policy=every-n&every=3&paused&t=2.5&cam=1.25,1.5,5,20,-12.5');
+  await expect.poll(() => page.url()).toBe(link);
+  expect(new URL(link).search).toBe('?scene=skybox&cube=128&policy=every-n&everyN=3&paused&t=2.5&cam=1.25,1.5,5,20,-12.5');
 
   const other = await context.newPage();
   await openDemo(other, new URL(link).search);
@@ -75,7 +77,7 @@ test('opening a copied link restores scene, cube, policy, camera and time', asyn
   expect(restored.camera.pitch).toBeCloseTo(-12.5, 3);
   // The panel shows the restored settings.
   await expect(other.locator('#control-scene select')).toHaveValue('Skybox: static environment mapping');
-  await expect(other.locator('#control-policy select')).toHaveValue('every N frames');
+  await expect(other.locator('#control-policy select')).toHaveValue('every-n');
   await expect(other.locator('#control-paused input')).toBeChecked();
   await expect.poll(() => new URL(other.url()).search).toBe(new URL(link).search);
 });
@@ -91,9 +93,55 @@ test('without a clipboard, copy link shows the link to copy by hand', async ({ p
 });
 
 test('bad values in the URL are named and the rest still applies', async ({ page }) => {
-  await openDemo(page, '?paused&scene=ex12-1&slice=9&cam=1,2&policy=every-frame');
-  await expect(page.locator('#messages .message', { hasText: 'slice=9' })).toBeVisible();
+  await openDemo(page, '?paused&scene=ex12-1&facesPerFrame=9&cam=1,2&policy=every-frame&mipmaps=maybe');
+  await expect(page.locator('#messages .message', { hasText: 'facesPerFrame: 9 is not in 1..6' })).toBeVisible();
+  await expect(page.locator('#messages .message', { hasText: 'mipmaps: "maybe" is not true or false' })).toBeVisible();
   await expect(page.locator('#messages .message', { hasText: 'cam=1,2' })).toBeVisible();
   expect(await page.evaluate(() => window.demo.scene().name)).toBe('ex12-1');
   expect((await page.evaluate(() => window.demo.planner())).policy).toBe('every-frame');
+});
+
+test('every planner and accuracy setting goes by its schema name, both ways', async ({ page }) => {
+  const schema = await (async () => {
+    await openDemo(page, '?paused');
+    return page.evaluate(() => window.demo.schema());
+  })();
+  expect(schema.planner.map((i) => i.name)).toEqual(['policy', 'facesPerFrame', 'everyN', 'captureLod', 'viewLod']);
+  await openDemo(page, '?paused&policy=time-sliced&facesPerFrame=3&everyN=7&captureLod=0.5&viewLod=0.25' +
+                       '&distanceIterations=4&mipmaps=true&halfFloat');
+  expect(await page.evaluate(() => window.demo.planner())).toMatchObject(
+    { policy: 'time-sliced', facesPerFrame: 3, everyN: 7, captureLod: 0.5, viewLod: 0.25 });
+  expect(await page.evaluate(() => window.demo.accuracy())).toMatchObject(
+    { distanceIterations: 4, mipmaps: true, halfFloat: true, captureAtOrigin: false, depthBits: 24 });
+  // everyN does nothing under time-sliced: not in the link; settings at their defaults neither.
+  expect(await page.evaluate(() => window.demo.query())).toBe(
+    '?scene=ex12-2&policy=time-sliced&facesPerFrame=3&captureLod=0.5&viewLod=0.25&paused&t=0' +
+    '&distanceIterations=4&mipmaps=true&halfFloat=true');
+  // The panel's labels are the schema's.
+  for (const info of schema.planner) {
+    await expect(page.locator(`#control-${info.name} .lil-name`)).toHaveText(info.label);
+  }
+  expect(await messages(page)).toEqual([]);
+});
+
+test("an old link's keys are read as the new ones, each with a message naming it", async ({ page }) => {
+  await openDemo(page, '?paused&policy=time-sliced&slice=3&lod=0.5&vlod=0.25' +
+                       '&acc=centre,distance-x2,depth-24,mipmapped,RGBA8,highp&mat=3:0.3,0.3,1,1.52');
+  expect(await page.evaluate(() => window.demo.planner())).toMatchObject(
+    { policy: 'time-sliced', facesPerFrame: 3, captureLod: 0.5, viewLod: 0.25 });
+  expect(await page.evaluate(() => window.demo.accuracy())).toMatchObject({ distanceIterations: 2, mipmaps: true });
+  expect(await page.evaluate(() => window.demo.objects()[3].material)).toMatchObject(
+    { reflection: 0.3, base: 0.3, fresnel: true, ior: 1.52, environment: 'live' });
+  const notes = (await messages(page)).map((m) => m.text);
+  for (const expected of ['slice=3: an old link\'s key, now facesPerFrame=3', 'lod=0.5: an old link\'s key, now captureLod=0.5',
+                          'vlod=0.25: an old link\'s key, now viewLod=0.25',
+                          'acc=centre,distance-x2,depth-24,mipmapped,RGBA8,highp: an old link\'s form, now mipmaps=true',
+                          'mat=3:0.3,0.3,1,1.52: an old link\'s form, now mat=3:reflection=0.3,base=0.3,fresnel=true,ior=1.52']) {
+    expect(notes.filter((n) => n.startsWith(expected)), expected).toHaveLength(1);
+  }
+  for (const note of notes) expect(note).not.toContain('\n');  // one line each
+  // The address bar has the new keys only.
+  await expect.poll(() => query(page)).toBe(
+    '?scene=ex12-2&policy=time-sliced&facesPerFrame=3&captureLod=0.5&viewLod=0.25&paused&t=0&mipmaps=true' +
+    '&mat=3:reflection=0.3,fresnel=true');
 });

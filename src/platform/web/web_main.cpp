@@ -1,32 +1,21 @@
-// The browser entry point: a WebGL2 context on #canvas and the C functions the page calls for
-// frames and input (web/app.js drives the loop, input and file loading; this file owns no
-// policy). Scene loading is in web_scenes.cpp.
+// The browser entry point: a WebGL2 context on #canvas, and the exports for frames, the clock and
+// the camera. The page (web/wasm_bridge.js) calls them; every rule lives here or below (the
+// camera's moves are LookCamera's). Scene loading is in web_scenes.cpp, the settings in
+// web_settings.cpp.
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 
-#include <cstdio>
 #include <string>
 
 #include "gfx/gl.h"
 #include "platform/web/web_state.h"
 
-namespace reflect::web {
-
-WebState& state() {
-  static WebState s;
-  return s;
-}
-
-const char* returnText(std::string text) {
-  state().returnText = std::move(text);
-  return state().returnText.c_str();
-}
-
-}  // namespace reflect::web
-
 namespace {
 
-using reflect::web::returnText;
+using nlohmann::json;
+using reflect::web::parseRequest;
+using reflect::web::reply;
+using reflect::web::replyError;
 using reflect::web::state;
 
 constexpr const char* kCanvas = "#canvas";
@@ -63,89 +52,91 @@ EM_BOOL onContextRestored(int, const void*, void*) {
   return EM_TRUE;
 }
 
+json cameraJson(const reflect::LookCamera& c) {
+  return {{"eye", {c.eye().x, c.eye().y, c.eye().z}}, {"yaw", c.yawDeg()}, {"pitch", c.pitchDeg()}};
+}
+
 }  // namespace
 
 extern "C" {
 
-// Creates the WebGL2 context. Returns "" or an error message for the page.
+// Creates the WebGL2 context. {} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* rf_create() {
   std::string error = makeContextCurrent();
-  if (!error.empty()) return returnText(error);
+  if (!error.empty()) return replyError(error);
   emscripten_set_webglcontextlost_callback(kCanvas, nullptr, EM_FALSE, onContextLost);
   emscripten_set_webglcontextrestored_callback(kCanvas, nullptr, EM_FALSE, onContextRestored);
-  return returnText("");
+  return replyError("");
 }
 
-// One complete frame into the canvas's drawing buffer, as JSON stats (see FrameStats).
-// waitForGpu: time it end to end (a read back after each pass).
-EMSCRIPTEN_KEEPALIVE const char* rf_frame(double dtSeconds, int waitForGpu) {
-  if (!state().demo) return returnText("{}");
+// One complete frame into the canvas's drawing buffer: {"dt": seconds, "waitForGpu": bool} (time
+// it end to end, a read back after each pass). Returns the frame's stats (see FrameStats).
+EMSCRIPTEN_KEEPALIVE const char* rf_frame(const char* request) {
+  auto r = parseRequest(request, "rf_frame");
+  if (!r) return replyError(r.error());
+  if (!state().demo) return reply(json::object());
+  std::string error;
+  const reflect::JsonReader in(r.value(), "", &error);
+  const double dt = in["dt"].number(0, 0, 1e6);
+  const bool wait = in["waitForGpu"].boolean(false);
+  if (!error.empty()) return replyError("rf_frame: " + error);
   // The drawing buffer, not the canvas element: past the GPU's limits (a wide canvas at a high
   // devicePixelRatio) the browser gives a smaller buffer, and drawing at the element's size
   // would crop the picture.
   int width = 0, height = 0;
   emscripten_webgl_get_drawing_buffer_size(state().context, &width, &height);
-  return returnText(state().demo->frame(dtSeconds, 0, width, height, waitForGpu != 0).toJson());
+  return reply(state().demo->frame(dt, 0, width, height, wait).toJson());
 }
 
-EMSCRIPTEN_KEEPALIVE void rf_set_time(double seconds) {
-  if (state().demo) state().demo->clock().set(seconds);
-}
-EMSCRIPTEN_KEEPALIVE void rf_drag(float dx, float dy, float canvasHeight) {
-  if (state().demo) state().demo->camera().drag(dx, dy, canvasHeight);
-}
-EMSCRIPTEN_KEEPALIVE void rf_move(float steps) {
-  if (state().demo) state().demo->camera().move(steps);
-}
-EMSCRIPTEN_KEEPALIVE void rf_reset_camera() {
-  if (state().demo) state().demo->camera().reset();
-}
-EMSCRIPTEN_KEEPALIVE void rf_set_camera(float x, float y, float z, float yawDeg, float pitchDeg) {
-  if (!state().demo) return;
-  state().demo->camera().setEye({x, y, z});
-  state().demo->camera().setAngles(yawDeg, pitchDeg);
-}
-
-// {"eye":[x,y,z],"yaw":deg,"pitch":deg}
-EMSCRIPTEN_KEEPALIVE const char* rf_camera_json() {
-  if (!state().demo) return returnText("{}");
-  const reflect::LookCamera& c = state().demo->camera();
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "{\"eye\":[%.5f,%.5f,%.5f],\"yaw\":%.5f,\"pitch\":%.5f}",
-                c.eye().x, c.eye().y, c.eye().z, c.yawDeg(), c.pitchDeg());
-  return returnText(buffer);
-}
-
-// Capture planning: policy by name ("every-frame", "when-changed", "time-sliced", "every-n"),
-// faces per frame for time-sliced, N for every-n, capture and view LOD triangles per pixel
-// (0 = off). Returns "" or an error for an unknown policy.
-EMSCRIPTEN_KEEPALIVE const char* rf_set_planner(const char* policy, int facesPerFrame, int everyN,
-                                                double captureLod, double viewLod) {
-  if (!state().demo) return returnText("no scene loaded");
-  reflect::PlannerSettings settings = state().demo->plannerSettings();
-  if (!reflect::parsePolicy(policy, &settings.policy)) {
-    return returnText(std::string("unknown update policy '") + policy + "'");
+// The animation clock: {"seconds": t} sets it; returns {"seconds": now}.
+EMSCRIPTEN_KEEPALIVE const char* rf_clock(const char* request) {
+  auto r = parseRequest(request, "rf_clock");
+  if (!r) return replyError(r.error());
+  if (!state().demo) return reply({{"seconds", 0}});
+  std::string error;
+  const reflect::JsonReader in(r.value(), "", &error);
+  if (in.has("seconds")) {
+    const double seconds = in["seconds"].number(0, -1e9, 1e9);
+    if (!error.empty()) return replyError(error);
+    state().demo->clock().set(seconds);
   }
-  settings.facesPerFrame = facesPerFrame;
-  settings.everyN = everyN;
-  settings.captureLod = static_cast<float>(captureLod);
-  settings.viewLod = static_cast<float>(viewLod);
-  state().demo->setPlannerSettings(settings);
-  return returnText("");
+  return reply({{"seconds", state().demo->clock().seconds()}});
 }
 
-// {"policy":..., "facesPerFrame":..., "everyN":..., "lod":..., "viewLod":...,
-//  "maxStalenessFrames":...}
-EMSCRIPTEN_KEEPALIVE const char* rf_planner_json() {
-  if (!state().demo) return returnText("{}");
-  const reflect::PlannerSettings& s = state().demo->plannerSettings();
-  char buffer[200];
-  std::snprintf(buffer, sizeof buffer,
-                "{\"policy\":\"%s\",\"facesPerFrame\":%d,\"everyN\":%d,\"lod\":%g,"
-                "\"viewLod\":%g,\"maxStalenessFrames\":%d}",
-                reflect::policyName(s.policy), s.facesPerFrame, s.everyN, s.captureLod, s.viewLod,
-                s.maxStalenessFrames());
-  return returnText(buffer);
+// The main camera, changed by the request's keys in this order (each optional):
+//   "reset": true                          the scene's own camera
+//   "eye": [x, y, z], "yaw": deg, "pitch": deg   placed (pitch clamped to +-89)
+//   "drag": {"dx", "dy", "height"}         a pointer drag over a canvas `height` pixels tall
+//   "forward", "right", "up": steps        LookCamera::move, strafe, rise (0.1 a step)
+// Returns the camera: {"eye": [x, y, z], "yaw": deg, "pitch": deg}. A bad request changes nothing.
+EMSCRIPTEN_KEEPALIVE const char* rf_camera(const char* request) {
+  auto r = parseRequest(request, "rf_camera");
+  if (!r) return replyError(r.error());
+  if (!state().demo) return reply(json::object());
+  reflect::LookCamera camera = state().demo->camera();
+  std::string error;
+  const reflect::JsonReader in(r.value(), "", &error);
+  in.onlyKeys({"reset", "eye", "yaw", "pitch", "drag", "forward", "right", "up"});
+  if (in["reset"].boolean(false)) camera.reset();
+  if (in.has("eye")) camera.setEye(in["eye"].vec3(camera.eye()));
+  if (in.has("yaw") || in.has("pitch")) {
+    camera.setAngles(static_cast<float>(in["yaw"].number(camera.yawDeg(), -1e6, 1e6)),
+                     static_cast<float>(in["pitch"].number(camera.pitchDeg(), -1e6, 1e6)));
+  }
+  if (in.has("drag")) {
+    const reflect::JsonReader drag = in["drag"];
+    drag.onlyKeys({"dx", "dy", "height"});
+    if (!drag.has("height")) drag["height"].fail("missing (the canvas height in pixels)");
+    camera.drag(static_cast<float>(drag["dx"].number(0, -1e6, 1e6)),
+                static_cast<float>(drag["dy"].number(0, -1e6, 1e6)),
+                static_cast<float>(drag["height"].number(1, 1e-3, 1e6)));
+  }
+  camera.move(static_cast<float>(in["forward"].number(0, -1e6, 1e6)));
+  camera.strafe(static_cast<float>(in["right"].number(0, -1e6, 1e6)));
+  camera.rise(static_cast<float>(in["up"].number(0, -1e6, 1e6)));
+  if (!error.empty()) return replyError("rf_camera: " + error);
+  state().demo->camera() = camera;
+  return reply(cameraJson(camera));
 }
 
 }  // extern "C"

@@ -1,15 +1,24 @@
-// State shared by the page's entry points (web_main.cpp: context, frames, input; web_scenes.cpp:
-// loading scenes, models and skyboxes). Only the web platform layer includes this.
+// State and conventions shared by the page's entry points (web_main.cpp: context, frames, clock,
+// camera; web_scenes.cpp: scenes, models, skyboxes, added objects; web_settings.cpp: the settings
+// schema, planner, accuracy and materials). Only the web platform layer includes this.
+//
+// What crosses the bridge is JSON, built and parsed with nlohmann-json: every export takes one
+// JSON object (its request; plus a pointer and length where a file's bytes go) and returns JSON.
+// An action returns {} when it worked, {"error": "..."} when it did not (nothing changed), and may
+// add {"notice": "..."}. web/wasm_bridge.js is the only JavaScript that calls these.
 #pragma once
 
 #include <emscripten/html5.h>
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "app/demo.h"
 #include "core/image.h"
+#include "core/json_reader.h"
+#include "core/result.h"
 
 namespace reflect::web {
 
@@ -23,11 +32,22 @@ struct WebState {
   std::unique_ptr<Demo> demo;  // what the page shows
   PendingScene pending;        // a scene being loaded; replaces `demo` only once it is complete
   EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = 0;
-  std::string returnText;  // storage for strings handed back to JavaScript
+  std::string reply;  // storage for the JSON handed back to JavaScript
 };
 
 WebState& state();
-// Keeps `text` alive until the next call and returns it for JavaScript.
-const char* returnText(std::string text);
+
+// The request of export `function`: a JSON object (an empty or null text reads as {}).
+Result<nlohmann::json> parseRequest(const char* text, const char* function);
+// Keeps `value` (as JSON text) until the next call and returns it for JavaScript. Numbers that are
+// floats in C++ are written with the fewest digits that give the same float (0.78, not
+// 0.7799999713897705); text that is not valid UTF-8 is repaired, never a failure.
+const char* reply(const nlohmann::json& value);
+// A float as the fewest digits that read back as it: 0.78f as "0.78".
+std::string shortestText(float value);
+// {"error": message}, or {} for an empty message.
+const char* replyError(const std::string& message);
+// {} or {"notice": notice}.
+const char* replyDone(const std::string& notice = {});
 
 }  // namespace reflect::web

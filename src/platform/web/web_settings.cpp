@@ -1,0 +1,159 @@
+// The page's settings, by the names of the settings schema (core/settings_schema.h): the schema
+// itself (the page builds its controls, link keys and messages from it), the capture planner,
+// the accuracy settings and the objects' materials. Changes are JSON objects of the settings to
+// change; absent ones keep their value, and a bad one changes nothing.
+#include <emscripten/emscripten.h>
+
+#include <string>
+
+#include "core/settings_schema.h"
+#include "platform/web/web_state.h"
+
+namespace {
+
+using nlohmann::json;
+using reflect::web::parseRequest;
+using reflect::web::reply;
+using reflect::web::replyDone;
+using reflect::web::replyError;
+using reflect::web::shortestText;
+using reflect::web::state;
+
+// The planner settings that only one policy reads: the panel shows them with that policy only,
+// and a link carries them with that policy only.
+struct PolicyParameter {
+  reflect::UpdatePolicy policy;
+  const char* setting;
+};
+constexpr PolicyParameter kPolicyParameters[] = {
+    {reflect::UpdatePolicy::TimeSliced, "facesPerFrame"},
+    {reflect::UpdatePolicy::EveryNFrames, "everyN"},
+};
+
+// The panel's one line for an object's material, e.g. "mirror 0.78 refl + 0.3 base".
+std::string materialSummary(const reflect::SceneObject& o) {
+  const std::string sky = o.environment == reflect::Environment::Skybox ? ", static sky" : "";
+  switch (o.material) {
+    case reflect::Material::Mirror:
+      return (o.fresnel ? "mirror, Fresnel (ior " + shortestText(o.ior) + ")"
+                        : "mirror " + shortestText(o.reflection) + " refl + " +
+                              shortestText(o.base) + " base") +
+             sky;
+    case reflect::Material::Glass:
+      return "glass ior " + shortestText(o.ior) + (o.fresnel ? ", Fresnel" : "") + sky;
+    default:
+      return reflect::materialName(o.material);
+  }
+}
+
+// Mirrors and glass take their settings from the page; the other materials have none to edit.
+bool editable(const reflect::SceneObject& o) {
+  return o.material == reflect::Material::Mirror || o.material == reflect::Material::Glass;
+}
+
+}  // namespace
+
+extern "C" {
+
+// Every user-facing setting: {"planner": [...], "accuracy": [...], "material": [...]}, each entry
+// {"name", "label", "help", "kind", "default", "min", "max", "choices"} (settingsSchemaJson).
+EMSCRIPTEN_KEEPALIVE const char* rf_schema_json() {
+  return reply(reflect::settingsSchemaJson());
+}
+
+// {"settings": {policy, facesPerFrame, everyN, captureLod, viewLod}, "maxStalenessFrames": n,
+//  "policyParameters": [the settings only this policy reads],
+//  "unusedSettings": [the settings only other policies read]}
+EMSCRIPTEN_KEEPALIVE const char* rf_planner_json() {
+  if (!state().demo) return reply(json::object());
+  const reflect::PlannerSettings& s = state().demo->plannerSettings();
+  json parameters = json::array(), unused = json::array();
+  for (const PolicyParameter& p : kPolicyParameters) {
+    (p.policy == s.policy ? parameters : unused).push_back(p.setting);
+  }
+  return reply({{"settings", reflect::settingsJson(s, reflect::plannerFields())},
+                {"maxStalenessFrames", s.maxStalenessFrames()},
+                {"policyParameters", parameters},
+                {"unusedSettings", unused}});
+}
+
+// Changes the capture planner: {"facesPerFrame": 3, ...} by the schema's names. {} or {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* rf_set_planner(const char* request) {
+  auto r = parseRequest(request, "rf_set_planner");
+  if (!r) return replyError(r.error());
+  if (!state().demo) return replyError("no scene loaded");
+  reflect::PlannerSettings settings = state().demo->plannerSettings();
+  std::string error = reflect::applySettingsJson(r.value(), reflect::plannerFields(), settings);
+  if (!error.empty()) return replyError(error);
+  state().demo->setPlannerSettings(settings);
+  return replyDone();
+}
+
+// {"settings": {captureAtOrigin, distanceIterations, ...}, "describe": "centre, distance x2, ..."}
+EMSCRIPTEN_KEEPALIVE const char* rf_accuracy_json() {
+  if (!state().demo) return reply(json::object());
+  const reflect::AccuracySettings& a = state().demo->accuracySettings();
+  return reply({{"settings", reflect::settingsJson(a, reflect::accuracyFields())},
+                {"describe", a.describe()}});
+}
+
+// Changes the accuracy settings by the schema's names (rebuilds the GL resources). {} or
+// {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* rf_set_accuracy(const char* request) {
+  auto r = parseRequest(request, "rf_set_accuracy");
+  if (!r) return replyError(r.error());
+  if (!state().demo) return replyError("no scene loaded");
+  reflect::AccuracySettings settings = state().demo->accuracySettings();
+  std::string error = reflect::applySettingsJson(r.value(), reflect::accuracyFields(), settings);
+  if (!error.empty()) return replyError(error);
+  return replyError(state().demo->setAccuracySettings(settings));
+}
+
+// The current scene's objects: [{"mesh", "material": {type, reflection, base, ior, fresnel,
+// environment}, "summary": the panel's line, "reflective": it uses an environment, "editable":
+// the page may change its material, "orbits": it circles the origin, "translate": [x, y, z]}]
+EMSCRIPTEN_KEEPALIVE const char* rf_objects_json() {
+  json list = json::array();
+  if (!state().demo) return reply(list);
+  for (const reflect::SceneObject& o : state().demo->scene().objects) {
+    const glm::vec3 at(o.placement[3]);
+    list.push_back({{"mesh", o.mesh},
+                    {"material", reflect::settingsJson(o, reflect::materialFields())},
+                    {"summary", materialSummary(o)},
+                    {"reflective", o.usesEnvironment()},
+                    {"editable", editable(o)},
+                    {"orbits", o.motion == reflect::Motion::Orbit},
+                    {"translate", {at.x, at.y, at.z}}});
+  }
+  return reply(list);
+}
+
+// Changes object "index"'s material: {"index": 3, "changes": {"reflection": 0.5, ...}} by the
+// schema's names (mirror and glass objects only). {} or {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* rf_set_material(const char* request) {
+  auto r = parseRequest(request, "rf_set_material");
+  if (!r) return replyError(r.error());
+  if (!state().demo) return replyError("no scene loaded");
+  const json& in = r.value();
+  const auto& objects = state().demo->scene().objects;
+  if (!in.contains("index") || !in["index"].is_number_integer()) {
+    return replyError("rf_set_material: index: expected a whole number");
+  }
+  const auto index = in["index"].get<long long>();
+  if (index < 0 || index >= static_cast<long long>(objects.size())) {
+    return replyError("no object " + std::to_string(index) + " in this scene (it has " +
+                      std::to_string(objects.size()) + ")");
+  }
+  reflect::SceneObject object = objects[static_cast<size_t>(index)];
+  if (!editable(object)) {
+    return replyError("object " + std::to_string(index) + " (" + object.mesh + ") is " +
+                      reflect::materialName(object.material) + ", not a mirror or glass");
+  }
+  const json changes = in.contains("changes") ? in["changes"] : json::object();
+  std::string error = reflect::applySettingsJson(changes, reflect::materialFields(), object);
+  if (!error.empty()) return replyError(error);
+  const json material = reflect::settingsJson(object, reflect::materialFields());
+  return replyError(state().demo->setMaterialJson(static_cast<int>(index), material.dump()));
+}
+
+}  // extern "C"

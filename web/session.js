@@ -1,0 +1,233 @@
+// What the user has made of the demo: the scene (by the name or URL asked for), the cube size,
+// the planner, accuracy and material settings, the added figures and replaced models, the
+// camera, time and pause. Every change goes through here, to the C++ side through the bridge,
+// and tells the listeners (the panel, the address bar) what changed. Scene loads, model changes
+// and the bench run one at a time in a job queue; idle() resolves when it is empty.
+import { AccuracyModes } from './accuracy.js';
+import { buildLods } from './lod.js';
+import { showMessage } from './messages.js';
+import { loadScene, sceneUrl } from './scene_loader.js';
+
+export class Session {
+  constructor(bridge, { schema, sweepRows, assets = null, progress = null }) {
+    Object.assign(this, { bridge, schema, assets, progress });
+    this.modes = new AccuracyModes(sweepRows);
+    this.scene = { name: null, title: '' };  // name: as asked for (a shipped name or a URL)
+    this.cubeSize = 0;  // the user's face size; 0: the scene file's
+    this.paused = false;
+    this.homeCamera = null;  // the scene's own camera (cam= stays out of links while it is there)
+    this.sceneMaterials = [];  // the objects' materials as the scene file has them
+    this.figures = [];  // added figures { name, bytes, source, object }: kept through reloads of the same scene
+    this.overrides = new Map();  // mesh name -> { bytes, source }: the user's replacement models
+    this.defaultAccuracy = Object.fromEntries(schema.accuracy.map((i) => [i.name, i.default]));
+    this.lodLevels = {};
+    this.lodReady = Promise.resolve({});
+    this.lastStats = {};
+    this.listeners = [];
+    this.queue = Promise.resolve();
+    this.pending = 0;
+  }
+
+  // listener(kind): kind is 'scene', 'settings', 'camera', 'time' or 'models'.
+  onChange(listener) { this.listeners.push(listener); }
+  changed(kind) { for (const listener of this.listeners) listener(kind); }
+
+  // Runs `job` after the jobs before it; its promise is the job's.
+  serial(job) {
+    ++this.pending;
+    const run = this.queue.then(job);
+    this.queue = run.catch(() => {}).finally(() => { --this.pending; });
+    return run;
+  }
+
+  // Resolves once no job is queued or running (jobs queued meanwhile included).
+  async idle() {
+    while (this.pending) await this.queue;
+  }
+
+  faceSize() { return this.bridge.scene().cubeFaceSize || this.cubeSize; }
+  frame(dt, waitForGpu = false) {
+    this.lastStats = this.bridge.frame({ dt, waitForGpu });
+    return this.lastStats;
+  }
+
+  // --- scenes and models ---------------------------------------------------------------------
+
+  // Loads scene `name` (keepView: the same camera and time, and for the same scene its figures
+  // and material changes, as for a cube size). Throws with the message already shown; the old
+  // scene stays then.
+  async switchScene(name, { keepView = false } = {}) {
+    const same = keepView && name === this.scene.name;
+    const edits = same ? this.changedMaterials() : [];
+    let view = null;
+    const beforeCommit = () => {
+      if (keepView) view = { camera: this.bridge.camera(), time: this.bridge.time() };
+    };
+    let title;
+    try {
+      title = await loadScene(this.bridge, sceneUrl(name), {
+        userPrefix: this.assets, cubeSize: this.cubeSize, overrides: this.overrides, progress: this.progress, beforeCommit,
+      });
+    } catch (e) {
+      showMessage(e.message);
+      e.shown = true;
+      this.changed('settings');
+      throw e;
+    }
+    this.scene = { name, title };
+    this.homeCamera = this.bridge.camera();
+    if (view) {
+      this.bridge.setCamera(view.camera);
+      this.bridge.setTime(view.time);
+    }
+    this.sceneMaterials = this.bridge.objects().map((o) => o.material);
+    if (same) {
+      for (const f of this.figures) {
+        const error = this.bridge.loadMesh({ name: f.name, source: f.source, bytes: f.bytes }) ||
+                      this.bridge.addObject(f.object);
+        if (error) showMessage(`${f.source}: ${error}`);
+      }
+      for (const edit of edits) this.bridge.setMaterial(edit);
+    } else {
+      this.figures = [];
+    }
+    this.frame(0);
+    this.changed('scene');
+    await this.rebuildLods();
+    return title;
+  }
+
+  loadScene(name) { return this.serial(() => this.switchScene(name)); }
+  reload() { return this.serial(() => this.switchScene(this.scene.name, { keepView: true })); }
+  setCubeSize(size) {
+    this.cubeSize = size;
+    return this.reload();
+  }
+
+  // Back to the scene's own models: no replacements, no added figures.
+  builtInModels() {
+    if (!this.overrides.size && !this.figures.length) return Promise.resolve();
+    this.overrides.clear();
+    this.figures = [];
+    return this.reload();
+  }
+
+  // Mesh `mesh` of the scene from the user's file { path } (the bytes are kept for reloads).
+  // Returns "" or the error.
+  replaceModel(file, mesh, bytes) {
+    const error = this.bridge.loadMesh({ name: mesh, source: file.path, bytes });
+    if (error) return error;
+    const figure = this.figures.find((g) => g.name === mesh);
+    if (figure) Object.assign(figure, { bytes, source: file.path });
+    else this.overrides.set(mesh, { bytes, source: file.path });
+    return '';
+  }
+
+  // A new figure from the user's file: `place(bounds, figures)` gives its scene-file object.
+  addFigure(file, name, bytes, place) {
+    const error = this.bridge.loadMesh({ name, source: file.path, bytes });
+    if (error) return error;
+    const bounds = this.bridge.meshBounds(name);
+    if (!bounds) return 'no bounds for the loaded mesh';
+    const object = place(bounds, this.figures.map((g) => g.object));
+    const addError = this.bridge.addObject(object);
+    if (addError) return addError;
+    this.figures.push({ name, bytes, source: file.path, object });
+    return '';
+  }
+
+  // After models changed: a frame, the listeners, and levels of detail for `meshes`.
+  modelsChanged(meshes) {
+    this.frame(0);
+    this.changed('models');
+    return this.rebuildLods(meshes);
+  }
+
+  rebuildLods(names = null) {
+    this.lodReady = buildLods(this.bridge, names).then((built) => {
+      this.lodLevels = names ? { ...this.lodLevels, ...built } : built;
+      this.changed('models');
+      return this.lodLevels;
+    });
+    return this.lodReady;
+  }
+
+  // --- settings --------------------------------------------------------------------------------
+
+  // Each returns "" or the error (shown).
+  report(error, kind = 'settings') {
+    if (error) showMessage(error);
+    this.changed(kind);
+    return error || '';
+  }
+  setPlanner(changes) { return this.report(this.bridge.setPlanner(changes)); }
+  setAccuracy(changes) { return this.report(this.bridge.setAccuracy(changes)); }
+  setMaterial(index, changes) { return this.report(this.bridge.setMaterial({ index, changes })); }
+
+  // The materials that differ from the scene file's: [{ index, changes }] by schema name.
+  changedMaterials() {
+    return this.bridge.objects().flatMap((o, index) => {
+      const original = this.sceneMaterials[index];
+      if (!original || !o.editable) return [];
+      const changes = Object.fromEntries(this.schema.material.map((i) => i.name)
+        .filter((name) => o.material[name] !== original[name]).map((name) => [name, o.material[name]]));
+      return Object.keys(changes).length ? [{ index, changes }] : [];
+    });
+  }
+
+  // A measured accuracy mode (a row of sweep.csv): its settings and its cube size (reloading
+  // the scene when that changes).
+  chooseAccuracy(name) {
+    return this.serial(async () => {
+      const row = this.modes.find(name);
+      if (!row) {
+        const error = `${name}: not a measured accuracy mode (sweep.csv has ${this.modes.names()})`;
+        this.report(error);
+        throw new Error(error);
+      }
+      this.modes.chosen = row.name;
+      const error = this.setAccuracy(row.accuracy);
+      if (error) throw new Error(error);
+      const reload = row.faceSize !== this.faceSize();
+      this.cubeSize = row.faceSize;
+      if (reload) await this.switchScene(this.scene.name, { keepView: true });
+      this.changed('settings');
+      return this.bridge.accuracy();
+    });
+  }
+  accuracyRow() { return this.modes.current(this.bridge.accuracy(), this.faceSize()); }
+  accuracyReadout() {
+    return this.modes.readout(this.accuracyRow(), this.bridge.accuracyDescription(), this.faceSize());
+  }
+
+  // --- camera, time, pause --------------------------------------------------------------------
+
+  camera(change) {
+    change(this.bridge);
+    this.changed('camera');
+  }
+  setTime(seconds) {
+    this.bridge.setTime(seconds);
+    this.changed('time');
+  }
+  step(seconds = 1 / 60) {
+    this.frame(seconds, true);
+    this.changed('time');
+  }
+  setPaused(on) {
+    this.paused = on;
+    this.changed('time');
+  }
+
+  // Everything a link carries (url_state.js buildQuery).
+  linkState() {
+    const accuracy = this.bridge.accuracy();
+    return {
+      scene: this.scene.name, cube: this.cubeSize, faceSize: this.faceSize(),
+      planner: this.bridge.plannerState(), paused: this.paused, time: this.bridge.time(),
+      camera: this.bridge.camera(), home: this.homeCamera, assets: this.assets,
+      acc: this.modes.linkName(accuracy, this.defaultAccuracy), accuracy,
+      materials: this.changedMaterials(),
+    };
+  }
+}

@@ -1,0 +1,68 @@
+// window.demo: how tests and tools drive the page (docs/web.md describes each function). Settings
+// go by the schema's names (demo.schema()); changes are objects whose absent keys keep their value.
+import { filesFromList, handleFiles } from './drop.js';
+import { messageHistory } from './messages.js';
+
+// page: { session, addressBar, canvas, readPixels, screenshot, bench, fps, sparkline, progress, panel }
+export function testApi(page) {
+  const { session, addressBar } = page;
+  const { bridge } = session;
+  return {
+    // One complete frame (dt seconds on), timed end to end; its stats.
+    frame: (dt = 0) => session.frame(dt, true),
+    // The last frame's stats, with the display rate.
+    stats: () => ({ ...session.lastStats, fps: page.fps() }),
+    setTime: (t) => session.setTime(t),
+    pause: (on = true) => session.setPaused(on),
+    paused: () => session.paused,
+    camera: () => bridge.camera(),
+    // setCamera(x, y, z, yaw, pitch) or setCamera({ eye, yaw, pitch }).
+    setCamera: (x, y, z, yaw, pitch) =>
+      session.camera((b) => b.setCamera(typeof x === 'object' ? x : { eye: [x, y, z], yaw, pitch })),
+    // { name, title, meshes, cubeFaceSize, environments }
+    scene: () => bridge.scene(),
+    // The planner's settings by schema name, and maxStalenessFrames (read only).
+    planner: () => {
+      const state = bridge.plannerState();
+      return { ...state.settings, maxStalenessFrames: state.maxStalenessFrames };
+    },
+    // setPlanner({ facesPerFrame: 3 }): "" or the error.
+    setPlanner: (changes) => session.setPlanner(changes),
+    // Loads another scene (a name or a URL); the current one stays on screen if it fails (the
+    // error is shown and thrown).
+    loadScene: (nameOrUrl) => session.loadScene(nameOrUrl),
+    // Triangles of each level of detail of mesh `name` (null before any was built).
+    lodLevels: (name) => session.lodLevels[name] || null,
+    lodReady: () => session.lodReady,
+    readPixels: () => page.readPixels(),
+    screenshot: () => page.screenshot(),
+    copyLink: () => addressBar.copyLink(),
+    loadFiles: (files) => handleFiles(session, filesFromList(files)),
+    runBench: (frames) => page.bench(frames),
+    benchResults: null,
+    // The link to what is on screen, as the address bar has it.
+    query: () => addressBar.query(),
+    sparkSamples: () => page.sparkline.samples,
+    progressHistory: () => [...page.progress.history],
+    panel: () => page.panel()?.gui || null,
+    // [{ mesh, material: { type, reflection, base, ior, fresnel, environment }, summary, ... }]
+    objects: () => bridge.objects(),
+    // Object `index`'s material settings (mirror and glass only): "" or the error.
+    setMaterial: (index, changes) => session.setMaterial(index, changes),
+    // The accuracy settings by schema name, and describe (the C++ description, read only).
+    accuracy: () => ({ ...bridge.accuracy(), describe: bridge.accuracyDescription() }),
+    // setAccuracy({ mipmaps: true }): "" or the error. setAccuracy('ROW'): a measured mode (a
+    // sweep.csv row) with its cube size, as the panel: a promise of the settings.
+    setAccuracy: (changesOrRow) => (typeof changesOrRow === 'string'
+      ? session.chooseAccuracy(changesOrRow) : session.setAccuracy(changesOrRow)),
+    sweep: () => session.modes.rows,
+    accuracyRow: () => session.accuracyRow(),
+    figures: () => session.figures.map((f) => ({ name: f.name, source: f.source, object: f.object })),
+    // Resolves when no scene load, model change or bench is queued or running.
+    idle: () => session.idle(),
+    // Every message shown, [{ text, kind }], also those that have gone.
+    messages: () => messageHistory(),
+    // The settings schema: { planner, accuracy, material }.
+    schema: () => session.schema,
+  };
+}

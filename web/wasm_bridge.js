@@ -1,0 +1,108 @@
+// The wasm module's exports as typed functions. The only file that knows the C names
+// (src/platform/web/*.cpp). Everything crossing is JSON: each export takes one request object
+// (plus a file's bytes where one goes) and returns JSON. Settings travel by the names of the
+// settings schema (rf_schema_json), and changes are objects whose absent keys keep their value.
+// Actions return "" or the error message (nothing changed then).
+
+/* global createReflectModule */
+
+export async function createBridge(canvas) {
+  const Module = await createReflectModule({ canvas });
+  const text = ['string'];
+  const withData = ['string', 'number', 'number'];
+  const exports = {
+    rf_create: [], rf_schema_json: [], rf_frame: text, rf_clock: text, rf_camera: text,
+    rf_begin_scene: withData, rf_pending_files: [], rf_load_mesh: withData,
+    rf_pending_skybox_image: withData, rf_commit_scene: text, rf_scene_json: [], rf_mesh_arrays: text,
+    rf_lod_settings_json: [], rf_add_lod: withData, rf_add_object: text, rf_mesh_bounds_json: text,
+    rf_planner_json: [], rf_set_planner: text, rf_accuracy_json: [], rf_set_accuracy: text,
+    rf_accuracy_from_description: text, rf_objects_json: [], rf_set_material: text,
+  };
+  const fn = Object.fromEntries(Object.entries(exports).map(([name, args]) => [name, Module.cwrap(name, 'string', args)]));
+
+  const call = (name, request = {}) => JSON.parse(fn[name](JSON.stringify(request)));
+  // `bytes` (a typed array) copied into wasm memory for the duration of the call.
+  const callWithData = (name, request, bytes, count = bytes.length) => {
+    const view = new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    const ptr = Module._malloc(Math.max(view.length, 1));
+    Module.HEAPU8.set(view, ptr);
+    try {
+      return JSON.parse(fn[name](JSON.stringify(request), ptr, count));
+    } finally {
+      Module._free(ptr);
+    }
+  };
+  const errorOf = (reply) => reply.error || '';
+
+  return {
+    // "" or why WebGL2 could not be set up.
+    create: () => errorOf(call('rf_create')),
+    // { planner: [INFO...], accuracy: [...], material: [...] }, INFO { name, label, help, kind,
+    // default, min, max, choices }.
+    schema: () => JSON.parse(fn.rf_schema_json()),
+
+    // One frame into the canvas: its stats (FrameStats: frameMs, facesCaptured, time, ...).
+    frame: ({ dt = 0, waitForGpu = false } = {}) => call('rf_frame', { dt, waitForGpu }),
+    time: () => call('rf_clock').seconds,
+    setTime: (seconds) => call('rf_clock', { seconds }).seconds,
+
+    // { eye: [x, y, z], yaw, pitch } (degrees). Each change returns the camera after it.
+    camera: () => call('rf_camera'),
+    setCamera: ({ eye, yaw, pitch }) => call('rf_camera', { eye, yaw, pitch }),
+    // Steps of 0.1 along the view (forward), to the right (level) and up.
+    moveCamera: ({ forward = 0, right = 0, up = 0 }) => call('rf_camera', { forward, right, up }),
+    // A pointer drag of (dx, dy) over a canvas `height` pixels tall.
+    dragCamera: ({ dx, dy, height }) => call('rf_camera', { drag: { dx, dy, height } }),
+    resetCamera: () => call('rf_camera', { reset: true }),
+
+    // The planner's settings; plannerState adds what follows from them: { settings,
+    // maxStalenessFrames, policyParameters, unusedSettings }.
+    planner: () => call('rf_planner_json').settings || {},
+    plannerState: () => call('rf_planner_json'),
+    setPlanner: (changes) => errorOf(call('rf_set_planner', changes)),
+    accuracy: () => call('rf_accuracy_json').settings || {},
+    accuracyDescription: () => call('rf_accuracy_json').describe || '',
+    setAccuracy: (changes) => errorOf(call('rf_set_accuracy', changes)),
+    // The settings a description (the sweep's `setting` column) names, or null.
+
+    // [{ mesh, material: { type, reflection, ... }, summary, reflective, editable, orbits, translate }]
+    objects: () => call('rf_objects_json'),
+    // { index: the object's place, changes: { reflection: 0.5, ... } }
+    setMaterial: ({ index, changes }) => errorOf(call('rf_set_material', { index, changes })),
+    // Adds a scene-file object entry (its mesh loaded first with loadMesh).
+    addObject: (object) => errorOf(call('rf_add_object', object)),
+    // { name, title, meshes, cubeFaceSize, environments }
+    scene: () => call('rf_scene_json'),
+
+    // Loading a scene in stages: begin (the scene file), every mesh and skybox image it names,
+    // commit ({} or { error } or { notice }). `source` names a file in messages.
+    beginScene: ({ source, bytes }) => errorOf(callWithData('rf_begin_scene', { source }, bytes)),
+    pendingFiles: () => call('rf_pending_files'),
+    // pending: for the scene being loaded; else the current scene's mesh `name` (replaced or new).
+    loadMesh: ({ name, source, bytes, pending = false }) =>
+      errorOf(callWithData('rf_load_mesh', { name, source, pending }, bytes)),
+    skyboxImage: ({ index, source, bytes }) =>
+      errorOf(callWithData('rf_pending_skybox_image', { index, source }, bytes)),
+    commitScene: ({ cubeSize = 0 } = {}) => call('rf_commit_scene', { cubeSize }),
+
+    // Level 0 of mesh `name` copied out of wasm memory: { positions: Float32Array (6 floats a
+    // vertex), indices: Uint32Array }, or null.
+    meshLevelZero: (name) => {
+      const a = call('rf_mesh_arrays', { name });
+      if (!a.vertices || !a.indices || !a.vertexCount || !a.indexCount) return null;
+      const buffer = Module.HEAPU8.buffer;
+      return {
+        positions: new Float32Array(buffer, a.vertices, a.vertexCount * a.vertexFloats).slice(),
+        indices: new Uint32Array(buffer, a.indices, a.indexCount).slice(),
+        vertexFloats: a.vertexFloats,
+      };
+    },
+    lodSettings: () => call('rf_lod_settings_json'),
+    addLod: (name, indices) => errorOf(callWithData('rf_add_lod', { name }, indices, indices.length)),
+    // { min: [x, y, z], max } of mesh `name`, or null.
+    meshBounds: (name) => {
+      const bounds = call('rf_mesh_bounds_json', { name });
+      return bounds.min ? bounds : null;
+    },
+  };
+}
