@@ -124,7 +124,9 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     if (tauExit >= kNever) {
       // Nothing ahead: free, the ray runs to infinity (the sky); hidden, it passed behind the
       // last surface it saw, and the last free point is the guess.
-      return free ? SearchResult(d, 0, i) : SearchResult(x + tauFree * d, 1, i);
+      // (No ?: on structures: WebGL refuses it.)
+      if (free) return SearchResult(d, 0, i);
+      return SearchResult(x + tauFree * d, 1, i);
     }
     // Just past the border, into the next cell (or face), one level coarser.
     tau = tauExit + max(tauExit * 1e-5, 1e-5);

@@ -81,7 +81,7 @@ async function start() {
   new ResizeObserver(sizeCanvasToDisplay).observe(canvas);
 
   const schema = bridge.schema();
-  const { state: link, problems, notes } = parseQuery(location.search, schema, bridge.accuracyFromDescription);
+  const { state: link, problems, notes } = parseQuery(location.search, schema);
   for (const problem of problems) showMessage(problem);
   for (const note of notes) showMessage(note, 'info');
   const progress = new Progress(document.getElementById('progress'));

@@ -5,7 +5,7 @@
 //   scene=NAME|URL  cube=PIXELS (the capture's face size; default: the scene file's)
 //   policy=…&facesPerFrame=…&everyN=…&captureLod=…&viewLod=…   (the planner's settings)
 //   acc=ROW (a measured accuracy mode: a row name of sweep.csv, with its cube size unless cube=)
-//   captureAtOrigin=…&distanceIterations=…&…   (accuracy settings, written when no row has them)
+//   captureAtOrigin=…&search=…&…   (accuracy settings, written when no row has them)
 //   mat=INDEX:NAME=VALUE,…;…   (changed material settings; INDEX is the object's place from 0)
 //   paused  t=SECONDS (while paused)  cam=x,y,z,yaw,pitch (unless the scene's own)  assets=PREFIX
 // Not written (one-off actions): bench, frames.
@@ -48,10 +48,29 @@ const byName = (list, name) => list.find((info) => info.name === name);
 const changesText = (changes, list) =>
   Object.entries(changes).map(([k, v]) => `${k}=${toText(byName(list, k), v)}`).join(',');
 
+// An old link's acc=centre,distance-x2,depth-24,linear,RGBA8,highp as settings by the schema's
+// names over their defaults, or null. (A distance search was the linear one then.)
+function oldAccuracySettings(text, schema) {
+  const settings = Object.fromEntries(schema.accuracy.map((i) => [i.name, i.default]));
+  const words = {
+    origin: { captureAtOrigin: true }, centre: { captureAtOrigin: false }, plain: { search: 'plain' },
+    linear: { mipmaps: false }, mipmapped: { mipmaps: true }, RGBA8: { halfFloat: false },
+    RGBA16F: { halfFloat: true }, highp: { mediump: false }, mediump: { mediump: true },
+  };
+  for (const word of text.split(',')) {
+    const depth = /^depth-(16|24)$/.exec(word);
+    if (words[word]) Object.assign(settings, words[word]);
+    else if (/^distance-x\d+$/.test(word)) settings.search = 'linear';
+    else if (depth) settings.depthBits = Number(depth[1]);
+    else return null;
+  }
+  return settings;
+}
+
 // Returns { state, problems, notes }: state has every key (null or empty where the link has
 // none); problems are values that cannot be used (shown as errors), notes the old keys read as
-// new ones. `fromDescription(text)` gives the settings of an old acc= settings value, or null.
-export function parseQuery(search, schema, fromDescription) {
+// new ones.
+export function parseQuery(search, schema) {
   const params = new URLSearchParams(search);
   const problems = [], notes = [];
   const state = {
@@ -96,8 +115,8 @@ export function parseQuery(search, schema, fromDescription) {
   }
   const acc = params.get('acc');
   if (acc && acc.includes(',')) {
-    // The old form of settings no row has: the description's words without spaces.
-    const settings = fromDescription(acc.split(',').map((p) => p.replace(/-/g, ' ')).join(', '));
+    // The old form of settings no row has: the words of the old description.
+    const settings = oldAccuracySettings(acc, schema);
     if (!settings) {
       problems.push(`acc=${acc}: neither a measured accuracy mode nor settings; ignored`);
     } else {

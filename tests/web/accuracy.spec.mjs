@@ -7,9 +7,10 @@ import { fileURLToPath } from 'node:url';
 import { changedInSphere, collectErrors, expectedSphereBox, idle, messages, openDemo, renderAndRead } from './helpers.mjs';
 
 const CSV = readFileSync(fileURLToPath(new URL('../../assets/sweep.csv', import.meta.url)), 'utf8');
-// name -> { psnr, faceSize } from the CSV (the setting column is quoted and holds commas).
+// name -> { setting, faceSize, psnr, angular } from the CSV (the setting and settings columns
+// are quoted and hold commas).
 const ROWS = Object.fromEntries(CSV.trim().split('\n').slice(1).map((line) => {
-  const [, name, setting, rest] = /^([^,]+),"([^"]*)",(.*)$/.exec(line);
+  const [, name, setting, rest] = /^([^,]+),"([^"]*)","(?:[^"]|"")*",(.*)$/.exec(line);
   const f = rest.split(',');
   return [name, { setting, faceSize: Number(f[0]), psnr: Number(f[4]), angular: Number(f[8]) }];
 }));
@@ -36,7 +37,7 @@ test('choosing "original" sets the course settings, changes the reflection and s
 
   await choose(page, 'original');
   await idle(page);
-  expect(await accuracy(page)).toMatchObject({ distanceIterations: 0, captureAtOrigin: true, depthBits: 16,
+  expect(await accuracy(page)).toMatchObject({ search: 'plain', captureAtOrigin: true, depthBits: 16,
                                                mipmaps: false, halfFloat: false, mediump: false,
                                                describe: ROWS.original.setting });
   const readout = page.locator('#accuracy-readout');
@@ -51,13 +52,13 @@ test('choosing "original" sets the course settings, changes the reflection and s
   await expect.poll(() => query(page)).toContain('&acc=original');
 
   // A row with another cube size reloads the scene at that size.
-  await choose(page, 'distance-2-size-64');
+  await choose(page, 'default-size-64');
   await idle(page);
   expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
-  expect((await accuracy(page)).describe).toBe(ROWS['distance-2-size-64'].setting);
+  expect((await accuracy(page)).describe).toBe(ROWS['default-size-64'].setting);
   await expect(readout).toContainText('on the Pareto front');
   await expect.poll(() => query(page)).toContain('cube=64&');
-  await expect.poll(() => query(page)).toContain('&acc=distance-2-size-64');
+  await expect.poll(() => query(page)).toContain('&acc=default-size-64');
 
   // A combination the sweep did not measure.
   expect(await page.evaluate(() => window.demo.setAccuracy({ mipmaps: true }))).toBe('');
@@ -69,7 +70,7 @@ test('choosing "original" sets the course settings, changes the reflection and s
   expect(errors).toEqual([]);
 
   await openDemo(page, query(page));
-  expect(await accuracy(page)).toMatchObject({ distanceIterations: 2, captureAtOrigin: false, depthBits: 24,
+  expect(await accuracy(page)).toMatchObject({ search: 'hierarchical', captureAtOrigin: false, depthBits: 24,
                                                mipmaps: true, halfFloat: false, mediump: false });
   expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
   await expect(readout).toContainText('not measured');
@@ -80,7 +81,7 @@ test('choosing "original" sets the course settings, changes the reflection and s
 
 test('acc= in a link applies the row; an unknown row is named', async ({ page }) => {
   await openDemo(page, '?paused&acc=original');
-  expect(await accuracy(page)).toMatchObject({ distanceIterations: 0, captureAtOrigin: true, depthBits: 16 });
+  expect(await accuracy(page)).toMatchObject({ search: 'plain', captureAtOrigin: true, depthBits: 16 });
   expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(256);
   await expect(page.locator('#accuracy-readout')).toContainText(`PSNR ${ROWS.original.psnr.toFixed(2)} dB`);
   await expect.poll(() => query(page)).toBe('?scene=ex12-2&cube=256&policy=when-changed&paused&t=0&acc=original');

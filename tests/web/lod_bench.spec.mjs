@@ -75,7 +75,7 @@ test('?bench runs every policy and prints the table; when-changed matches every-
      'every-n 4']);
   const row = Object.fromEntries(results.rows.map((r) => [r.label, r]));
   expect(row['every-frame'].facesCapturedPerFrame).toBe(6);
-  expect(row['every-frame'].drawCallsPerFrame).toBe(22);
+  expect(row['every-frame'].drawCallsPerFrame).toBe(58);  // 6 faces x 3 objects x 3 passes + 4
   expect(row['when-changed'].maxDiff).toBe(0);
   expect(row['when-changed'].comparedFrames).toBe(8);
   expect(row['time-sliced 2'].facesCapturedPerFrame).toBeLessThanOrEqual(2);

@@ -108,15 +108,15 @@ test('every planner and accuracy setting goes by its schema name, both ways', as
   })();
   expect(schema.planner.map((i) => i.name)).toEqual(['policy', 'facesPerFrame', 'everyN', 'captureLod', 'viewLod']);
   await openDemo(page, '?paused&policy=time-sliced&facesPerFrame=3&everyN=7&captureLod=0.5&viewLod=0.25' +
-                       '&distanceIterations=4&mipmaps=true&halfFloat');
+                       '&search=linear&layers=1&mipmaps=true&halfFloat');
   expect(await page.evaluate(() => window.demo.planner())).toMatchObject(
     { policy: 'time-sliced', facesPerFrame: 3, everyN: 7, captureLod: 0.5, viewLod: 0.25 });
   expect(await page.evaluate(() => window.demo.accuracy())).toMatchObject(
-    { distanceIterations: 4, mipmaps: true, halfFloat: true, captureAtOrigin: false, depthBits: 24 });
+    { search: 'linear', layers: 1, mipmaps: true, halfFloat: true, captureAtOrigin: false, depthBits: 24 });
   // everyN does nothing under time-sliced: not in the link; settings at their defaults neither.
   expect(await page.evaluate(() => window.demo.query())).toBe(
     '?scene=ex12-2&policy=time-sliced&facesPerFrame=3&captureLod=0.5&viewLod=0.25&paused&t=0' +
-    '&distanceIterations=4&mipmaps=true&halfFloat=true');
+    '&search=linear&layers=1&mipmaps=true&halfFloat=true');
   // The panel's labels are the schema's.
   for (const info of schema.planner) {
     await expect(page.locator(`#control-${info.name} .lil-name`)).toHaveText(info.label);
@@ -129,19 +129,19 @@ test("an old link's keys are read as the new ones, each with a message naming it
                        '&acc=centre,distance-x2,depth-24,mipmapped,RGBA8,highp&mat=3:0.3,0.3,1,1.52');
   expect(await page.evaluate(() => window.demo.planner())).toMatchObject(
     { policy: 'time-sliced', facesPerFrame: 3, captureLod: 0.5, viewLod: 0.25 });
-  expect(await page.evaluate(() => window.demo.accuracy())).toMatchObject({ distanceIterations: 2, mipmaps: true });
+  expect(await page.evaluate(() => window.demo.accuracy())).toMatchObject({ search: 'linear', mipmaps: true });
   expect(await page.evaluate(() => window.demo.objects()[3].material)).toMatchObject(
     { reflection: 0.3, base: 0.3, fresnel: true, ior: 1.52, environment: 'live' });
   const notes = (await messages(page)).map((m) => m.text);
   for (const expected of ['slice=3: an old link\'s key, now facesPerFrame=3', 'lod=0.5: an old link\'s key, now captureLod=0.5',
                           'vlod=0.25: an old link\'s key, now viewLod=0.25',
-                          'acc=centre,distance-x2,depth-24,mipmapped,RGBA8,highp: an old link\'s form, now mipmaps=true',
+                          'acc=centre,distance-x2,depth-24,mipmapped,RGBA8,highp: an old link\'s form, now search=linear&mipmaps=true',
                           'mat=3:0.3,0.3,1,1.52: an old link\'s form, now mat=3:reflection=0.3,base=0.3,fresnel=true,ior=1.52']) {
     expect(notes.filter((n) => n.startsWith(expected)), expected).toHaveLength(1);
   }
   for (const note of notes) expect(note).not.toContain('\n');  // one line each
   // The address bar has the new keys only.
   await expect.poll(() => query(page)).toBe(
-    '?scene=ex12-2&policy=time-sliced&facesPerFrame=3&captureLod=0.5&viewLod=0.25&paused&t=0&mipmaps=true' +
+    '?scene=ex12-2&policy=time-sliced&facesPerFrame=3&captureLod=0.5&viewLod=0.25&paused&t=0&search=linear&mipmaps=true' +
     '&mat=3:reflection=0.3,fresnel=true');
 });

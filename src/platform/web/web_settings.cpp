@@ -89,7 +89,7 @@ EMSCRIPTEN_KEEPALIVE const char* rf_set_planner(const char* request) {
   return replyDone();
 }
 
-// {"settings": {captureAtOrigin, distanceIterations, ...}, "describe": "centre, distance x2, ..."}
+// {"settings": {captureAtOrigin, search, ...}, "describe": "centre, hierarchical, ..."}
 EMSCRIPTEN_KEEPALIVE const char* rf_accuracy_json() {
   if (!state().demo) return reply(json::object());
   const reflect::AccuracySettings& a = state().demo->accuracySettings();
