@@ -36,5 +36,4 @@ std::string AccuracySettings::describe() const {
   return s;
 }
 
-
 }  // namespace reflect

@@ -74,11 +74,28 @@ TEST(CliOptions, DefaultsAreTheDocumentedOnes) {
 }
 
 TEST(CliOptions, ParsesEveryPlannerAndAccuracySetting) {
-  const CliOptions o = mustParse({"render", "--policy", "time-sliced", "--faces-per-frame", "3",
-                                  "--every-n", "7", "--capture-lod", "0.5", "--view-lod=0.25",
-                                  "--capture-at-origin", "--search", "linear", "--layers", "1",
-                                  "--glass-surfaces", "1", "--depth-bits", "16", "--mipmaps",
-                                  "--half-float", "--mediump"});
+  const CliOptions o = mustParse({"render",
+                                  "--policy",
+                                  "time-sliced",
+                                  "--faces-per-frame",
+                                  "3",
+                                  "--every-n",
+                                  "7",
+                                  "--capture-lod",
+                                  "0.5",
+                                  "--view-lod=0.25",
+                                  "--capture-at-origin",
+                                  "--search",
+                                  "linear",
+                                  "--layers",
+                                  "1",
+                                  "--glass-surfaces",
+                                  "1",
+                                  "--depth-bits",
+                                  "16",
+                                  "--mipmaps",
+                                  "--half-float",
+                                  "--mediump"});
   EXPECT_EQ(o.planner.policy, UpdatePolicy::TimeSliced);
   EXPECT_TRUE(o.policySet);
   EXPECT_EQ(o.planner.facesPerFrame, 3);
