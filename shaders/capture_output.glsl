@@ -8,8 +8,7 @@
 //     screen-space derivatives (a slanted floor spans many depths in one texel);
 //  3. the farthest surface that faces away from the probe, behind the first pass's and within
 //     its own object's size of it (depth test GREATER): where the objects in front end, so the
-//     search knows how deep they are (into a texture of its own; depth_merge.frag then writes it
-//     as the far end of the first pass's ranges);
+//     search knows how deep they are (into a texture of its own, the backs);
 //  2. the nearest surface behind that back which faces the probe (peeled: fragments at or in
 //     front of the back, or facing away, are discarded): what the objects hide, its colour and
 //     depth range in the second layer.
@@ -21,7 +20,8 @@ uniform vec3 u_captureAxis;        // the captured face's look direction
 uniform float u_captureUnit;       // the capture's near plane
 uniform int u_captureFace;         // 0..5, for the peel's look-up of the first layer
 uniform float u_captureExtent;     // the drawn object's size (bounding box diagonal), near units
-uniform highp usampler2DArray u_peelDepths;  // the first layer's codes (pass 2 peels behind)
+uniform highp usampler2DArray u_peelDepths;  // the first layer's codes (passes 2 and 3)
+uniform highp usampler2DArray u_peelBacks;   // the backs pass 3 found (pass 2 peels behind)
 
 layout(location = 0) out vec4 fragColour;
 layout(location = 1) out uvec2 fragDepth;
@@ -29,11 +29,13 @@ layout(location = 1) out uvec2 fragDepth;
 // Codes at most this far behind the first layer's count as the same surface when peeling (two
 // draws of one surface can round to neighbouring codes).
 const uint kPeelSlack = 2u;
-// The depth range a texel stores is at most this fraction of its depth either side: an edge-on
-// triangle at a figure's silhouette would otherwise claim a long wall of depths, which rays
-// passing beside the figure would meet (measured on the default scene over t = 0..7.5 s: 0.05
-// and 0.3 lost 0.3 and 0.2 dB against 0.1).
-const float kMaxSpread = 0.1;
+// The depth range a texel stores reaches at most this fraction of the drawn object's size either
+// side: an edge-on triangle at a figure's silhouette would otherwise claim a long wall of depths,
+// which rays passing beside the figure would meet, while a floor seen at a grazing angle (its
+// size is the scene's) keeps the wide range it really spans across a texel, so no ray slips
+// under it. (Measured on the default scene over t = 0..7.5 s at 400 x 400: 0.01, 0.02 and 0.05
+// lost 0.7, 0.1 and 0.2 dB against 0.03; a cap of 10% of the depth itself, 0.2 dB.)
+const float kMaxSpread = 0.03;
 
 // `normal` (world space) only matters when peeling; `infinite`: the sky.
 void writeOutputs(vec3 colour, vec3 worldPosition, vec3 normal, bool infinite) {
@@ -45,13 +47,14 @@ void writeOutputs(vec3 colour, vec3 worldPosition, vec3 normal, bool infinite) {
   highp vec3 offset = worldPosition - u_captureCentre;
   highp float z = dot(offset, u_captureAxis) / u_captureUnit;
   // Half the depth the surface spans across this texel.
-  highp float spread = min(0.5 * (abs(dFdx(z)) + abs(dFdy(z))), kMaxSpread * z);
+  highp float spread = min(0.5 * (abs(dFdx(z)) + abs(dFdy(z))), kMaxSpread * u_captureExtent);
   uint code = infinite ? kInfiniteDepthCode : encodeDepth(z);
   uint nearCode = infinite ? kInfiniteDepthCode : encodeDepth(z - spread);
   uint farCode = infinite ? kInfiniteDepthCode : encodeDepth(z + spread);
   bool facesAway = !infinite && dot(normal, offset) > 0.0;
   if (u_captureLayer == 2) {
-    uint back = texelFetch(u_peelDepths, ivec3(ivec2(gl_FragCoord.xy), u_captureFace), 0).g;
+    ivec3 texel = ivec3(ivec2(gl_FragCoord.xy), u_captureFace);
+    uint back = max(texelFetch(u_peelDepths, texel, 0).g, texelFetch(u_peelBacks, texel, 0).r);
     if (code <= back + kPeelSlack || facesAway) discard;
   } else if (u_captureLayer == 3) {
     uint front = texelFetch(u_peelDepths, ivec3(ivec2(gl_FragCoord.xy), u_captureFace), 0).r;

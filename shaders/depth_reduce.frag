@@ -1,25 +1,15 @@
-// One level of a face's depth chain from the level below: each texel holds the min and max code
-// of the 2x2 texels it covers (3 wide or high at the last column or row of an odd-sized level),
-// so a cell of any level bounds every surface stored inside it.
-uniform highp usampler2DArray u_source;  // the level below, as the texture's base level
-uniform int u_layer;                     // the face
-uniform ivec2 u_sourceSize;
+// One level of the depth pyramid from the level below (the texture's base level while this pass
+// runs): each texel holds the min and max code of the 2x2 texels it covers. The pyramid tiles
+// the six faces side by side at every level, and each face's tile halves exactly, so the 2x2
+// below a texel always lie in the same face.
+uniform highp usampler2D u_source;
 
 out uvec2 result;
 
 void main() {
-  ivec2 target = ivec2(gl_FragCoord.xy);
-  ivec2 targetSize = max(u_sourceSize / 2, ivec2(1));
-  ivec2 first = target * 2;
-  // An odd source leaves one column (row) over: the last target texel takes it too.
-  ivec2 last = min(first + 1 + ivec2(equal(target, targetSize - 1)) * (u_sourceSize & 1),
-                   u_sourceSize - 1);
-  uvec2 bounds = uvec2(65535u, 0u);
-  for (int y = first.y; y <= last.y; ++y) {
-    for (int x = first.x; x <= last.x; ++x) {
-      uvec2 cell = texelFetch(u_source, ivec3(x, y, u_layer), 0).rg;
-      bounds = uvec2(min(bounds.x, cell.x), max(bounds.y, cell.y));
-    }
-  }
-  result = bounds;
+  ivec2 first = ivec2(gl_FragCoord.xy) * 2;
+  uvec2 a = texelFetch(u_source, first, 0).rg, b = texelFetch(u_source, first + ivec2(1, 0), 0).rg;
+  uvec2 c = texelFetch(u_source, first + ivec2(0, 1), 0).rg;
+  uvec2 d = texelFetch(u_source, first + ivec2(1, 1), 0).rg;
+  result = uvec2(min(min(a.x, b.x), min(c.x, d.x)), max(max(a.y, b.y), max(c.y, d.y)));
 }

@@ -28,11 +28,18 @@ precision highp float;
 precision highp int;
 #include "depth_encoding.glsl"
 
-uniform highp usampler2DArray u_depths;   // the first layer's chain (level 0: one code a texel)
-uniform highp usampler2DArray u_depths2;  // the second layer's (u_layers == 2)
-uniform int u_layers;                     // 1 or 2
-uniform int u_faceSize;                   // texels along a face edge at level 0
-uniform int u_topLevel;                   // the chain's last level (one texel a face)
+// The first layer's depths: level 0 per face, levels 1.. in the pyramid (faces side by side,
+// src/gfx/cube_capture_target.h); the second layer's likewise (u_layers == 2), and the backs of
+// the objects in front (level 0; at the levels above, the pyramid's far ends include them).
+uniform highp usampler2DArray u_depths;
+uniform highp usampler2D u_pyramid;
+uniform highp usampler2DArray u_depths2;
+uniform highp usampler2D u_pyramid2;
+uniform highp usampler2DArray u_backs;
+uniform int u_layers;       // 1 or 2
+uniform int u_faceSize;     // texels along a face edge at level 0
+uniform int u_topLevel;     // the last level: one cell a face
+uniform int u_pyramidTile;  // a face's tile at level 1 (the face size rounded up to a power of 2, halved)
 uniform vec3 u_faceRight[6];              // per face: the view's right, up and look directions
 uniform vec3 u_faceUp[6];
 uniform vec3 u_faceAxis[6];
@@ -40,7 +47,7 @@ uniform vec3 u_faceAxis[6];
 // Behind the nearest stored surface by up to this fraction of its depth still counts as meeting
 // it: a ray that enters a figure's texel from the side meets its side, which the probe cannot see.
 const float kThickness = 0.1;
-const int kMaxSteps = 96;
+const int kMaxSteps = 128;
 const float kNever = 1e30;
 
 int faceOf(vec3 p) {
@@ -48,6 +55,14 @@ int faceOf(vec3 p) {
   if (a.x >= a.y && a.x >= a.z) return p.x >= 0.0 ? 0 : 1;
   if (a.y >= a.z) return p.y >= 0.0 ? 2 : 3;
   return p.z >= 0.0 ? 4 : 5;
+}
+
+// The (near, far) codes of a cell of face f at `level`.
+uvec2 cellCodes(highp usampler2DArray faces, highp usampler2D pyramid, ivec2 cell, int f,
+                int level) {
+  if (level == 0) return texelFetch(faces, ivec3(cell, f), 0).rg;
+  int tile = u_pyramidTile >> (level - 1);
+  return texelFetch(pyramid, ivec2(f * tile + cell.x, cell.y), level - 1).rg;
 }
 
 struct SearchResult {
@@ -68,13 +83,17 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     vec2 xst = vec2(dot(x, right), dot(x, up)), dst = vec2(dot(d, right), dot(d, up));
     float zIn = xz + tau * dz;
     vec2 st = (xst + tau * dst) / zIn;
-    int n = max(u_faceSize >> level, 1);
-    float cells = float(n);
-    ivec2 cell = clamp(ivec2(floor((st * 0.5 + 0.5) * cells)), ivec2(0), ivec2(n - 1));
+    // A level-L cell spans 2^L level-0 texels (the last one in a row may be cut by the face's
+    // edge).
+    int span = 1 << level;
+    int n = (u_faceSize + span - 1) >> level;
+    float texels = float(u_faceSize);
+    ivec2 cell = clamp(ivec2(floor((st * 0.5 + 0.5) * texels)) >> level, ivec2(0), ivec2(n - 1));
     // Where the ray leaves the cell: s (and t) move monotonically along the ray, towards the
     // border on the side of `motion`; s = b where xs + tau ds = b (xz + tau dz).
     vec2 motion = dst * xz - xst * dz;
-    vec2 border = (vec2(cell) + step(0.0, motion)) / cells * 2.0 - 1.0;
+    ivec2 edgeTexel = min((cell + ivec2(step(0.0, motion))) * span, ivec2(u_faceSize));
+    vec2 border = vec2(edgeTexel) / texels * 2.0 - 1.0;
     vec2 crossing = (border * xz - xst) / (dst - border * dz);
     // A crossing behind the ray's origin is never reached; one just behind tau is rounding.
     bvec2 reached = bvec2(abs(motion.x) > 0.0 && crossing.x >= 0.0,
@@ -87,13 +106,15 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     // The first chain: the nearest surfaces' depths (min over the cell) and how far back their
     // objects reach (max; with one layer, each object is taken to be kThickness of its depth
     // deep). The second (two layers): the depths of what lies behind them.
-    uvec2 first = texelFetch(u_depths, ivec3(cell, f), level).rg;
+    uvec2 first = cellCodes(u_depths, u_pyramid, cell, f, level);
     float zFront = decodeDepth(first.x), zBack = decodeDepth(first.y);
     float zBehind = kNever, zBehindEnd = kNever;
     if (u_layers == 2) {
-      uvec2 second = texelFetch(u_depths2, ivec3(cell, f), level).rg;
+      uvec2 second = cellCodes(u_depths2, u_pyramid2, cell, f, level);
       zBehind = decodeDepth(second.x);
       zBehindEnd = decodeDepth(second.y) * (1.0 + kThickness);
+      // Level 0 keeps the backs apart (the pyramid's far ends include them).
+      if (level == 0) zBack = max(zBack, decodeDepth(texelFetch(u_backs, ivec3(cell, f), 0).r));
     } else {
       zBack *= 1.0 + kThickness;
     }
@@ -128,11 +149,16 @@ SearchResult searchDepths(vec3 x, vec3 d) {
       if (free) return SearchResult(d, 0, i);
       return SearchResult(x + tauFree * d, 1, i);
     }
-    // Just past the border, into the next cell (or face), one level coarser.
+    // Just past the border, into the next cell (or face); one level coarser if that border is
+    // also the coarser cell's (else the next cell is this one's sibling, at this level), so a
+    // ray grazing a surface walks along it instead of going up and down at every texel.
+    bool leavesAcross = reached.x && (!reached.y || crossing.x <= crossing.y);
+    int exitTexel = leavesAcross ? edgeTexel.x : edgeTexel.y;
+    if (exitTexel % (2 * span) == 0 || exitTexel >= u_faceSize) level = min(level + 1, u_topLevel);
     tau = tauExit + max(tauExit * 1e-5, 1e-5);
-    level = min(level + 1, u_topLevel);
   }
-  return SearchResult(x + tauFree * d, 1, kMaxSteps);
+  // Out of steps (a long grazing walk): the farthest point reached is the best guess.
+  return SearchResult(x + tau * d, 1, kMaxSteps);
 }
 
 #ifdef REFLECT_MEDIUMP

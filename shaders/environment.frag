@@ -34,6 +34,42 @@ uniform int u_outputDirection; // 1: write the looked-up direction instead (for 
 #include "linear_search.glsl"
 #include "depth_search.glsl"
 
+#if SEARCH == 2
+// The colour a probe stored around `p` (relative to its centre) in `layer`: the four nearest
+// texels of its face, weighed bilinearly, but only those that hold the same surface (a depth
+// within kThickness of p's): at a figure's outline the figure's texels do not bleed into the
+// floor beside it, nor the floor's into the figure.
+vec3 surfaceColour(vec3 p, int layer) {
+  int f = faceOf(p);
+  vec3 right = u_faceRight[f], up = u_faceUp[f], axis = u_faceAxis[f];
+  float z = dot(p, axis);
+  vec2 st = vec2(dot(p, right), dot(p, up)) / z;
+  float n = float(u_faceSize);
+  vec2 texel = (st * 0.5 + 0.5) * n - 0.5;
+  ivec2 first = ivec2(floor(texel));
+  vec2 w = texel - vec2(first);
+  vec3 sum = vec3(0.0);
+  float total = 0.0;
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      ivec2 t = clamp(first + ivec2(i, j), ivec2(0), ivec2(u_faceSize - 1));
+      uint code = layer == 2 ? texelFetch(u_depths2, ivec3(t, f), 0).r
+                             : texelFetch(u_depths, ivec3(t, f), 0).r;
+      float weight = (i == 0 ? 1.0 - w.x : w.x) * (j == 0 ? 1.0 - w.y : w.y);
+      if (abs(decodeDepth(code) - z) > kThickness * z) weight = 0.0;
+      vec2 centre = (vec2(t) + 0.5) / n * 2.0 - 1.0;
+      vec3 direction = axis + centre.x * right + centre.y * up;
+      vec3 c = layer == 2 ? texture(u_environment2, direction).rgb
+                          : texture(u_environment, direction).rgb;
+      sum += weight * c;
+      total += weight;
+    }
+  }
+  if (total > 0.0) return sum / total;
+  return layer == 2 ? texture(u_environment2, p).rgb : texture(u_environment, p).rgb;
+}
+#endif
+
 // The colour the environment shows for the ray from world point `origin` along `d`, and in
 // `direction` the direction it was looked up along.
 vec3 environmentAlong(vec3 origin, vec3 d, out vec3 direction) {
@@ -43,8 +79,10 @@ vec3 environmentAlong(vec3 origin, vec3 d, out vec3 direction) {
 #elif SEARCH == 2
   if (u_search == 1) {
     SearchResult found = searchDepths((origin - u_probeCentre) / u_distanceUnit, d);
-    if (found.layer != 0) direction = found.point;
-    if (found.layer == 2) return texture(u_environment2, direction).rgb;
+    if (found.layer != 0) {
+      direction = found.point;
+      return surfaceColour(found.point, found.layer);
+    }
   }
 #endif
   return texture(u_environment, direction).rgb;

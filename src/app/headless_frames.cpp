@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 
 #include "gfx/offscreen_target.h"
 
@@ -15,13 +16,21 @@ Result<RgbaImage> renderFrameAt(Demo& demo, double seconds, int width, int heigh
   return target.value().readPixels();
 }
 
+double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
 Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, int frames) {
   Result<OffscreenTarget> target = OffscreenTarget::create(width, height);
   if (!target) return Result<BenchResult>::failure(target.error());
   BenchResult result;
   for (int i = 0; i < warmup + frames; ++i) {
+    const double cpuBefore = processCpuMs();
     const FrameStats& s = demo.frame(1.0 / 60.0, target.value().framebuffer(), width, height, true);
     if (i < warmup) continue;
+    result.cpuMs.push_back(processCpuMs() - cpuBefore);
     result.frameMs.push_back(s.frameMs);
     result.captureMs.push_back(s.captureMs);
     result.trianglesPerFrame = s.triangles();

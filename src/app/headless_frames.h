@@ -16,6 +16,9 @@ Result<RgbaImage> renderFrameAt(Demo& demo, double seconds, int width, int heigh
 struct BenchResult {
   std::vector<double> frameMs;
   std::vector<double> captureMs;
+  // CPU time of the whole process (llvmpipe's threads included) per frame: what a frame costs,
+  // much less inflated than wall time when other work shares the machine.
+  std::vector<double> cpuMs;
   size_t trianglesPerFrame = 0;  // of the last frame
   int drawCallsPerFrame = 0;     // of the last frame
   double facesPerFrame = 0;      // mean over the timed frames
@@ -24,6 +27,8 @@ struct BenchResult {
 Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, int frames);
 
 double median(std::vector<double> values);
+// CPU time this process has used so far, in milliseconds.
+double processCpuMs();
 double percentile(std::vector<double> values, double p);
 
 }  // namespace reflect

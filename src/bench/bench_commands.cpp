@@ -62,6 +62,8 @@ std::string runSinglePolicy(const BenchCommandOptions& o, const BenchDemoFactory
       b.trianglesPerFrame);
   std::printf("frame ms   median %.3f  p10 %.3f  p90 %.3f\n", median(b.frameMs),
               percentile(b.frameMs, 0.1), percentile(b.frameMs, 0.9));
+  std::printf("cpu ms     median %.3f  p10 %.3f  p90 %.3f\n", median(b.cpuMs),
+              percentile(b.cpuMs, 0.1), percentile(b.cpuMs, 0.9));
   std::printf("capture ms median %.3f  p10 %.3f  p90 %.3f\n", median(b.captureMs),
               percentile(b.captureMs, 0.1), percentile(b.captureMs, 0.9));
   return {};

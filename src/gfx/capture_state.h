@@ -16,6 +16,10 @@ inline constexpr GLint kDepthsUnit = 1;        // usampler2DArray: its depth cha
 inline constexpr GLint kEnvironment2Unit = 2;  // samplerCube: its second layer's colours
 inline constexpr GLint kDepths2Unit = 3;       // usampler2DArray: the second layer's chain
 inline constexpr GLint kPeelDepthsUnit = 4;    // usampler2DArray: the layer a peel draws behind
+inline constexpr GLint kPeelBacksUnit = 5;     // usampler2DArray: the backs it also peels behind
+inline constexpr GLint kPyramidUnit = 6;       // usampler2D: levels 1.. of a probe's depths
+inline constexpr GLint kPyramid2Unit = 7;      // usampler2D: the same for its second layer
+inline constexpr GLint kBacksUnit = 8;         // usampler2DArray: the backs (level 0)
 
 struct CaptureState {
   int layer = 0;  // 0 the main pass, 1 a capture's first layer, 2 its second
@@ -35,6 +39,7 @@ struct CaptureUniforms {
                       p.optionalUniform("u_captureFace"),  p.optionalUniform("u_captureExtent")};
     glUseProgram(p.id());
     glUniform1i(p.optionalUniform("u_peelDepths"), kPeelDepthsUnit);
+    glUniform1i(p.optionalUniform("u_peelBacks"), kPeelBacksUnit);
     return u;
   }
 

@@ -29,14 +29,28 @@ TextureHandle createColourCube(const CaptureFormat& format, int size) {
 }
 
 // Integer textures are read with texelFetch only, and must not be filtered.
-TextureHandle createDepthChain(int size, int levels) {
+void setIntegerFiltering(GLenum target) {
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+TextureHandle createFaceArray(GLenum format, int size) {
   TextureHandle texture(genTexture());
   glBindTexture(GL_TEXTURE_2D_ARRAY, texture.id());
-  glTexStorage3D(GL_TEXTURE_2D_ARRAY, levels, GL_RG16UI, size, size, 6);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+  glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, format, size, size, 6);
+  setIntegerFiltering(GL_TEXTURE_2D_ARRAY);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  return texture;
+}
+
+// Levels 1..top: the six faces' tiles side by side, P / 2 texels square at its base.
+TextureHandle createPyramid(int top) {
+  TextureHandle texture(genTexture());
+  const int tile = 1 << (top - 1);
+  glBindTexture(GL_TEXTURE_2D, texture.id());
+  glTexStorage2D(GL_TEXTURE_2D, top, GL_RG16UI, 6 * tile, tile);
+  setIntegerFiltering(GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_2D, 0);
   return texture;
 }
 
@@ -50,23 +64,17 @@ Result<CubeCaptureTarget> CubeCaptureTarget::create(const CaptureFormat& format)
   t.format_.faceSize = std::clamp(format.faceSize, 1, std::max(1, static_cast<int>(maxSize)));
   t.format_.layers = format.depthChain ? std::clamp(format.layers, 1, 2) : 1;
   const int size = t.format_.faceSize;
-  while ((size >> t.topLevel_) > 1) ++t.topLevel_;
+  while ((1 << t.topLevel_) < size) ++t.topLevel_;
 
   for (int layer = 0; layer < t.format_.layers; ++layer) {
-    t.colour_[static_cast<size_t>(layer)] = createColourCube(t.format_, size);
+    const size_t l = static_cast<size_t>(layer);
+    t.colour_[l] = createColourCube(t.format_, size);
     if (format.depthChain) {
-      t.depths_[static_cast<size_t>(layer)] = createDepthChain(size, t.topLevel_ + 1);
+      t.faceDepths_[l] = createFaceArray(GL_RG16UI, size);
+      if (t.topLevel_ > 0) t.pyramid_[l] = createPyramid(t.topLevel_);
     }
   }
-
-  if (t.format_.layers == 2) {
-    t.backs_ = TextureHandle(genTexture());
-    glBindTexture(GL_TEXTURE_2D_ARRAY, t.backs_.id());
-    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_R16UI, size, size, 6);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  }
+  if (t.format_.layers == 2) t.backs_ = createFaceArray(GL_R16UI, size);
 
   t.depth_ = RenderbufferHandle(genRenderbuffer());
   glBindRenderbuffer(GL_RENDERBUFFER, t.depth_.id());
@@ -80,7 +88,7 @@ Result<CubeCaptureTarget> CubeCaptureTarget::create(const CaptureFormat& format)
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth_.id());
   t.bindFace(0, 0);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (format.depthChain) t.reduceFramebuffer_ = FramebufferHandle(genFramebuffer());
+  if (format.depthChain) t.pyramidFramebuffer_ = FramebufferHandle(genFramebuffer());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     return Result<CubeCaptureTarget>::failure(
@@ -101,7 +109,7 @@ void CubeCaptureTarget::bindFace(int face, int layer) const {
                          GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face),
                          colour_[l].id(), 0);
   if (format_.depthChain) {
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, depths_[l].id(), 0, face);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, faceDepths_[l].id(), 0, face);
     const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(2, buffers);
   }
@@ -133,67 +141,66 @@ void CubeCaptureTarget::bindBackPass(int face) const {
   glDepthFunc(GL_GREATER);
 }
 
-void CubeCaptureTarget::endBackPass(int face, GLuint merge, GLint mergeLayer) const {
+void CubeCaptureTarget::endBackPass() {
   glDepthFunc(GL_LESS);
-  glBindFramebuffer(GL_FRAMEBUFFER, reduceFramebuffer_.id());
-  glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, depths_[0].id(), 0, face);
-  glViewport(0, 0, format_.faceSize, format_.faceSize);
-  glUseProgram(merge);
-  glUniform1i(mergeLayer, face);
-  glActiveTexture(GL_TEXTURE0);  // the merge's u_backs
-  glBindTexture(GL_TEXTURE_2D_ARRAY, backs_.id());
-  glDisable(GL_DEPTH_TEST);
-  glColorMask(GL_FALSE, GL_TRUE, GL_FALSE, GL_FALSE);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glEnable(GL_DEPTH_TEST);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
 }
 
-void CubeCaptureTarget::reduceDepths(int face, int layer, GLuint reduce, GLint sourceSize,
-                                     GLint sourceLayer) const {
-  if (!format_.depthChain) return;
-  const GLuint chain = depths_[static_cast<size_t>(layer)].id();
-  glBindFramebuffer(GL_FRAMEBUFFER, reduceFramebuffer_.id());
-  glUseProgram(reduce);
-  glUniform1i(sourceLayer, face);
-  glActiveTexture(GL_TEXTURE0);  // the reduction's u_source
-  glBindTexture(GL_TEXTURE_2D_ARRAY, chain);
+void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
   glDisable(GL_DEPTH_TEST);
-  for (int level = 1; level <= topLevel_; ++level) {
-    // The level below is the only one the program may read: the one written is outside the
-    // sampled range, so this is no feedback loop (WebGL checks).
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, level - 1);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, level - 1);
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, chain, level, face);
-    const int below = std::max(format_.faceSize >> (level - 1), 1);
-    const int size = std::max(format_.faceSize >> level, 1);
-    glUniform2i(sourceSize, below, below);
-    glViewport(0, 0, size, size);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (format_.depthChain && topLevel_ > 0) {
+    glBindFramebuffer(GL_FRAMEBUFFER, pyramidFramebuffer_.id());
+    const int baseTile = 1 << (topLevel_ - 1);
+    for (int layer = 0; layer < format_.layers; ++layer) {
+      const GLuint pyramid = pyramid_[static_cast<size_t>(layer)].id();
+      // Level 1, all faces in one draw, from the faces' level 0 (and the backs).
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, 0);
+      glViewport(0, 0, 6 * baseTile, baseTile);
+      glUseProgram(programs.first);
+      const bool backs = layer == 0 && format_.layers == 2;
+      glUniform1i(programs.useBacks, backs ? 1 : 0);
+      glUniform1i(programs.faceSize, format_.faceSize);
+      glUniform1i(programs.tile, baseTile);
+      glActiveTexture(GL_TEXTURE0);  // u_faces
+      glBindTexture(GL_TEXTURE_2D_ARRAY, faceDepths_[static_cast<size_t>(layer)].id());
+      glActiveTexture(GL_TEXTURE1);  // u_backs
+      glBindTexture(GL_TEXTURE_2D_ARRAY, backs ? backs_.id() : 0);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      // Levels 2..top, each from the one below, which is the only level the draw may read: the
+      // one written is outside the sampled range, so this is no feedback loop (WebGL checks).
+      glUseProgram(programs.reduce);
+      glBindTexture(GL_TEXTURE_2D, pyramid);
+      for (int mip = 1; mip < topLevel_; ++mip) {
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, mip - 1);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mip - 1);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, mip);
+        glViewport(0, 0, 6 * (baseTile >> mip), baseTile >> mip);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+      }
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, topLevel_ - 1);
+      glBindTexture(GL_TEXTURE_2D, 0);
+    }
   }
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, topLevel_);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  glEnable(GL_DEPTH_TEST);
-}
-
-void CubeCaptureTarget::finish() const {
-  if (!format_.mipmaps) return;
-  for (int layer = 0; layer < format_.layers; ++layer) {
-    glBindTexture(GL_TEXTURE_CUBE_MAP, colour_[static_cast<size_t>(layer)].id());
-    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+  if (format_.mipmaps) {
+    for (int layer = 0; layer < format_.layers; ++layer) {
+      glBindTexture(GL_TEXTURE_CUBE_MAP, colour_[static_cast<size_t>(layer)].id());
+      glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    }
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   }
-  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
 }
 
 void CubeCaptureTarget::abandon() {
   for (TextureHandle& t : colour_) t.abandon();
-  for (TextureHandle& t : depths_) t.abandon();
+  for (TextureHandle& t : faceDepths_) t.abandon();
+  for (TextureHandle& t : pyramid_) t.abandon();
   backs_.abandon();
   depth_.abandon();
   framebuffer_.abandon();
-  reduceFramebuffer_.abandon();
+  pyramidFramebuffer_.abandon();
 }
 
 }  // namespace reflect

@@ -1,12 +1,16 @@
 // The live environment of one probe: per stored layer, a cube texture of colours and, for the
-// hierarchical search, a depth chain; one framebuffer and one depth renderbuffer shared by the six
-// faces (they are drawn in turn).
+// hierarchical search, the faces' depth codes and their min/max pyramid; one framebuffer and one
+// depth renderbuffer shared by the six faces (they are drawn in turn).
 //
-// The depth chain is a 2D array texture, one layer per cube face in GL face order, RG16UI: at
-// level 0 each texel holds the depth code of what the face saw there (shaders/depth_encoding.glsl)
-// twice, and each level above holds the min and max of the 2x2 texels below it. A 2D array, not a
-// cube, because GLSL ES 3.00 has no texelFetch on cube samplers, and the search addresses texels
-// of a face and level exactly.
+// Depths (shaders/depth_encoding.glsl) live in two textures per layer, both RG16UI, read with
+// texelFetch only (GLSL ES 3.00 has no texelFetch on cube samplers):
+//  - level 0: a 2D array, one layer per cube face in GL face order, N x N: each texel's (near,
+//    far) codes as the capture wrote them;
+//  - levels 1..top: one 2D texture with the six faces side by side and a mip per level. With P
+//    the face size rounded up to a power of two, level L's tile is P / 2^L texels square, so
+//    every tile halves exactly and one draw reduces all six faces: one draw per level, not six.
+// A level-L cell covers the 2^L x 2^L level-0 texels at its index times 2^L (clipped to N); each
+// holds the min of their near codes and the max of their far codes.
 #pragma once
 
 #include <array>
@@ -22,9 +26,17 @@ struct CaptureFormat {
   bool halfFloat = false;
   int depthBits = 24;
   bool mipmaps = false;
-  bool depthChain = false;  // the hierarchical search's min/max chains
-  int layers = 1;           // 1 or 2 (a second layer needs the depth chain)
+  bool depthChain = false;  // the hierarchical search's depths and pyramids
+  int layers = 1;           // 1 or 2 (a second layer needs the depths)
   bool operator==(const CaptureFormat&) const = default;
+};
+
+// The programs that build a pyramid (fullscreen.vert + depth_pyramid.frag / depth_reduce.frag)
+// and where their uniforms are.
+struct PyramidPrograms {
+  GLuint first = 0;
+  GLint useBacks = -1, faceSize = -1, tile = -1;
+  GLuint reduce = 0;
 };
 
 class CubeCaptureTarget {
@@ -33,40 +45,40 @@ class CubeCaptureTarget {
   // (an RGBA16F face needs EXT_color_buffer_half_float or _float: the error says so).
   static Result<CubeCaptureTarget> create(const CaptureFormat& format);
 
-  // Binds the framebuffer with `face` (0..5, GL order) of `layer` (0 or 1) as colour (and its
-  // depth chain's level 0 as the second colour attachment) and sets the viewport.
+  // Binds the framebuffer with `face` (0..5, GL order) of `layer` (0 or 1) as colour (and that
+  // face's level-0 depths as the second colour attachment) and sets the viewport.
   void bindFace(int face, int layer) const;
-  // Clears the bound face: colour to `colour` with alpha `alpha`, the depth chain's two channels
-  // to `codes`, the depth buffer to the far plane.
+  // Clears the bound face: colour to `colour` with alpha `alpha`, the depths' two channels to
+  // `codes`, the depth buffer to the far plane.
   void clearFace(const float colour[3], float alpha, const unsigned codes[2]) const;
   // Binds `face` of the backs texture alone (shaders/capture_output.glsl, pass 3: the farthest
   // back of each object in front), clears it and the depth buffer, and keeps the farthest
-  // fragment. endBackPass() writes the backs found into the first layer's depth chain (level 0,
-  // the far end of each texel's range) with `merge` (fullscreen.vert + depth_merge.frag, its
-  // face uniform at `mergeLayer`) and restores the depth test.
+  // fragment; endBackPass() restores the depth test.
   void bindBackPass(int face) const;
-  void endBackPass(int face, GLuint merge, GLint mergeLayer) const;
-  // Rebuilds levels 1.. of `layer`'s depth chain for `face` from its level 0 with `reduce`, a
-  // program of fullscreen.vert + depth_reduce.frag whose uniforms are at the given locations.
-  void reduceDepths(int face, int layer, GLuint reduce, GLint sourceSize, GLint sourceLayer) const;
-  // After the faces are drawn: rebuilds the colour mip chain when the format asks for one.
-  void finish() const;
+  static void endBackPass();
+  // After the faces are drawn: rebuilds every layer's pyramid from its level 0 (and, for the
+  // first layer, the backs), then the colour mip chain when the format asks for one. Leaves the
+  // depth test off.
+  void finish(const PyramidPrograms& programs) const;
 
   GLuint texture(int layer = 0) const { return colour_[static_cast<size_t>(layer)].id(); }
-  GLuint depthChain(int layer = 0) const { return depths_[static_cast<size_t>(layer)].id(); }
+  GLuint faceDepths(int layer = 0) const { return faceDepths_[static_cast<size_t>(layer)].id(); }
+  GLuint pyramid(int layer = 0) const { return pyramid_[static_cast<size_t>(layer)].id(); }
+  GLuint backs() const { return backs_.id(); }
   int faceSize() const { return format_.faceSize; }
-  // The chain's last level: 1 x 1 texel a face.
+  // The last level: one cell a face (log2 of the face size rounded up to a power of two).
   int topLevel() const { return topLevel_; }
   const CaptureFormat& format() const { return format_; }
   void abandon();
 
  private:
   std::array<TextureHandle, 2> colour_;
-  std::array<TextureHandle, 2> depths_;
-  TextureHandle backs_;  // R16UI, one level (two layers only)
+  std::array<TextureHandle, 2> faceDepths_;
+  std::array<TextureHandle, 2> pyramid_;
+  TextureHandle backs_;  // R16UI 2D array, level 0 only (two layers only)
   RenderbufferHandle depth_;
   FramebufferHandle framebuffer_;
-  FramebufferHandle reduceFramebuffer_;
+  FramebufferHandle pyramidFramebuffer_;
   CaptureFormat format_;
   int topLevel_ = 0;
 };

@@ -64,10 +64,11 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   Result<ShaderProgram> cubeTextured =
       ShaderProgram::build("mesh.vert", "cube_textured.frag", mediump, precision);
   if (!cubeTextured) return Result<SceneRenderer>::failure(cubeTextured.error());
+  Result<ShaderProgram> pyramidFirst =
+      ShaderProgram::build("fullscreen.vert", "depth_pyramid.frag");
+  if (!pyramidFirst) return Result<SceneRenderer>::failure(pyramidFirst.error());
   Result<ShaderProgram> reduce = ShaderProgram::build("fullscreen.vert", "depth_reduce.frag");
   if (!reduce) return Result<SceneRenderer>::failure(reduce.error());
-  Result<ShaderProgram> merge = ShaderProgram::build("fullscreen.vert", "depth_merge.frag");
-  if (!merge) return Result<SceneRenderer>::failure(merge.error());
 
   SceneRenderer r;
   const ShaderProgram& p = phong.value();
@@ -107,12 +108,16 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
                                       e.uniform("u_outputDirection"),
                                       e.optionalUniform("u_layers"),
                                       e.optionalUniform("u_faceSize"),
-                                      e.optionalUniform("u_topLevel")};
+                                      e.optionalUniform("u_topLevel"),
+                                      e.optionalUniform("u_pyramidTile")};
   glUseProgram(e.id());
   glUniform1i(e.uniform("u_environment"), kEnvironmentUnit);
   glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
   glUniform1i(e.optionalUniform("u_depths"), kDepthsUnit);
   glUniform1i(e.optionalUniform("u_depths2"), kDepths2Unit);
+  glUniform1i(e.optionalUniform("u_pyramid"), kPyramidUnit);
+  glUniform1i(e.optionalUniform("u_pyramid2"), kPyramid2Unit);
+  glUniform1i(e.optionalUniform("u_backs"), kBacksUnit);
   if (accuracy.search == Search::Hierarchical) setFaceFrames(e);
   r.environment_.program = environment.take();
 
@@ -124,16 +129,16 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   glUniform1i(c.uniform("u_environment"), kEnvironmentUnit);
   r.cubeTextured_.program = cubeTextured.take();
 
-  const ShaderProgram& d = reduce.value();
-  r.reduce_ = ReduceProgram{ShaderProgram{}, d.uniform("u_sourceSize"), d.uniform("u_layer")};
-  glUseProgram(d.id());
-  glUniform1i(d.uniform("u_source"), 0);
-  r.reduce_.program = reduce.take();
-  const ShaderProgram& m = merge.value();
-  r.merge_ = MergeProgram{ShaderProgram{}, m.uniform("u_layer")};
-  glUseProgram(m.id());
-  glUniform1i(m.uniform("u_backs"), 0);
-  r.merge_.program = merge.take();
+  const ShaderProgram& pf = pyramidFirst.value();
+  glUseProgram(pf.id());
+  glUniform1i(pf.uniform("u_faces"), 0);
+  glUniform1i(pf.uniform("u_backs"), 1);
+  glUseProgram(reduce.value().id());
+  glUniform1i(reduce.value().uniform("u_source"), 0);
+  r.pyramid_.uses = PyramidPrograms{pf.id(), pf.uniform("u_useBacks"), pf.uniform("u_faceSize"),
+                                    pf.uniform("u_tile"), reduce.value().id()};
+  r.pyramid_.first = pyramidFirst.take();
+  r.pyramid_.reduce = reduce.take();
   glUseProgram(0);
 
   r.emptyDepths_ = TextureHandle(genTexture());
@@ -142,8 +147,17 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  for (GLint unit : {kDepthsUnit, kDepths2Unit, kPeelDepthsUnit}) {
+  r.emptyPyramid_ = TextureHandle(genTexture());
+  glBindTexture(GL_TEXTURE_2D, r.emptyPyramid_.id());
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RG16UI, 1, 1);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  for (GLint unit : {kDepthsUnit, kDepths2Unit, kPeelDepthsUnit, kPeelBacksUnit, kBacksUnit}) {
     bindTexture(unit, GL_TEXTURE_2D_ARRAY, r.emptyDepths_.id());
+  }
+  for (GLint unit : {kPyramidUnit, kPyramid2Unit}) {
+    bindTexture(unit, GL_TEXTURE_2D, r.emptyPyramid_.id());
   }
   glActiveTexture(GL_TEXTURE0);
   r.emptyVertexArray_ = VertexArrayHandle(genVertexArray());
@@ -219,6 +233,7 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
 void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, int index) {
   const SceneObject& object = scene.objects[static_cast<size_t>(index)];
   GLuint colour = 0, colour2 = 0, depths = emptyDepths_.id(), depths2 = emptyDepths_.id();
+  GLuint pyramid = emptyPyramid_.id(), pyramid2 = emptyPyramid_.id(), backs = emptyDepths_.id();
   int layers = 1, faceSize = 1, topLevel = 0;
   bool search = false;
   glm::vec3 centre(0.0f);
@@ -233,8 +248,13 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
       layers = t.format().layers;
       colour2 = layers == 2 ? t.texture(1) : colour;
       if (t.format().depthChain) {
-        depths = t.depthChain(0);
-        if (layers == 2) depths2 = t.depthChain(1);
+        depths = t.faceDepths(0);
+        if (t.topLevel() > 0) pyramid = t.pyramid(0);
+        if (layers == 2) {
+          depths2 = t.faceDepths(1);
+          if (t.topLevel() > 0) pyramid2 = t.pyramid(1);
+          backs = t.backs();
+        }
       }
       faceSize = t.faceSize();
       topLevel = t.topLevel();
@@ -249,6 +269,9 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, colour2 ? colour2 : colour);
   bindTexture(kDepthsUnit, GL_TEXTURE_2D_ARRAY, depths);
   bindTexture(kDepths2Unit, GL_TEXTURE_2D_ARRAY, depths2);
+  bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
+  bindTexture(kPyramid2Unit, GL_TEXTURE_2D, pyramid2);
+  bindTexture(kBacksUnit, GL_TEXTURE_2D_ARRAY, backs);
   glActiveTexture(GL_TEXTURE0);
   glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(centre));
   glUniform1f(environment_.distanceUnit, scene.capture.near);
@@ -256,6 +279,7 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   glUniform1i(environment_.layers, layers);
   glUniform1i(environment_.faceSize, faceSize);
   glUniform1i(environment_.topLevel, topLevel);
+  glUniform1i(environment_.pyramidTile, topLevel > 0 ? 1 << (topLevel - 1) : 0);
 }
 
 PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
@@ -375,27 +399,25 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
           const unsigned codes[2] = {farCode, farCode};
           t.clearFace(clear, accuracy_.search == Search::Linear ? farAlpha : 1.0f, codes);
         }
+        // Passes 2 and 3 peel behind pass 1's depths, and pass 2 behind pass 3's backs.
         bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY,
-                    layer == 1 ? emptyDepths_.id() : t.depthChain(0));
+                    layer == 1 ? emptyDepths_.id() : t.faceDepths(0));
+        bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY,
+                    layer == 2 ? t.backs() : emptyDepths_.id());
         const CaptureState pass{layer, probe.centre, axis, scene.capture.near, face.face};
         // Other mirrors in view use their cube as it was before this frame's capture of them
         // (one bounce); they are seen from the probe centre.
         counts += drawItems(scene, seconds, plan, face.draws, projection * view, lightingEye,
                             probe.centre, pass, false);
         if (skybox_ && layer != 3) skybox_->draw(projection, view, pass);
-        if (layer == 3) {
-          glBindVertexArray(emptyVertexArray_.id());
-          t.endBackPass(face.face, merge_.program.id(), merge_.layer);
-        }
+        if (layer == 3) CubeCaptureTarget::endBackPass();
       }
       bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY, emptyDepths_.id());
-      glBindVertexArray(emptyVertexArray_.id());
-      for (int layer = 0; layer < t.format().layers; ++layer) {
-        t.reduceDepths(face.face, layer, reduce_.program.id(), reduce_.sourceSize,
-                       reduce_.sourceLayer);
-      }
+      bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY, emptyDepths_.id());
     }
-    t.finish();
+    glBindVertexArray(emptyVertexArray_.id());
+    t.finish(pyramid_.uses);
+    glEnable(GL_DEPTH_TEST);
   }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
@@ -430,8 +452,9 @@ void SceneRenderer::abandon() {
   phong_.program.abandon();
   environment_.program.abandon();
   cubeTextured_.program.abandon();
-  reduce_.program.abandon();
-  merge_.program.abandon();
+  pyramid_.first.abandon();
+  pyramid_.reduce.abandon();
+  emptyPyramid_.abandon();
   emptyDepths_.abandon();
   emptyVertexArray_.abandon();
   if (skybox_) skybox_->abandon();

@@ -84,20 +84,16 @@ class SceneRenderer {
     CaptureUniforms capture;
     GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
         refracts, eta, fresnelF0, fresnel, twoSurfaces, glassSphere, probeCentre, distanceUnit,
-        search, outputDirection, layers, faceSize, topLevel;
+        search, outputDirection, layers, faceSize, topLevel, pyramidTile;
   };
   struct CubeTexturedProgram {
     ShaderProgram program;
     CaptureUniforms capture;
     GLint viewProjection, model, normalMatrix;
   };
-  struct ReduceProgram {
-    ShaderProgram program;
-    GLint sourceSize, sourceLayer;
-  };
-  struct MergeProgram {
-    ShaderProgram program;
-    GLint layer;
+  struct PyramidProgramSet {
+    ShaderProgram first, reduce;
+    PyramidPrograms uses;
   };
   enum class ProgramKind { Phong, Environment, CubeTextured };
 
@@ -119,12 +115,12 @@ class SceneRenderer {
   PhongProgram phong_;
   EnvironmentProgram environment_;
   CubeTexturedProgram cubeTextured_;
-  ReduceProgram reduce_;
-  MergeProgram merge_;
+  PyramidProgramSet pyramid_;
   std::unique_ptr<SkyboxPass> skybox_;
   // Bound to the depth units whenever nothing else is, so no program ever samples a texture the
   // pass renders into (a feedback loop WebGL refuses to draw).
   TextureHandle emptyDepths_;
+  TextureHandle emptyPyramid_;
   VertexArrayHandle emptyVertexArray_;  // the reduction's fullscreen triangle has no attributes
   std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
   AccuracySettings accuracy_;

@@ -282,10 +282,15 @@ struct Tracer {
   }
 
   // What the ray origin + t dir (t > 0) sees among the objects other than `leaving`, clamped as
-  // a capture texel is. `depth` counts the reflective surfaces the ray has left.
+  // a capture texel is. `depth` counts the reflective surfaces the ray has left. The world a
+  // reflector sees ends at its probe's far planes, as the main camera's ends at its own: a
+  // surface farther than the capture's far distance along any axis from the probe centre is
+  // not there (the floor's far reaches at a grazing reflection show the background).
   glm::vec3 radiance(int leaving, const glm::vec3& origin, const glm::vec3& dir, int depth,
                      Hit* met) const {
-    const Hit hit = trace(world.excluding(leaving), meshes, origin, dir, 0.0f, kInfinity);
+    Hit hit = trace(world.excluding(leaving), meshes, origin, dir, 0.0f, kInfinity);
+    const glm::vec3 away = glm::abs(hit.position - centres[static_cast<size_t>(leaving)]);
+    if (hit.object >= 0 && std::max({away.x, away.y, away.z}) > scene.capture.far) hit = Hit{};
     if (met) *met = hit;
     if (hit.object < 0) return background(dir);
     if (scene.objects[static_cast<size_t>(hit.object)].material != Material::Phong &&

@@ -1,65 +1,107 @@
-// The hierarchical search's depth chains, read back: level 0 holds the depth code of what each
-// face saw (the same code the C++ side computes), and every level above bounds the one below.
+// The hierarchical search's depths, read back: every pyramid cell bounds the level-0 texels it
+// covers (their near codes' min, their far codes' and backs' max), texels past a face's edge
+// hold nothing, and the capture's clear code is the C++ side's depthCode of the far plane.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "core/cube_faces.h"
 #include "core/depth_code.h"
 #include "gfx/cube_capture_target.h"
 #include "gfx/gl.h"
 #include "gfx/gl_handle.h"
 #include "gfx/offscreen_target.h"
+#include "gfx/scene_renderer.h"
 #include "gl_fixture.h"
 
 namespace reflect {
 namespace {
 
-// min and max codes of one level of one face, row-major from the bottom row.
-std::vector<glm::uvec2> readChain(GLuint chain, int face, int level, int size) {
+// An integer texture image, read as (R, G) per texel, rows from the bottom.
+std::vector<glm::uvec2> readCodes(GLuint texture, bool array, int layer, int level, int width,
+                                  int height) {
   FramebufferHandle fb(genFramebuffer());
   glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
-  glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, chain, level, face);
-  std::vector<GLuint> rgba(static_cast<size_t>(size * size * 4));
-  glReadPixels(0, 0, size, size, GL_RGBA_INTEGER, GL_UNSIGNED_INT, rgba.data());
+  if (array) {
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, texture, level, layer);
+  } else {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, level);
+  }
+  std::vector<GLuint> rgba(static_cast<size_t>(width * height * 4));
+  glReadPixels(0, 0, width, height, GL_RGBA_INTEGER, GL_UNSIGNED_INT, rgba.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   std::vector<glm::uvec2> out;
   for (size_t i = 0; i < rgba.size(); i += 4) out.push_back({rgba[i], rgba[i + 1]});
   return out;
 }
 
-TEST(DepthChain, LevelsBoundTheLevelBelowAndLevelZeroHoldsTheDepthCodes) {
-  auto demo = testing::makeDemo(makeDynamicReflectionScene());
+void checkPyramid(const CubeCaptureTarget& probe, int layer) {
+  const int n = probe.faceSize(), top = probe.topLevel(), tile = 1 << (top - 1);
+  const bool backs = layer == 0 && probe.format().layers == 2;
+  for (int level = 1; level <= top; ++level) {
+    const int t = tile >> (level - 1), span = 1 << level;
+    const std::vector<glm::uvec2> pyramid =
+        readCodes(probe.pyramid(layer), false, 0, level - 1, 6 * t, t);
+    for (int face = 0; face < 6; ++face) {
+      const std::vector<glm::uvec2> base = readCodes(probe.faceDepths(layer), true, face, 0, n, n);
+      std::vector<glm::uvec2> back;
+      if (backs) back = readCodes(probe.backs(), true, face, 0, n, n);
+      for (int y = 0; y < t; ++y) {
+        for (int x = 0; x < t; ++x) {
+          glm::uvec2 expected(kInfiniteDepthCode, 0);
+          for (int j = y * span; j < std::min((y + 1) * span, n); ++j) {
+            for (int i = x * span; i < std::min((x + 1) * span, n); ++i) {
+              const size_t k = static_cast<size_t>(j * n + i);
+              glm::uvec2 c = base[k];
+              ASSERT_LE(c.x, c.y) << "level 0 texel " << i << "," << j;
+              if (backs) c.y = std::max(c.y, back[k].x);
+              expected = {std::min(expected.x, c.x), std::max(expected.y, c.y)};
+            }
+          }
+          ASSERT_EQ(pyramid[static_cast<size_t>(y * 6 * t + face * t + x)], expected)
+              << "layer " << layer << " face " << face << " level " << level << " cell " << x << ","
+              << y;
+        }
+      }
+    }
+  }
+}
+
+void checkScene(Scene scene, int layersExpected) {
+  auto demo = testing::makeDemo(scene);
   auto target = OffscreenTarget::create(64, 64);
   ASSERT_TRUE(target);
   demo->frame(0.0, target.value().framebuffer(), 64, 64, true);
   const CubeCaptureTarget* probe = demo->renderer()->probeTarget(demo->scene().reflectorIndex());
   ASSERT_NE(probe, nullptr);
   ASSERT_TRUE(probe->format().depthChain);
-  const int n = probe->faceSize();
-  for (int face = 0; face < 6; ++face) {
-    std::vector<glm::uvec2> below = readChain(probe->depthChain(0), face, 0, n);
-    for (const glm::uvec2& c : below) ASSERT_LE(c.x, c.y);
-    for (int level = 1; level <= probe->topLevel(); ++level) {
-      const int size = std::max(n >> level, 1), belowSize = std::max(n >> (level - 1), 1);
-      const std::vector<glm::uvec2> here = readChain(probe->depthChain(0), face, level, size);
-      for (int y = 0; y < size; ++y) {
-        for (int x = 0; x < size; ++x) {
-          glm::uvec2 expected(kInfiniteDepthCode, 0);
-          for (int j = 2 * y; j < std::min(2 * y + 2, belowSize); ++j) {
-            for (int i = 2 * x; i < std::min(2 * x + 2, belowSize); ++i) {
-              const glm::uvec2 c = below[static_cast<size_t>(j * belowSize + i)];
-              expected = {std::min(expected.x, c.x), std::max(expected.y, c.y)};
-            }
-          }
-          ASSERT_EQ(here[static_cast<size_t>(y * size + x)], expected)
-              << "face " << face << " level " << level << " texel " << x << "," << y;
-        }
-      }
-      below = here;
-    }
-  }
-  EXPECT_TRUE(checkGlError("depth chain test"));
+  ASSERT_EQ(probe->format().layers, layersExpected);
+  for (int layer = 0; layer < probe->format().layers; ++layer) checkPyramid(*probe, layer);
+  EXPECT_TRUE(checkGlError("depth pyramid test"));
+}
+
+TEST(DepthPyramid, EveryCellBoundsTheTexelsItCoversInBothLayers) {
+  checkScene(makeDynamicReflectionScene(), 2);
+}
+
+TEST(DepthPyramid, AFaceSizeThatIsNoPowerOfTwoLeavesThePaddingEmpty) {
+  Scene scene = makeDynamicReflectionScene();
+  scene.capture.faceSize = 100;  // tiles of 64 at level 1: 14 texels a row are padding
+  checkScene(scene, 2);
+}
+
+TEST(DepthPyramid, WhereNothingWasDrawnTheCodeIsTheFarPlanesAsTheCSideComputesIt) {
+  Scene scene = makeDynamicReflectionScene();
+  scene.capture.faceSize = 16;
+  auto demo = testing::makeDemo(scene);
+  auto target = OffscreenTarget::create(16, 16);
+  ASSERT_TRUE(target);
+  demo->frame(0.0, target.value().framebuffer(), 16, 16, true);
+  const CubeCaptureTarget* probe = demo->renderer()->probeTarget(demo->scene().reflectorIndex());
+  ASSERT_NE(probe, nullptr);
+  // Straight up (+Y) from the sphere's centre there is nothing: the clear value.
+  const std::vector<glm::uvec2> up = readCodes(probe->faceDepths(0), true, 2, 0, 16, 16);
+  const uint32_t far = depthCode(scene.capture.far / scene.capture.near);
+  EXPECT_EQ(up[8 * 16 + 8], glm::uvec2(far, far));
 }
 
 }  // namespace

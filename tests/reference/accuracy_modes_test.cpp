@@ -9,6 +9,7 @@
 #include "../gl/gl_fixture.h"
 #include "bench/accuracy.h"
 #include "bench/sweep.h"
+#include "core/settings_schema.h"
 
 namespace reflect {
 namespace {
@@ -81,7 +82,7 @@ TEST(Sweep, CsvAndSvgAreWellFormed) {
   std::istringstream lines(csv);
   std::string header, line;
   std::getline(lines, header);
-  EXPECT_EQ(header.rfind("name,setting,face_size,ms,", 0), 0u);
+  EXPECT_EQ(header.rfind("name,setting,settings,face_size,ms,", 0), 0u);
   for (const char* column : {"ms", "psnr_db", "rmse", "p95"}) {
     EXPECT_NE(("," + header + ",").find(std::string(",") + column + ","), std::string::npos)
         << column;
@@ -101,6 +102,15 @@ TEST(Sweep, CsvAndSvgAreWellFormed) {
     EXPECT_EQ(fields, headerFields) << line;
   }
   EXPECT_EQ(rows, 2);
+  // The settings column is the settings by the schema's names, as JSON the page applies.
+  const size_t start = csv.find("\"{", csv.find("\noriginal,")), end = csv.find("}\"", start);
+  std::string json = csv.substr(start + 1, end - start);
+  for (size_t q = json.find("\"\""); q != std::string::npos; q = json.find("\"\"", q + 1)) {
+    json.erase(q, 1);
+  }
+  AccuracySettings back;
+  EXPECT_EQ(applySettingsJson(nlohmann::json::parse(json), accuracyFields(), back), "");
+  EXPECT_TRUE(back == original.setting.accuracy) << json;
   EXPECT_NE(csv.find("\noriginal,"), std::string::npos);
   EXPECT_NE(csv.find("\ndefault,"), std::string::npos);
   const std::string svg = sweepSvg({original, fast});
