@@ -6,6 +6,13 @@
 // reduction (depth_reduce.frag) and the search (depth_search.glsl).
 const uint kInfiniteDepthCode = 65535u;
 
+// Where a capture cannot see how deep an object is (one stored layer, or what lies behind the
+// first), the object is taken to reach this fraction of its depth behind its front: a ray that
+// enters a figure's texel from the side meets its side, which the probe cannot see. The capture
+// writes it into the far end of the texel's range. (Measured on the default scene at 400 x 400:
+// 0.05 and 0.2 lost 0.2 and 0.1 dB against 0.1.)
+const float kThickness = 0.1;
+
 uint encodeDepth(highp float z) {
   highp float e = 1.0 - 1.0 / max(z, 1.0);
   return uint(clamp(floor(e * 65535.0 + 0.5), 0.0, 65534.0));

@@ -28,25 +28,18 @@ precision highp float;
 precision highp int;
 #include "depth_encoding.glsl"
 
-// The first layer's depths: level 0 per face, levels 1.. in the pyramid (faces side by side,
-// src/gfx/cube_capture_target.h); the second layer's likewise (u_layers == 2), and the backs of
-// the objects in front (level 0; at the levels above, the pyramid's far ends include them).
-uniform highp usampler2DArray u_depths;
+// The first layer's depth pyramid (faces side by side, a mip per level:
+// src/gfx/cube_capture_target.h), and the second layer's (u_layers == 2).
 uniform highp usampler2D u_pyramid;
-uniform highp usampler2DArray u_depths2;
 uniform highp usampler2D u_pyramid2;
-uniform highp usampler2DArray u_backs;
 uniform int u_layers;       // 1 or 2
 uniform int u_faceSize;     // texels along a face edge at level 0
 uniform int u_topLevel;     // the last level: one cell a face
-uniform int u_pyramidTile;  // a face's tile at level 1 (the face size rounded up to a power of 2, halved)
+uniform int u_pyramidTile;  // a face's tile at level 0 (the face size rounded up to a power of 2)
 uniform vec3 u_faceRight[6];              // per face: the view's right, up and look directions
 uniform vec3 u_faceUp[6];
 uniform vec3 u_faceAxis[6];
 
-// Behind the nearest stored surface by up to this fraction of its depth still counts as meeting
-// it: a ray that enters a figure's texel from the side meets its side, which the probe cannot see.
-const float kThickness = 0.1;
 const int kMaxSteps = 128;
 const float kNever = 1e30;
 
@@ -58,11 +51,8 @@ int faceOf(vec3 p) {
 }
 
 // The (near, far) codes of a cell of face f at `level`.
-uvec2 cellCodes(highp usampler2DArray faces, highp usampler2D pyramid, ivec2 cell, int f,
-                int level) {
-  if (level == 0) return texelFetch(faces, ivec3(cell, f), 0).rg;
-  int tile = u_pyramidTile >> (level - 1);
-  return texelFetch(pyramid, ivec2(f * tile + cell.x, cell.y), level - 1).rg;
+uvec2 cellCodes(highp usampler2D pyramid, ivec2 cell, int f, int level) {
+  return texelFetch(pyramid, ivec2(f * (u_pyramidTile >> level) + cell.x, cell.y), level).rg;
 }
 
 struct SearchResult {
@@ -71,68 +61,82 @@ struct SearchResult {
   int steps;   // iterations used (for measuring the search)
 };
 
+// The ray's depth z as the fraction depth codes are of 65535 (1 - 1/z: depth_encoding.glsl), so
+// it compares with stored codes without decoding them; 1/z also projects the ray onto the face.
+float depthFraction(float inverseZ) { return 1.0 - clamp(inverseZ, 0.0, 1.0); }
+
 SearchResult searchDepths(vec3 x, vec3 d) {
   float tau = 0.0;
   float tauFree = 0.0;  // the farthest point known to be in front of every stored surface
   int level = max(u_topLevel - 3, 0);
+  const float kCode = 1.0 / 65535.0;
+  float texels = float(u_faceSize);
+  float toFace = 2.0 / texels;  // level-0 texels to face coordinates
+  // The ray seen on face f (recomputed only when it moves to another face): its depth along the
+  // face's axis is xz + tau dz, its face coordinates (xst + tau dst) / depth.
+  int f = -1;
+  float xz = 0.0, dz = 0.0;
+  vec2 xst = vec2(0.0), dst = vec2(0.0), motion = vec2(0.0), towards = vec2(0.0);
+  bool faceEdge = true;  // the ray is on a face's edge: which face it is on is to be found
   for (int i = 0; i < kMaxSteps; ++i) {
-    vec3 p = x + tau * d;
-    int f = faceOf(p);
-    vec3 right = u_faceRight[f], up = u_faceUp[f], axis = u_faceAxis[f];
-    float xz = dot(x, axis), dz = dot(d, axis);
-    vec2 xst = vec2(dot(x, right), dot(x, up)), dst = vec2(dot(d, right), dot(d, up));
+    int face = faceEdge ? faceOf(x + tau * d) : f;
+    if (face != f) {
+      f = face;
+      vec3 right = u_faceRight[f], up = u_faceUp[f], axis = u_faceAxis[f];
+      xz = dot(x, axis);
+      dz = dot(d, axis);
+      xst = vec2(dot(x, right), dot(x, up));
+      dst = vec2(dot(d, right), dot(d, up));
+      // s (and t) move monotonically along the ray, towards the border on the side of motion.
+      motion = dst * xz - xst * dz;
+      towards = step(0.0, motion);
+    }
     float zIn = xz + tau * dz;
-    vec2 st = (xst + tau * dst) / zIn;
+    float inverseIn = 1.0 / zIn;
+    vec2 st = (xst + tau * dst) * inverseIn;
     // A level-L cell spans 2^L level-0 texels (the last one in a row may be cut by the face's
     // edge).
     int span = 1 << level;
     int n = (u_faceSize + span - 1) >> level;
-    float texels = float(u_faceSize);
     ivec2 cell = clamp(ivec2(floor((st * 0.5 + 0.5) * texels)) >> level, ivec2(0), ivec2(n - 1));
-    // Where the ray leaves the cell: s (and t) move monotonically along the ray, towards the
-    // border on the side of `motion`; s = b where xs + tau ds = b (xz + tau dz).
-    vec2 motion = dst * xz - xst * dz;
-    ivec2 edgeTexel = min((cell + ivec2(step(0.0, motion))) * span, ivec2(u_faceSize));
-    vec2 border = vec2(edgeTexel) / texels * 2.0 - 1.0;
+    // Where the ray leaves the cell: s = b where xs + tau ds = b (xz + tau dz).
+    ivec2 edgeTexel = min((cell + ivec2(towards)) * span, ivec2(u_faceSize));
+    vec2 border = vec2(edgeTexel) * toFace - 1.0;
     vec2 crossing = (border * xz - xst) / (dst - border * dz);
     // A crossing behind the ray's origin is never reached; one just behind tau is rounding.
-    bvec2 reached = bvec2(abs(motion.x) > 0.0 && crossing.x >= 0.0,
-                          abs(motion.y) > 0.0 && crossing.y >= 0.0);
+    bvec2 reached = bvec2(motion.x != 0.0 && crossing.x >= 0.0, motion.y != 0.0 && crossing.y >= 0.0);
     crossing = max(crossing, vec2(tau));
-    float tauExit = min(reached.x ? crossing.x : kNever, reached.y ? crossing.y : kNever);
-    float zOut = tauExit >= kNever ? kNever : xz + tauExit * dz;
-    float zNear = min(zIn, zOut), zFar = max(zIn, zOut);
+    bool leavesAcross = reached.x && (!reached.y || crossing.x <= crossing.y);
+    float tauExit = leavesAcross ? crossing.x : reached.y ? crossing.y : kNever;
+    // The ray's depths over the cell, as code fractions (an endless ray: 1, infinitely far).
+    float eIn = depthFraction(inverseIn);
+    float eOut = tauExit >= kNever ? 1.0 : depthFraction(1.0 / (xz + tauExit * dz));
+    float eNear = min(eIn, eOut), eFar = max(eIn, eOut);
 
-    // The first chain: the nearest surfaces' depths (min over the cell) and how far back their
-    // objects reach (max; with one layer, each object is taken to be kThickness of its depth
-    // deep). The second (two layers): the depths of what lies behind them.
-    uvec2 first = cellCodes(u_depths, u_pyramid, cell, f, level);
-    float zFront = decodeDepth(first.x), zBack = decodeDepth(first.y);
-    float zBehind = kNever, zBehindEnd = kNever;
-    if (u_layers == 2) {
-      uvec2 second = cellCodes(u_depths2, u_pyramid2, cell, f, level);
-      zBehind = decodeDepth(second.x);
-      zBehindEnd = decodeDepth(second.y) * (1.0 + kThickness);
-      // Level 0 keeps the backs apart (the pyramid's far ends include them).
-      if (level == 0) zBack = max(zBack, decodeDepth(texelFetch(u_backs, ivec3(cell, f), 0).r));
-    } else {
-      zBack *= 1.0 + kThickness;
-    }
+    // The first chain: the nearest surfaces' codes (min over the cell) and how far back their
+    // objects reach (max). The second (two layers): what lies behind them, from its nearest to
+    // its far end. (The capture wrote each far end with the thickness its pass cannot see.)
+    vec2 first = vec2(cellCodes(u_pyramid, cell, f, level)) * kCode;
+    float eFront = first.x, eBack = first.y;
+    vec2 behind = vec2(1.0);
+    if (u_layers == 2) behind = vec2(cellCodes(u_pyramid2, cell, f, level)) * kCode;
     // In front of every surface in the cell, or behind every object there and in front of
     // everything behind them: nothing in the cell can be met.
-    bool free = zFar < zFront;
-    bool passes = free || (zNear > zBack && zFar < zBehind);
+    bool free = eFar < eFront;
+    bool passes = free || (eNear > eBack && eFar < behind.x);
     if (!passes && level == 0) {
-      // One texel. The ray meets its object if its depths here reach into [zFront, zBack]: at
-      // the front if it crosses it, else inside (it entered through a side the probe cannot
-      // see); likewise what lies behind.
+      // One texel. The ray meets its object if its depths here reach into [front, back]: where
+      // it crosses the front, else inside (it entered through a side the probe cannot see);
+      // likewise what lies behind.
       float mid = tauExit >= kNever ? tau : 0.5 * (tau + tauExit);
-      if (zNear <= zBack && zFar >= zFront) {
-        if (zIn > zFront) return SearchResult(x + mid * d, 1, i);
+      if (eNear <= eBack && eFar >= eFront) {
+        if (eIn > eFront) return SearchResult(x + mid * d, 1, i);
+        float zFront = 1.0 / (1.0 - eFront);
         return SearchResult(x + clamp((zFront - xz) / dz, tau, tauExit) * d, 1, i);
       }
-      if (u_layers == 2 && zNear <= zBehindEnd && zFar >= zBehind) {
-        if (zIn > zBehind) return SearchResult(x + mid * d, 2, i);
+      if (u_layers == 2 && eNear <= behind.y && eFar >= behind.x) {
+        if (eIn > behind.x) return SearchResult(x + mid * d, 2, i);
+        float zBehind = 1.0 / (1.0 - behind.x);
         return SearchResult(x + clamp((zBehind - xz) / dz, tau, tauExit) * d, 2, i);
       }
       passes = true;  // behind what the texel stores: past it, unseen
@@ -144,17 +148,17 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     if (free) tauFree = tauExit;
     if (tauExit >= kNever) {
       // Nothing ahead: free, the ray runs to infinity (the sky); hidden, it passed behind the
-      // last surface it saw, and the last free point is the guess.
-      // (No ?: on structures: WebGL refuses it.)
+      // last surface it saw, and the last free point is the guess. (No ?: on structures: WebGL
+      // refuses it.)
       if (free) return SearchResult(d, 0, i);
       return SearchResult(x + tauFree * d, 1, i);
     }
     // Just past the border, into the next cell (or face); one level coarser if that border is
     // also the coarser cell's (else the next cell is this one's sibling, at this level), so a
     // ray grazing a surface walks along it instead of going up and down at every texel.
-    bool leavesAcross = reached.x && (!reached.y || crossing.x <= crossing.y);
     int exitTexel = leavesAcross ? edgeTexel.x : edgeTexel.y;
-    if (exitTexel % (2 * span) == 0 || exitTexel >= u_faceSize) level = min(level + 1, u_topLevel);
+    faceEdge = exitTexel == 0 || exitTexel >= u_faceSize;
+    if ((exitTexel & (2 * span - 1)) == 0 || faceEdge) level = min(level + 1, u_topLevel);
     tau = tauExit + max(tauExit * 1e-5, 1e-5);
   }
   // Out of steps (a long grazing walk): the farthest point reached is the best guess.

@@ -12,14 +12,11 @@ namespace reflect {
 // Texture units, fixed per sampler across programs (two samplers of different types may not
 // share a unit in one program).
 inline constexpr GLint kEnvironmentUnit = 0;   // samplerCube: a probe's (first layer) colours
-inline constexpr GLint kDepthsUnit = 1;        // usampler2DArray: its depth chain
+inline constexpr GLint kPyramidUnit = 1;       // usampler2D: its depth pyramid
 inline constexpr GLint kEnvironment2Unit = 2;  // samplerCube: its second layer's colours
-inline constexpr GLint kDepths2Unit = 3;       // usampler2DArray: the second layer's chain
+inline constexpr GLint kPyramid2Unit = 3;      // usampler2D: the second layer's pyramid
 inline constexpr GLint kPeelDepthsUnit = 4;    // usampler2DArray: the layer a peel draws behind
 inline constexpr GLint kPeelBacksUnit = 5;     // usampler2DArray: the backs it also peels behind
-inline constexpr GLint kPyramidUnit = 6;       // usampler2D: levels 1.. of a probe's depths
-inline constexpr GLint kPyramid2Unit = 7;      // usampler2D: the same for its second layer
-inline constexpr GLint kBacksUnit = 8;         // usampler2DArray: the backs (level 0)
 
 struct CaptureState {
   int layer = 0;  // 0 the main pass, 1 a capture's first layer, 2 its second
@@ -27,10 +24,12 @@ struct CaptureState {
   glm::vec3 axis{0.0f, 0.0f, -1.0f};  // the face's look direction
   float unit = 1.0f;                  // the capture's near plane
   int face = 0;
+  // The pass cannot see how deep what it draws is: the far ends take kThickness.
+  bool guessDepth = false;
 };
 
 struct CaptureUniforms {
-  GLint layer = -1, centre = -1, axis = -1, unit = -1, face = -1, extent = -1;
+  GLint layer = -1, centre = -1, axis = -1, unit = -1, face = -1, extent = -1, guessDepth = -1;
 
   static CaptureUniforms of(const ShaderProgram& p) {
     // Optional: a shader that never captures may lose some to the optimiser.
@@ -50,6 +49,7 @@ struct CaptureUniforms {
     glUniform3fv(axis, 1, glm::value_ptr(s.axis));
     glUniform1f(unit, s.unit);
     glUniform1i(face, s.face);
+    glUniform1i(guessDepth, s.guessDepth ? 1 : 0);
   }
 };
 

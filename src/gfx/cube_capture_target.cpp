@@ -43,12 +43,12 @@ TextureHandle createFaceArray(GLenum format, int size) {
   return texture;
 }
 
-// Levels 1..top: the six faces' tiles side by side, P / 2 texels square at its base.
+// Levels 0..top: the six faces' tiles side by side, P texels square at its base.
 TextureHandle createPyramid(int top) {
   TextureHandle texture(genTexture());
-  const int tile = 1 << (top - 1);
+  const int tile = 1 << top;
   glBindTexture(GL_TEXTURE_2D, texture.id());
-  glTexStorage2D(GL_TEXTURE_2D, top, GL_RG16UI, 6 * tile, tile);
+  glTexStorage2D(GL_TEXTURE_2D, top + 1, GL_RG16UI, 6 * tile, tile);
   setIntegerFiltering(GL_TEXTURE_2D);
   glBindTexture(GL_TEXTURE_2D, 0);
   return texture;
@@ -71,7 +71,7 @@ Result<CubeCaptureTarget> CubeCaptureTarget::create(const CaptureFormat& format)
     t.colour_[l] = createColourCube(t.format_, size);
     if (format.depthChain) {
       t.faceDepths_[l] = createFaceArray(GL_RG16UI, size);
-      if (t.topLevel_ > 0) t.pyramid_[l] = createPyramid(t.topLevel_);
+      t.pyramid_[l] = createPyramid(t.topLevel_);
     }
   }
   if (t.format_.layers == 2) t.backs_ = createFaceArray(GL_R16UI, size);
@@ -147,12 +147,12 @@ void CubeCaptureTarget::endBackPass() {
 
 void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
   glDisable(GL_DEPTH_TEST);
-  if (format_.depthChain && topLevel_ > 0) {
+  if (format_.depthChain) {
     glBindFramebuffer(GL_FRAMEBUFFER, pyramidFramebuffer_.id());
-    const int baseTile = 1 << (topLevel_ - 1);
+    const int baseTile = 1 << topLevel_;
     for (int layer = 0; layer < format_.layers; ++layer) {
       const GLuint pyramid = pyramid_[static_cast<size_t>(layer)].id();
-      // Level 1, all faces in one draw, from the faces' level 0 (and the backs).
+      // Level 0, all faces in one draw, from the faces' own layers (and the backs).
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, 0);
       glViewport(0, 0, 6 * baseTile, baseTile);
       glUseProgram(programs.first);
@@ -168,11 +168,11 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
       glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
       glActiveTexture(GL_TEXTURE0);
       glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-      // Levels 2..top, each from the one below, which is the only level the draw may read: the
+      // Levels 1..top, each from the one below, which is the only level the draw may read: the
       // one written is outside the sampled range, so this is no feedback loop (WebGL checks).
       glUseProgram(programs.reduce);
       glBindTexture(GL_TEXTURE_2D, pyramid);
-      for (int mip = 1; mip < topLevel_; ++mip) {
+      for (int mip = 1; mip <= topLevel_; ++mip) {
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, mip - 1);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mip - 1);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, mip);
@@ -180,7 +180,7 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
         glDrawArrays(GL_TRIANGLES, 0, 3);
       }
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, topLevel_ - 1);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, topLevel_);
       glBindTexture(GL_TEXTURE_2D, 0);
     }
   }

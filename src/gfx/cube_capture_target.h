@@ -4,13 +4,14 @@
 //
 // Depths (shaders/depth_encoding.glsl) live in two textures per layer, both RG16UI, read with
 // texelFetch only (GLSL ES 3.00 has no texelFetch on cube samplers):
-//  - level 0: a 2D array, one layer per cube face in GL face order, N x N: each texel's (near,
-//    far) codes as the capture wrote them;
-//  - levels 1..top: one 2D texture with the six faces side by side and a mip per level. With P
-//    the face size rounded up to a power of two, level L's tile is P / 2^L texels square, so
-//    every tile halves exactly and one draw reduces all six faces: one draw per level, not six.
+//  - the faces: a 2D array, one layer per cube face in GL face order, N x N: each texel's (near,
+//    far) codes as the capture wrote them (a capture renders into it beside the colour face);
+//  - the pyramid: one 2D texture with the six faces side by side and a mip per level, level 0 a
+//    copy of the faces. With P the face size rounded up to a power of two, level L's tile is
+//    P / 2^L texels square, so every tile halves exactly and one draw builds a level for all six
+//    faces: one draw per level, not six. The search reads this texture alone.
 // A level-L cell covers the 2^L x 2^L level-0 texels at its index times 2^L (clipped to N); each
-// holds the min of their near codes and the max of their far codes.
+// holds the min of their near codes and the max of their far codes (and of the backs found).
 #pragma once
 
 #include <array>

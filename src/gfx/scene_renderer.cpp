@@ -113,11 +113,8 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   glUseProgram(e.id());
   glUniform1i(e.uniform("u_environment"), kEnvironmentUnit);
   glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
-  glUniform1i(e.optionalUniform("u_depths"), kDepthsUnit);
-  glUniform1i(e.optionalUniform("u_depths2"), kDepths2Unit);
   glUniform1i(e.optionalUniform("u_pyramid"), kPyramidUnit);
   glUniform1i(e.optionalUniform("u_pyramid2"), kPyramid2Unit);
-  glUniform1i(e.optionalUniform("u_backs"), kBacksUnit);
   if (accuracy.search == Search::Hierarchical) setFaceFrames(e);
   r.environment_.program = environment.take();
 
@@ -153,7 +150,7 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glBindTexture(GL_TEXTURE_2D, 0);
-  for (GLint unit : {kDepthsUnit, kDepths2Unit, kPeelDepthsUnit, kPeelBacksUnit, kBacksUnit}) {
+  for (GLint unit : {kPeelDepthsUnit, kPeelBacksUnit}) {
     bindTexture(unit, GL_TEXTURE_2D_ARRAY, r.emptyDepths_.id());
   }
   for (GLint unit : {kPyramidUnit, kPyramid2Unit}) {
@@ -232,8 +229,8 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
 
 void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, int index) {
   const SceneObject& object = scene.objects[static_cast<size_t>(index)];
-  GLuint colour = 0, colour2 = 0, depths = emptyDepths_.id(), depths2 = emptyDepths_.id();
-  GLuint pyramid = emptyPyramid_.id(), pyramid2 = emptyPyramid_.id(), backs = emptyDepths_.id();
+  GLuint colour = 0, colour2 = 0;
+  GLuint pyramid = emptyPyramid_.id(), pyramid2 = emptyPyramid_.id();
   int layers = 1, faceSize = 1, topLevel = 0;
   bool search = false;
   glm::vec3 centre(0.0f);
@@ -248,13 +245,8 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
       layers = t.format().layers;
       colour2 = layers == 2 ? t.texture(1) : colour;
       if (t.format().depthChain) {
-        depths = t.faceDepths(0);
-        if (t.topLevel() > 0) pyramid = t.pyramid(0);
-        if (layers == 2) {
-          depths2 = t.faceDepths(1);
-          if (t.topLevel() > 0) pyramid2 = t.pyramid(1);
-          backs = t.backs();
-        }
+        pyramid = t.pyramid(0);
+        if (layers == 2) pyramid2 = t.pyramid(1);
       }
       faceSize = t.faceSize();
       topLevel = t.topLevel();
@@ -267,11 +259,8 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   }
   bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, colour);
   bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, colour2 ? colour2 : colour);
-  bindTexture(kDepthsUnit, GL_TEXTURE_2D_ARRAY, depths);
-  bindTexture(kDepths2Unit, GL_TEXTURE_2D_ARRAY, depths2);
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
   bindTexture(kPyramid2Unit, GL_TEXTURE_2D, pyramid2);
-  bindTexture(kBacksUnit, GL_TEXTURE_2D_ARRAY, backs);
   glActiveTexture(GL_TEXTURE0);
   glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(centre));
   glUniform1f(environment_.distanceUnit, scene.capture.near);
@@ -279,7 +268,7 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   glUniform1i(environment_.layers, layers);
   glUniform1i(environment_.faceSize, faceSize);
   glUniform1i(environment_.topLevel, topLevel);
-  glUniform1i(environment_.pyramidTile, topLevel > 0 ? 1 << (topLevel - 1) : 0);
+  glUniform1i(environment_.pyramidTile, 1 << topLevel);
 }
 
 PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
@@ -404,7 +393,10 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
                     layer == 1 ? emptyDepths_.id() : t.faceDepths(0));
         bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY,
                     layer == 2 ? t.backs() : emptyDepths_.id());
-        const CaptureState pass{layer, probe.centre, axis, scene.capture.near, face.face};
+        // Pass 1 of a one-layer probe and pass 2 cannot see how deep their objects are.
+        const bool guessDepth = layer == 2 || (layer == 1 && passes.size() == 1);
+        const CaptureState pass{layer,     probe.centre, axis, scene.capture.near,
+                                face.face, guessDepth};
         // Other mirrors in view use their cube as it was before this frame's capture of them
         // (one bounce); they are seen from the probe centre.
         counts += drawItems(scene, seconds, plan, face.draws, projection * view, lightingEye,

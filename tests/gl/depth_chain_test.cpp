@@ -35,12 +35,12 @@ std::vector<glm::uvec2> readCodes(GLuint texture, bool array, int layer, int lev
 }
 
 void checkPyramid(const CubeCaptureTarget& probe, int layer) {
-  const int n = probe.faceSize(), top = probe.topLevel(), tile = 1 << (top - 1);
+  const int n = probe.faceSize(), top = probe.topLevel(), tile = 1 << top;
   const bool backs = layer == 0 && probe.format().layers == 2;
-  for (int level = 1; level <= top; ++level) {
-    const int t = tile >> (level - 1), span = 1 << level;
+  for (int level = 0; level <= top; ++level) {
+    const int t = tile >> level, span = 1 << level;
     const std::vector<glm::uvec2> pyramid =
-        readCodes(probe.pyramid(layer), false, 0, level - 1, 6 * t, t);
+        readCodes(probe.pyramid(layer), false, 0, level, 6 * t, t);
     for (int face = 0; face < 6; ++face) {
       const std::vector<glm::uvec2> base = readCodes(probe.faceDepths(layer), true, face, 0, n, n);
       std::vector<glm::uvec2> back;
@@ -85,7 +85,7 @@ TEST(DepthPyramid, EveryCellBoundsTheTexelsItCoversInBothLayers) {
 
 TEST(DepthPyramid, AFaceSizeThatIsNoPowerOfTwoLeavesThePaddingEmpty) {
   Scene scene = makeDynamicReflectionScene();
-  scene.capture.faceSize = 100;  // tiles of 64 at level 1: 14 texels a row are padding
+  scene.capture.faceSize = 100;  // tiles of 128 at level 0: 28 texels a row are padding
   checkScene(scene, 2);
 }
 
