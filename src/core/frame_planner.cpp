@@ -348,7 +348,10 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       for (const DrawItem& d : draws[f]) m.visible.push_back(d.object);
       m.stateVersions = stateVersions_;
       m.contentVersions = contentVersions_;
-      probe.faces.push_back(FacePlan{face, std::move(draws[f])});
+      const size_t shown = draws[f].size();
+      const bool hides = shown >= 2 || (context.skyboxContent != 0 && shown >= 1);
+      probe.faces.push_back(
+          FacePlan{face, std::move(draws[f]), probe.layers == 2 && hides ? 2 : 1});
     }
     if (capturedReal) {
       recapturedForRealChange.insert(recapturedForRealChange.end(), members.begin(), members.end());

@@ -88,6 +88,10 @@ struct DrawItem {
 struct FacePlan {
   int face = 0;
   std::vector<DrawItem> draws;
+  // Depth layers this face stores: 2 only in a two-layer probe, and only where something in the
+  // face can hide something else (two objects, or one in front of the sky); a face of floor
+  // alone needs one pass, not three.
+  int layers = 1;
 };
 
 // A probe (who samples it, where it captures from), what it stores and the faces it redraws

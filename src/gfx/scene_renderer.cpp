@@ -377,9 +377,17 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
       const glm::mat4 view = cubeFaceView(probe.centre, face.face);
       const glm::vec3 axis = kCubeFaces[static_cast<size_t>(face.face)].direction;
       // Pass 1, the nearest surfaces; with two layers, pass 3 where they end and pass 2 what
-      // lies behind them (shaders/capture_output.glsl), peeled behind pass 3's depths.
+      // lies behind them (shaders/capture_output.glsl), peeled behind pass 3's depths. A face
+      // of a two-layer probe that needs one clears what the other two would write.
       const std::vector<int> passes =
-          t.format().layers == 2 ? std::vector<int>{1, 3, 2} : std::vector<int>{1};
+          face.layers == 2 ? std::vector<int>{1, 3, 2} : std::vector<int>{1};
+      if (t.format().layers == 2 && face.layers == 1) {
+        const unsigned codes[2] = {farCode, farCode};
+        t.bindFace(face.face, 1);
+        t.clearFace(clear, 1.0f, codes);
+        t.bindBackPass(face.face);
+        CubeCaptureTarget::endBackPass();
+      }
       for (int layer : passes) {
         if (layer == 3) {
           t.bindBackPass(face.face);
