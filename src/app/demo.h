@@ -75,6 +75,7 @@ class Demo {
                           bool waitForGpu);
 
   LookCamera& camera() { return camera_; }
+  const LookCamera& camera() const { return camera_; }
   AnimationClock& clock() { return clock_; }
   const Scene& scene() const { return scene_; }
   const FrameStats& lastStats() const { return stats_; }

@@ -72,18 +72,23 @@ Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
   return report;
 }
 
-Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int height) {
+Result<ReferenceFrame> referenceFor(const Demo& demo, double t, int width, int height) {
+  const MeshLookup meshes = [&demo](const std::string& name) { return demo.meshLevel(name, 0); };
+  // The true directions are measured from where the probe really captured.
+  const Scene scene = sceneAsCaptured(demo.scene(), demo.accuracySettings().captureAtOrigin);
+  return renderReference(scene, meshes, demo.skyboxFaces(), demo.camera(), t, width, height);
+}
+
+Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int height,
+                                       const ReferenceFrame* cached) {
   const auto start = std::chrono::steady_clock::now();
   Result<RgbaImage> raster = renderFrameAt(demo, t, width, height);
   if (!raster) return Result<AccuracyReport>::failure(raster.error());
   const double rasterMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const double seconds = demo.clock().seconds();
-  const MeshLookup meshes = [&demo](const std::string& name) { return demo.meshLevel(name, 0); };
-  // The true directions are measured from where the probe really captured.
-  const Scene scene = sceneAsCaptured(demo.scene(), demo.accuracySettings().captureAtOrigin);
+  const Scene& scene = demo.scene();
   Result<ReferenceFrame> reference =
-      renderReference(scene, meshes, demo.skyboxFaces(), demo.camera(), seconds, width, height);
+      cached ? Result<ReferenceFrame>(*cached) : referenceFor(demo, t, width, height);
   if (!reference) return Result<AccuracyReport>::failure(reference.error());
   // What the raster really looked up (plain or distance-corrected), per pixel, from the GPU.
   Result<OffscreenTarget> directions = OffscreenTarget::create(width, height, true);
@@ -96,12 +101,13 @@ Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int heig
     if (!ref.reflectorMask[p]) continue;
     const glm::vec3 d = looked[p];
     // Only unit vectors are directions: a pixel the raster's mirror does not cover (silhouette;
-    // a colour or the background there) keeps the analytic R. Only mirrors: glass writes its
-    // reflected lookup there, not the refracted one the reference's direction is, and a
-    // cube-textured object writes its colour.
+    // a colour or the background there) keeps the analytic R. Mirrors write the direction they
+    // looked up along, glass the one its refracted ray did (the reference's direction for glass
+    // is the refracted one too); a cube-textured object writes its colour.
     const int object = ref.objectIds[p];
-    const bool mirror = scene.objects[static_cast<size_t>(object)].material == Material::Mirror;
-    if (mirror && k < ref.lookupDirs.size() && std::abs(glm::length(d) - 1.0f) < 1e-3f) {
+    const Material m = scene.objects[static_cast<size_t>(object)].material;
+    const bool looks = m == Material::Mirror || m == Material::Glass;
+    if (looks && k < ref.lookupDirs.size() && std::abs(glm::length(d) - 1.0f) < 1e-3f) {
       ref.lookupDirs[k] = d;
     }
     ++k;

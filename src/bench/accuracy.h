@@ -48,6 +48,12 @@ Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
 // Renders the demo's frame at scene time `t` (renderFrameAt: capture with the demo's current
 // planner settings and face size, then the main pass) and the reference of the same moment and
 // camera (full-detail meshes), and compares them. Needs a current GL context.
-Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int height);
+// `cached`: the reference of the same scene, camera, moment, size and capture point, when the
+// caller already has it (referenceFor), so several settings compare with one trace.
+Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int height,
+                                       const ReferenceFrame* cached = nullptr);
+
+// The reference frame measureAccuracy compares `demo` with at scene time `t`.
+Result<ReferenceFrame> referenceFor(const Demo& demo, double t, int width, int height);
 
 }  // namespace reflect

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "app/headless_frames.h"
 #include "bench/accuracy.h"
+#include "core/error_metrics.h"
 #include "core/settings_schema.h"
 #include "gfx/offscreen_target.h"
 
@@ -76,14 +78,30 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
   // Timing, interleaved frame by frame.
   Result<OffscreenTarget> target = OffscreenTarget::create(o.width, o.height);
   if (!target) return Out::failure(target.error());
-  std::vector<std::vector<double>> ms(settings.size());
+  std::vector<std::vector<double>> ms(settings.size()), cpu(settings.size());
   for (int frame = 0; frame < o.frames + 3; ++frame) {
     for (size_t i = 0; i < demos.size(); ++i) {
+      const double cpuBefore = processCpuMs();
       const FrameStats& s =
           demos[i]->frame(1.0 / 60.0, target.value().framebuffer(), o.width, o.height, true);
-      if (frame >= 3) ms[i].push_back(s.frameMs);
+      if (frame < 3) continue;
+      ms[i].push_back(s.frameMs);
+      cpu[i].push_back(processCpuMs() - cpuBefore);
     }
   }
+
+  // One reference per time and capture point, shared by every setting that captures there.
+  std::map<std::pair<double, bool>, ReferenceFrame> references;
+  const auto referenceAt = [&](Demo& demo, double t) -> Result<const ReferenceFrame*> {
+    const auto key = std::make_pair(t, demo.accuracySettings().captureAtOrigin);
+    auto it = references.find(key);
+    if (it == references.end()) {
+      Result<ReferenceFrame> frame = referenceFor(demo, t, o.width, o.height);
+      if (!frame) return Result<const ReferenceFrame*>::failure(frame.error());
+      it = references.emplace(key, frame.take()).first;
+    }
+    return &it->second;
+  };
 
   std::vector<SweepRow> rows;
   for (size_t i = 0; i < settings.size(); ++i) {
@@ -92,28 +110,40 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     row.medianMs = median(ms[i]);
     row.p10Ms = percentile(ms[i], 0.1);
     row.p90Ms = percentile(ms[i], 0.9);
-    double mse = 0, p95 = 0, maxError = 0, angle = 0, offMse = 0;
-    for (double t : o.times) {
-      auto report = measureAccuracy(*demos[i], t, o.width, o.height);
-      if (!report) return Out::failure(settings[i].name + ": " + report.error());
-      const AccuracyReport& r = report.value();
-      mse += r.reflector.rmse * r.reflector.rmse;
-      offMse += r.offReflector.rmse * r.offReflector.rmse;
-      p95 += r.reflector.p95PixelError;
-      maxError = std::max(maxError, static_cast<double>(r.reflector.maxPixelError));
-      angle += r.meanAngularErrorDeg;
+    row.cpuMs = median(cpu[i]);
+    double heldOutMse = 0, tunedMse = 0, p95 = 0, angle = 0, offMse = 0, visible = 0;
+    row.worstPsnrDb = kPsnrCapDb;
+    for (bool heldOut : {true, false}) {
+      for (double t : heldOut ? o.heldOutTimes : o.tunedTimes) {
+        Result<const ReferenceFrame*> reference = referenceAt(*demos[i], t);
+        if (!reference) return Out::failure(settings[i].name + ": " + reference.error());
+        auto report = measureAccuracy(*demos[i], t, o.width, o.height, reference.value());
+        if (!report) return Out::failure(settings[i].name + ": " + report.error());
+        const AccuracyReport& r = report.value();
+        const double mse = r.reflector.rmse * r.reflector.rmse;
+        if (!heldOut) {
+          tunedMse += mse / static_cast<double>(o.tunedTimes.size());
+          continue;
+        }
+        heldOutMse += mse / static_cast<double>(o.heldOutTimes.size());
+        offMse += r.offReflector.rmse * r.offReflector.rmse;
+        p95 += r.reflector.p95PixelError;
+        row.maxError = std::max(row.maxError, static_cast<double>(r.reflector.maxPixelError));
+        angle += r.meanAngularErrorDeg;
+        visible += static_cast<double>(r.reflector.visibleErrorPixels);
+        row.worstVisible =
+            std::max(row.worstVisible, static_cast<double>(r.reflector.visibleErrorPixels));
+        row.worstPsnrDb = std::min(row.worstPsnrDb, r.reflector.psnrDb);
+      }
     }
-    const double n = static_cast<double>(o.times.size());
-    auto psnr = [](double meanSquare) {
-      return meanSquare <= 0 ? 99.0
-                             : std::min(99.0, 20.0 * std::log10(255.0 / std::sqrt(meanSquare)));
-    };
-    row.rmse = std::sqrt(mse / n);
-    row.psnrDb = psnr(mse / n);
-    row.offReflectorPsnrDb = psnr(offMse / n);
+    const double n = static_cast<double>(o.heldOutTimes.size());
+    row.rmse = std::sqrt(heldOutMse);
+    row.psnrDb = psnrFromRmse(row.rmse);
+    row.tunedPsnrDb = psnrFromRmse(std::sqrt(tunedMse));
+    row.offReflectorPsnrDb = psnrFromRmse(std::sqrt(offMse / n));
     row.p95 = p95 / n;
-    row.maxError = maxError;
     row.meanAngularErrorDeg = angle / n;
+    row.visiblePerFrame = visible / n;
     rows.push_back(row);
     demos[i].reset();
   }
@@ -128,17 +158,19 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
 
 std::string sweepTable(const std::vector<SweepRow>& rows) {
   std::string out =
-      "| name | setting | face | frame ms median (p10-p90) | reflector PSNR dB | RMSE | p95 | max "
-      "| mean angular error deg | off-reflector PSNR dB | Pareto |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  char line[512];
+      "| name | setting | face | frame ms median (p10-p90) | CPU ms | reflector PSNR dB (worst "
+      "time) | pixels > 32 per frame (worst) | RMSE | p95 | max | mean angular error deg | "
+      "off-reflector PSNR dB | PSNR at tuning times | Pareto |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  char line[640];
   for (const SweepRow& r : rows) {
-    std::snprintf(
-        line, sizeof line,
-        "| %s | %s | %d | %.2f (%.2f-%.2f) | %.2f | %.2f | %.1f | %.0f | %.3f | %.1f | %s |\n",
-        r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
-        r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95, r.maxError, r.meanAngularErrorDeg,
-        r.offReflectorPsnrDb, r.pareto ? "yes" : "");
+    std::snprintf(line, sizeof line,
+                  "| %s | %s | %d | %.2f (%.2f-%.2f) | %.2f | %.2f (%.2f) | %.1f (%.0f) | %.2f | "
+                  "%.1f | %.0f | %.3f | %.1f | %.2f | %s |\n",
+                  r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
+                  r.medianMs, r.p10Ms, r.p90Ms, r.cpuMs, r.psnrDb, r.worstPsnrDb, r.visiblePerFrame,
+                  r.worstVisible, r.rmse, r.p95, r.maxError, r.meanAngularErrorDeg,
+                  r.offReflectorPsnrDb, r.tunedPsnrDb, r.pareto ? "yes" : "");
     out += line;
   }
   return out;
@@ -158,12 +190,15 @@ std::string csvQuoted(const std::string& text) {
 std::string sweepCsv(const std::vector<SweepRow>& rows) {
   std::string out =
       "name,setting,settings,face_size,ms,ms_p10,ms_p90,psnr_db,rmse,p95,max,"
-      "mean_angular_error_deg,off_reflector_psnr_db,pareto\n";
-  char numbers[256];
+      "mean_angular_error_deg,off_reflector_psnr_db,pareto,cpu_ms,worst_psnr_db,"
+      "visible_per_frame,worst_visible,tuned_psnr_db\n";
+  char numbers[320];
   for (const SweepRow& r : rows) {
-    std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.0f,%.4f,%.3f,%d\n",
+    std::snprintf(numbers, sizeof numbers,
+                  "%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.0f,%.4f,%.3f,%d,%.4f,%.4f,%.2f,%.0f,%.4f\n",
                   r.setting.faceSize, r.medianMs, r.p10Ms, r.p90Ms, r.psnrDb, r.rmse, r.p95,
-                  r.maxError, r.meanAngularErrorDeg, r.offReflectorPsnrDb, r.pareto ? 1 : 0);
+                  r.maxError, r.meanAngularErrorDeg, r.offReflectorPsnrDb, r.pareto ? 1 : 0,
+                  r.cpuMs, r.worstPsnrDb, r.visiblePerFrame, r.worstVisible, r.tunedPsnrDb);
     out += r.setting.name + "," + csvQuoted(r.setting.accuracy.describe()) + "," +
            csvQuoted(settingsJson(r.setting.accuracy, accuracyFields()).dump()) + "," + numbers;
   }

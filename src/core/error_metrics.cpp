@@ -42,6 +42,7 @@ Result<ImageErrorMetrics> imageErrorMetrics(const RgbaImage& a, const RgbaImage&
       pixelError = std::max(pixelError, d);
     }
     errors.push_back(pixelError);
+    if (pixelError > kVisibleErrorLevels) ++m.visibleErrorPixels;
   }
   m.pixelCount = errors.size();
   if (errors.empty()) return m;

@@ -14,6 +14,9 @@ namespace reflect {
 
 // PSNR reported for identical pixels (an infinite PSNR), and the largest value ever reported.
 inline constexpr double kPsnrCapDb = 99.0;
+// A pixel whose largest channel difference exceeds this many levels is an error a viewer sees
+// (a speckle, a ghost); the accuracy tables count them beside the mean.
+inline constexpr int kVisibleErrorLevels = 32;
 
 struct ImageErrorMetrics {
   size_t pixelCount = 0;  // masked pixels compared
@@ -26,6 +29,8 @@ struct ImageErrorMetrics {
   // value that at least 95% of them do not exceed.
   int p95PixelError = 0;
   int maxPixelError = 0;
+  // Masked pixels whose error exceeds kVisibleErrorLevels.
+  size_t visibleErrorPixels = 0;
 };
 
 // Compares the RGB of `a` and `b` (alpha ignored) over the pixels whose mask entry is non-zero.

@@ -52,6 +52,21 @@ TEST(ErrorMetrics, TwoByTwoByHand) {
   EXPECT_DOUBLE_EQ(m.value().psnrDb, 20.0 * std::log10(255.0 / std::sqrt(169.0 / 12.0)));
   EXPECT_EQ(m.value().p95PixelError, 12);  // nearest rank: ceil(0.95 * 4) = 4th smallest
   EXPECT_EQ(m.value().maxPixelError, 12);
+  EXPECT_EQ(m.value().visibleErrorPixels, 0u);
+}
+
+TEST(ErrorMetrics, VisibleErrorsAreThePixelsOffByMoreThanThirtyTwoLevels) {
+  RgbaImage a = solid(3, 1, 100, 100, 100);
+  RgbaImage b = a;
+  setPixel(b, 0, 0, 132, 100, 100);  // 32: not more than the threshold
+  setPixel(b, 1, 0, 100, 67, 100);   // 33
+  setPixel(b, 2, 0, 100, 100, 0);    // 100
+  auto m = imageErrorMetrics(a, b, {1, 1, 1});
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m.value().visibleErrorPixels, 2u);
+  m = imageErrorMetrics(a, b, {1, 1, 0});
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m.value().visibleErrorPixels, 1u);  // only masked pixels count
 }
 
 TEST(ErrorMetrics, TheMaskSelectsThePixels) {

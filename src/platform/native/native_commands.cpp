@@ -75,10 +75,11 @@ std::string runRenderCommand(const CliOptions& o) {
   error = writePng(report.value().referenceImage, o.referenceOut);
   if (!error.empty()) return error;
   std::printf(
-      "wrote %s; reflector: PSNR %.2f dB, RMSE %.2f, p95 %d, max %d, mean angular error "
-      "%.3f deg\n",
+      "wrote %s; reflector: PSNR %.2f dB, RMSE %.2f, p95 %d, max %d, pixels off by more than "
+      "%d levels %zu, mean angular error %.3f deg\n",
       o.referenceOut.c_str(), report.value().reflector.psnrDb, report.value().reflector.rmse,
       report.value().reflector.p95PixelError, report.value().reflector.maxPixelError,
+      kVisibleErrorLevels, report.value().reflector.visibleErrorPixels,
       report.value().meanAngularErrorDeg);
   return {};
 }
