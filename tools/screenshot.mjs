@@ -3,9 +3,10 @@
 //
 //   node tools/screenshot.mjs                        docs/screenshot.png (default scene, 900x600,
 //                                                    the panel open), docs/screenshot-phone.png
-//                                                    (the same on a phone: 390x844 CSS px at
-//                                                    devicePixelRatio 2, touch, the panel as it
-//                                                    starts there: closed; saved at CSS size) and
+//                                                    (the default scene on a phone at t=0:
+//                                                    390x844 CSS px at devicePixelRatio 2, touch,
+//                                                    the panel as it starts there: closed; saved
+//                                                    at CSS size) and
 //                                                    docs/scene-NAME.png for every scene in
 //                                                    build/web/site/scenes (900x600, paused at
 //                                                    t=2, the panel closed)
@@ -106,7 +107,8 @@ async function main() {
       await shoot(single, singleQuery, phoneOnly ? { panelOpen: null, device: PHONE } : { panelOpen: true });
     } else {
       await shoot(join(repo, 'docs/screenshot.png'), '?paused&t=2', { panelOpen: true });
-      await shoot(join(repo, 'docs/screenshot-phone.png'), '?paused&t=2', { panelOpen: null, device: PHONE });
+      // At t=0, where the three figures stand apart across the frame (the framing a phone gets).
+      await shoot(join(repo, 'docs/screenshot-phone.png'), '?paused&t=0', { panelOpen: null, device: PHONE });
       const scenes = readdirSync(join(site, 'scenes')).filter((f) => f.endsWith('.json') && f !== 'index.json').sort();
       for (const file of scenes) {
         const name = file.replace(/\.json$/, '');
