@@ -11,7 +11,7 @@ import { benchPage } from './bench.js';
 import { AddressBar, readPixels, screenshot } from './capture.js';
 import { attachDrop } from './drop.js';
 import { attachInput, helpOverlay } from './input.js';
-import { inputKinds, showHints } from './layout.js';
+import { dockPanel, inputKinds, reservePanel, showHints } from './layout.js';
 import { showMessage } from './messages.js';
 import { buildPanel } from './panel.js';
 import { sceneTitles } from './scene_loader.js';
@@ -130,6 +130,7 @@ async function start() {
     helpLabel: kinds.keys ? 'keys and mouse (?)' : 'touch gestures',
     resized: sizeCanvasToDisplay,
   }) : null;
+  if (!panel) dockPanel(null, sizeCanvasToDisplay);
   const description = document.getElementById('scene-description');
   const describe = () => {
     const s = scenes.find((x) => x.name === session.scene.name);
@@ -174,6 +175,7 @@ function sizeCanvasToDisplay() {
 
 const kinds = inputKinds();
 showHints(kinds);
+reservePanel();
 window.demo = { ready };
 canvas.addEventListener('webglcontextlost', () => showMessage('WebGL context lost; restoring…', 'info'));
 canvas.addEventListener('webglcontextrestored', () => showMessage('WebGL context restored.', 'info'));

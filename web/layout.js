@@ -41,11 +41,25 @@ export function showHints(kinds, doc = document) {
     kinds.keys && kinds.touch ? 'Keys, mouse and touch' : kinds.keys ? 'Keys and mouse' : 'Touch';
 }
 
+// Whether the panel starts open: in a window at least PANEL_OPEN_MIN_WIDTH wide.
+export const panelStartsOpen = (win = window) => win.innerWidth >= PANEL_OPEN_MIN_WIDTH;
+
+// Makes room for the panel before it is built (it loads after the scene), so the canvas has its
+// size from the first frame on instead of shrinking once the panel appears.
+export function reservePanel(win = window) {
+  win.document.body.classList.toggle('panel-open', panelStartsOpen(win));
+}
+
 // The panel (a lil-gui root) starts open in a wide window; body.panel-open follows it, so the
 // layout makes room for it, and `resized()` is called right after (the canvas takes its new size
-// at once rather than at the next resize observation).
+// at once rather than at the next resize observation). gui null: there is no panel.
 export function dockPanel(gui, resized = () => {}, win = window) {
-  if (win.innerWidth < PANEL_OPEN_MIN_WIDTH) gui.close();
+  if (!gui) {
+    win.document.body.classList.remove('panel-open');
+    resized();
+    return;
+  }
+  if (!panelStartsOpen(win)) gui.close();
   const follow = () => {
     win.document.body.classList.toggle('panel-open', !gui._closed);
     resized();

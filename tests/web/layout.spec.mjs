@@ -92,6 +92,16 @@ async function expectRows(overlay, shown) {
   }
 }
 
+// Waits until the panel has finished opening or closing (lil-gui animates the height of its
+// controls after a click on the title bar, marking the panel lil-transition meanwhile).
+async function panelSettled(page, open) {
+  await expect.poll(() => page.evaluate(() => {
+    const panel = document.getElementById('panel');
+    return { open: !panel.classList.contains('lil-closed'), moving: panel.classList.contains('lil-transition') };
+  })).toEqual({ open, moving: false });
+  return waitForCanvasSize(page);
+}
+
 // Opens or closes the panel (as its title bar does) and waits for the canvas to follow.
 async function setPanel(page, open) {
   await page.evaluate((o) => window.demo.panel().open(o), open);
@@ -133,6 +143,10 @@ function figurePixels(image, sphere) {
 
 test.describe('on a phone (390x844, devicePixelRatio 2, touch)', () => {
   test.use(PHONE);
+  // Every display frame draws 780x1688 pixels (four times the other tests' canvas) in SwiftShader,
+  // and each step waits for the page between frames: more than the default minute on a busy
+  // machine. (A limit on the test, not a check of how long anything takes.)
+  test.describe.configure({ timeout: 180_000 });
 
   test('the three figures are in the frame, on the canvas as the C++ boxes say', async ({ page }) => {
     await openDemo(page, '?paused');
@@ -171,7 +185,7 @@ test.describe('on a phone (390x844, devicePixelRatio 2, touch)', () => {
     await expect(help).not.toContainText('W/A/S/D');
     await expect(page.locator('#canvas')).toHaveAttribute('aria-label', /pinch/);
     await page.locator('#panel > .lil-title').tap();
-    await expect.poll(() => page.evaluate(() => window.demo.panel()._closed)).toBe(false);
+    await panelSettled(page, true);
     await expect(page.locator('#control-help .lil-name')).toHaveText('touch gestures');
     await page.locator('#control-help button').tap();
     const overlay = page.locator('#help-overlay');
@@ -185,8 +199,9 @@ test.describe('on a phone (390x844, devicePixelRatio 2, touch)', () => {
     await openDemo(page, '?paused');
     const closed = await layout(page);
     await page.locator('#panel > .lil-title').tap();
-    await expect.poll(async () => (await layout(page)).canvas.bottom).toBeLessThan(closed.canvas.bottom - 200);
+    await panelSettled(page, true);
     const open = await expectGoodLayout(page, 'phone, panel open');
+    expect(open.canvas.bottom).toBeLessThan(closed.canvas.bottom - 200);
     expect(open.panel.top).toBeGreaterThanOrEqual(open.canvas.bottom - 0.5);
     expect(open.panel.bottom).toBeLessThanOrEqual(844.5);
     expect(open.panel.top).toBeLessThanOrEqual(844 / 2 + 1);  // at most half the height
@@ -194,8 +209,8 @@ test.describe('on a phone (390x844, devicePixelRatio 2, touch)', () => {
     await page.locator('#control-help').scrollIntoViewIfNeeded();
     await expect(page.locator('#control-help button')).toBeInViewport();
     await page.locator('#panel > .lil-title').tap();
-    await expect.poll(async () => (await layout(page)).canvas.bottom).toBe(closed.canvas.bottom);
-    await expectGoodLayout(page, 'phone, panel closed again');
+    await panelSettled(page, false);
+    expect((await expectGoodLayout(page, 'phone, panel closed again')).canvas).toEqual(closed.canvas);
   });
 
   test('a one-finger drag turns the view; two fingers dragged together slide it', async ({ page }) => {
@@ -237,8 +252,9 @@ test.describe('in an 800x800 window', () => {
     expect(closed.panelOpen).toBe(false);
     expect(closed.canvas).toEqual({ left: 0, top: 0, right: 800, bottom: 800 });
     await page.locator('#panel > .lil-title').click();
-    await expect.poll(async () => (await layout(page)).canvas.right).toBe(540);
+    await panelSettled(page, true);
     const open = await expectGoodLayout(page, '800x800, panel open');
+    expect(open.canvas).toEqual({ left: 0, top: 0, right: 540, bottom: 800 });
     expect(overlapArea(open.canvas, open.panel)).toBe(0);
     // After a drag the mirror is still in view: nothing covers the canvas.
     await page.mouse.move(270, 400);
