@@ -1,11 +1,19 @@
 #!/usr/bin/env node
-// 900x600 screenshots of the demo for the README, from Debian's Chromium (headless, Playwright).
+// Screenshots of the demo for the README, from Debian's Chromium (headless, Playwright).
 //
-//   node tools/screenshot.mjs                        docs/screenshot.png (default scene, the panel
-//                                                    open) and docs/scene-NAME.png for every
-//                                                    scene in build/web/site/scenes (paused at
+//   node tools/screenshot.mjs                        docs/screenshot.png (default scene, 900x600,
+//                                                    the panel open), docs/screenshot-phone.png
+//                                                    (the default scene on a phone at t=0:
+//                                                    390x844 CSS px at devicePixelRatio 2, touch,
+//                                                    the panel as it starts there: closed; saved
+//                                                    at CSS size) and
+//                                                    docs/scene-NAME.png for every scene in
+//                                                    build/web/site/scenes (900x600, paused at
 //                                                    t=2, the panel closed)
-//   node tools/screenshot.mjs OUT.png [query]        one picture (query default '?paused&t=2')
+//   node tools/screenshot.mjs OUT.png [query] [--phone]
+//                                                    one picture (query default '?paused&t=2';
+//                                                    --phone: as on the phone, else 900x600 with
+//                                                    the panel open)
 //
 // Serves build/web/site with tools/serve.mjs on a free port, waits for demo.ready, renders the
 // frame at the query's time and saves the page (canvas and its overlays) as a PNG.
@@ -18,9 +26,15 @@ import { chromium } from '@playwright/test';
 
 const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const site = join(repo, 'build/web/site');
-const single = process.argv[2] ? resolve(process.argv[2]) : null;
-let singleQuery = process.argv[3] || '?paused&t=2';
+const args = process.argv.slice(2);
+const phoneOnly = args.includes('--phone');
+const positional = args.filter((a) => a !== '--phone');
+const single = positional[0] ? resolve(positional[0]) : null;
+let singleQuery = positional[1] || '?paused&t=2';
 if (!singleQuery.startsWith('?')) singleQuery = `?${singleQuery}`;
+
+const DESKTOP = { viewport: { width: 900, height: 600 } };
+const PHONE = { viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, hasTouch: true, isMobile: true };
 
 function freePort() {
   return new Promise((resolvePort, reject) => {
@@ -56,15 +70,25 @@ async function main() {
       args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
              '--disable-sync', '--no-first-run', '--disable-default-apps'],
     });
-    const page = await browser.newPage({ viewport: { width: 900, height: 600 } });
     const problems = [];
-    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
-    const shoot = async (out, query, { panelOpen }) => {
+    const pages = new Map();  // device -> page
+    const pageFor = async (device) => {
+      if (!pages.has(device)) {
+        const context = await browser.newContext(device);
+        const page = await context.newPage();
+        page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+        page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
+        pages.set(device, page);
+      }
+      return pages.get(device);
+    };
+    // panelOpen: true or false, or null to leave the panel as the page starts it.
+    const shoot = async (out, query, { panelOpen, device = DESKTOP }) => {
+      const page = await pageFor(device);
       await page.goto(url + query);
       await page.waitForFunction(() => window.demo !== undefined);
       await page.evaluate(() => window.demo.ready);
-      await page.evaluate((open) => window.demo.panel()?.open(open), panelOpen);
+      if (panelOpen !== null) await page.evaluate((open) => window.demo.panel()?.open(open), panelOpen);
       // Let the stats line fill in (it shows after a couple of display frames).
       await page.waitForFunction(() => /fps/.test(document.getElementById('stats').textContent), null,
                                  { timeout: 10_000 });
@@ -72,13 +96,19 @@ async function main() {
       const errors = await page.locator('#messages .message.error').allTextContents();
       if (errors.length) throw new Error(`${query}: the page shows an error: ${errors.join(' / ')}`);
       mkdirSync(dirname(out), { recursive: true });
-      await page.screenshot({ path: out });
-      console.log(`wrote ${out} (900x600, ${query}${panelOpen ? ', panel open' : ', panel closed'})`);
+      // At CSS size: a phone's picture as large as the page it shows, not twice that.
+      await page.screenshot({ path: out, scale: 'css' });
+      const open = await page.evaluate(() => !window.demo.panel()?._closed);
+      const { width, height } = device.viewport;
+      console.log(`wrote ${out} (${width}x${height}${device.deviceScaleFactor ? ` at devicePixelRatio ${device.deviceScaleFactor}` : ''}, ` +
+                  `${query}, panel ${open ? 'open' : 'closed'})`);
     };
     if (single) {
-      await shoot(single, singleQuery, { panelOpen: true });
+      await shoot(single, singleQuery, phoneOnly ? { panelOpen: null, device: PHONE } : { panelOpen: true });
     } else {
       await shoot(join(repo, 'docs/screenshot.png'), '?paused&t=2', { panelOpen: true });
+      // At t=0, where the three figures stand apart across the frame (the framing a phone gets).
+      await shoot(join(repo, 'docs/screenshot-phone.png'), '?paused&t=0', { panelOpen: null, device: PHONE });
       const scenes = readdirSync(join(site, 'scenes')).filter((f) => f.endsWith('.json') && f !== 'index.json').sort();
       for (const file of scenes) {
         const name = file.replace(/\.json$/, '');

@@ -3,13 +3,15 @@
 //   session.js      the user's scene, models, settings, camera and time; the job queue
 //   url_state.js    links, both ways        capture.js  read-back, screenshot, the address bar
 //   drop.js         the user's files        panel.js    the controls     input.js  pointer and keys
-//   test_api.js     window.demo             stats.js, messages.js, bench.js, lod.js, figures.js,
-//   accuracy.js (the measured modes), scene_loader.js
+//   test_api.js     window.demo             layout.js   the panel's place, hints for the device
+//   stats.js, messages.js, bench.js, lod.js, figures.js, accuracy.js (the measured modes),
+//   scene_loader.js
 import { parseSweep } from './accuracy.js';
 import { benchPage } from './bench.js';
 import { AddressBar, readPixels, screenshot } from './capture.js';
 import { attachDrop } from './drop.js';
 import { attachInput, helpOverlay } from './input.js';
+import { dockPanel, inputKinds, reservePanel, showHints } from './layout.js';
 import { showMessage } from './messages.js';
 import { buildPanel } from './panel.js';
 import { sceneTitles } from './scene_loader.js';
@@ -107,6 +109,7 @@ async function start() {
     move: (steps) => camera((b) => b.moveCamera({ forward: steps })),
     strafe: (steps) => camera((b) => b.moveCamera({ right: steps })),
     rise: (steps) => camera((b) => b.moveCamera({ up: steps })),
+    pan: (right, up) => camera((b) => b.moveCamera({ right, up })),
     reset: () => camera((b) => b.resetCamera()),
     togglePause: () => session.setPaused(!session.paused),
     toggleHelp: () => help.toggle(),
@@ -124,7 +127,10 @@ async function start() {
     pickFolder: () => document.getElementById('folder-input').click(),
     bench: () => bench().catch(() => {}),
     toggleHelp: () => help.toggle(),
+    helpLabel: kinds.keys ? 'keys and mouse (?)' : 'touch gestures',
+    resized: sizeCanvasToDisplay,
   }) : null;
+  if (!panel) dockPanel(null, sizeCanvasToDisplay);
   const description = document.getElementById('scene-description');
   const describe = () => {
     const s = scenes.find((x) => x.name === session.scene.name);
@@ -167,6 +173,9 @@ function sizeCanvasToDisplay() {
   }
 }
 
+const kinds = inputKinds();
+showHints(kinds);
+reservePanel();
 window.demo = { ready };
 canvas.addEventListener('webglcontextlost', () => showMessage('WebGL context lost; restoring…', 'info'));
 canvas.addEventListener('webglcontextrestored', () => showMessage('WebGL context restored.', 'info'));

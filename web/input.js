@@ -1,10 +1,12 @@
 // Pointer, wheel and keyboard input to camera actions. Pointer events cover mouse, pen and touch;
-// the canvas has touch-action: none so a one-finger drag turns the view instead of scrolling, and
-// two fingers pinch to move along the view.
+// the canvas has touch-action: none so a one-finger drag turns the view instead of scrolling, two
+// fingers pinch to move along the view, and two fingers dragged together slide the eye sideways
+// and up or down (the scene follows the fingers, as a map does).
 //
 // actions: drag(dx, dy) in CSS pixels, move(steps) along the view, strafe(steps) to the right,
-// rise(steps) up, reset(), togglePause(), toggleHelp(), closeHelp(). The steps' length and
-// directions are the C++ camera's (LookCamera); this module only turns events into steps.
+// rise(steps) up, pan(rightSteps, upSteps) both at once, reset(), togglePause(), toggleHelp(),
+// closeHelp(). The steps' length and directions are the C++ camera's (LookCamera: move, strafe,
+// rise); this module only turns events into steps.
 
 // Typing in a control moves nothing; Space and Enter on a focused button press the button.
 function isTextField(target) {
@@ -20,20 +22,22 @@ export function wheelSteps(e) {
 }
 
 export const PINCH_PIXELS_PER_STEP = 20;
+// Two fingers moved together this far (CSS px) slide the eye one step (0.1) the other way.
+export const PAN_PIXELS_PER_STEP = 10;
 
 export function attachInput(canvas, actions) {
   const pointers = new Map();  // pointerId -> { x, y }
-  let pinchDistance = null;
-  const distance = () => {
+  let pinch = null;  // with two pointers down: { distance, x, y } (the midpoint) when last seen
+  const twoFingers = () => {
     const [a, b] = [...pointers.values()];
-    return Math.hypot(a.x - b.x, a.y - b.y);
+    return { distance: Math.hypot(a.x - b.x, a.y - b.y), x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
   };
 
   canvas.addEventListener('pointerdown', (e) => {
     pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
     canvas.setPointerCapture(e.pointerId);
     canvas.focus();
-    pinchDistance = pointers.size === 2 ? distance() : null;
+    pinch = pointers.size === 2 ? twoFingers() : null;
   });
   canvas.addEventListener('pointermove', (e) => {
     const p = pointers.get(e.pointerId);
@@ -43,15 +47,21 @@ export function attachInput(canvas, actions) {
     p.y = e.clientY;
     if (pointers.size === 1) {
       actions.drag(dx, dy);
-    } else if (pointers.size === 2 && pinchDistance !== null) {
-      const d = distance();
-      actions.move((d - pinchDistance) / PINCH_PIXELS_PER_STEP);  // spreading the fingers moves in
-      pinchDistance = d;
+    } else if (pointers.size === 2 && pinch !== null) {
+      const now = twoFingers();
+      const forward = (now.distance - pinch.distance) / PINCH_PIXELS_PER_STEP;  // spreading moves in
+      // The midpoint's move: the scene follows the fingers, so the eye goes the other way
+      // (fingers to the right: the eye to the left; fingers up: the eye down).
+      const right = -(now.x - pinch.x) / PAN_PIXELS_PER_STEP;
+      const up = (now.y - pinch.y) / PAN_PIXELS_PER_STEP;
+      if (forward) actions.move(forward);
+      if (right || up) actions.pan(right, up);
+      pinch = now;
     }
   });
   const end = (e) => {
     if (!pointers.delete(e.pointerId)) return;
-    pinchDistance = pointers.size === 2 ? distance() : null;
+    pinch = pointers.size === 2 ? twoFingers() : null;
   };
   canvas.addEventListener('pointerup', end);
   canvas.addEventListener('pointercancel', end);

@@ -3,6 +3,7 @@
 // choices), so a setting added on the C++ side appears here by itself: the planner's under
 // Capture, the accuracy settings under Accuracy › settings, the material settings under Materials.
 // Control ids: #control-NAME, #control-acc-NAME, #control-mat-INDEX-NAME.
+import { dockPanel } from './layout.js';
 
 export const CUBE_SIZES = [32, 64, 128, 256, 512, 1024];
 
@@ -27,13 +28,13 @@ function addSetting(folder, target, info, apply, id) {
 }
 
 // GUI: lil-gui's class. session: session.js. actions: { scenes, screenshot, copyLink, pickFiles,
-// pickFolder, bench, toggleHelp }. Returns { gui, refresh }.
+// pickFolder, bench, toggleHelp, helpLabel, resized }. The panel goes in #dock; it starts open
+// in a wide window only, and the layout makes room for it (layout.js). Returns { gui, refresh }.
 export function buildPanel(GUI, session, actions) {
   const { bridge, schema } = session;
-  const gui = new GUI({ title: 'Controls', width: 260 });
+  const gui = new GUI({ title: 'Controls', width: 260, container: document.getElementById('dock') });
   gui.domElement.id = 'panel';
-  // On a phone or a narrow window the open panel would hide the scene: start it closed there.
-  if (matchMedia('(pointer: coarse)').matches || innerWidth < 640) gui.close();
+  dockPanel(gui, actions.resized);
   const view = { scene: session.scene.name, cube: session.faceSize(), planner: bridge.planner(),
                  accuracy: bridge.accuracy(), mode: '', staleness: '',
                  lodLevels: '', paused: session.paused };
@@ -135,7 +136,7 @@ export function buildPanel(GUI, session, actions) {
   share.add(actions, 'screenshot').name('screenshot (PNG)').domElement.id = 'control-screenshot';
   share.add(actions, 'copyLink').name('copy link').domElement.id = 'control-link';
   share.add(actions, 'bench').name('run bench').domElement.id = 'control-bench';
-  share.add(actions, 'toggleHelp').name('keys and mouse (?)').domElement.id = 'control-help';
+  share.add(actions, 'toggleHelp').name(actions.helpLabel || 'keys and mouse (?)').domElement.id = 'control-help';
 
   // Reads everything shown back from the session.
   function refresh() {

@@ -76,14 +76,15 @@ export function sceneUrl(nameOrUrl) {
 // shows the bytes still coming. Returns the scene's title. Throws an Error with the message to
 // show when the scene cannot be loaded. `beforeCommit` runs right before the new scene replaces
 // the old one (to carry over what the user did to the old one while the new one was loading).
+// `warn(text)` gets each model's loader warnings (models that loaded with something let pass).
 export async function loadScene(bridge, url, {
-  userPrefix = null, cubeSize = 0, overrides = null, progress = null, beforeCommit = null,
+  userPrefix = null, cubeSize = 0, overrides = null, progress = null, beforeCommit = null, warn = null,
 } = {}) {
   const track = (name) => (progress ? progress.track(name) : null);
   const beginError = bridge.beginScene({ source: url, bytes: await fetchBytes(url) });
   if (beginError) throw new Error(beginError);
   const files = bridge.pendingFiles();
-  const load = (name, source, bytes) => bridge.loadMesh({ name, source, bytes, pending: true });
+  const load = (name, source, bytes) => bridge.loadMesh({ name, source, bytes, pending: true, warn });
 
   try {
     await Promise.all(files.meshes.map(async (name) => {

@@ -8,6 +8,9 @@ import { buildLods } from './lod.js';
 import { showMessage } from './messages.js';
 import { loadScene, sceneUrl } from './scene_loader.js';
 
+// A model's loader warning (it loaded, with something let pass): an info message.
+const warnInfo = (text) => showMessage(text, 'info');
+
 export class Session {
   constructor(bridge, { schema, sweepRows, assets = null, progress = null }) {
     Object.assign(this, { bridge, schema, assets, progress });
@@ -65,8 +68,11 @@ export class Session {
     };
     let title;
     try {
+      // A reload of the same scene (cube size, accuracy mode) loads the same files again: their
+      // warnings were shown the first time.
       title = await loadScene(this.bridge, sceneUrl(name), {
         userPrefix: this.assets, cubeSize: this.cubeSize, overrides: this.overrides, progress: this.progress, beforeCommit,
+        warn: same ? null : warnInfo,
       });
     } catch (e) {
       showMessage(e.message);
@@ -113,9 +119,9 @@ export class Session {
   }
 
   // Mesh `mesh` of the scene from the user's file { path } (the bytes are kept for reloads).
-  // Returns "" or the error.
+  // Returns "" or the error; the loader's warnings are shown as info messages.
   replaceModel(file, mesh, bytes) {
-    const error = this.bridge.loadMesh({ name: mesh, source: file.path, bytes });
+    const error = this.bridge.loadMesh({ name: mesh, source: file.path, bytes, warn: warnInfo });
     if (error) return error;
     const figure = this.figures.find((g) => g.name === mesh);
     if (figure) Object.assign(figure, { bytes, source: file.path });
@@ -124,8 +130,9 @@ export class Session {
   }
 
   // A new figure from the user's file: `place(bounds, figures)` gives its scene-file object.
+  // Returns "" or the error; the loader's warnings are shown as info messages.
   addFigure(file, name, bytes, place) {
-    const error = this.bridge.loadMesh({ name, source: file.path, bytes });
+    const error = this.bridge.loadMesh({ name, source: file.path, bytes, warn: warnInfo });
     if (error) return error;
     const bounds = this.bridge.meshBounds(name);
     if (!bounds) return 'no bounds for the loaded mesh';

@@ -79,8 +79,13 @@ export async function createBridge(canvas) {
     beginScene: ({ source, bytes }) => errorOf(callWithData('rf_begin_scene', { source }, bytes)),
     pendingFiles: () => call('rf_pending_files'),
     // pending: for the scene being loaded; else the current scene's mesh `name` (replaced or new).
-    loadMesh: ({ name, source, bytes, pending = false }) =>
-      errorOf(callWithData('rf_load_mesh', { name, source, pending }, bytes)),
+    // Returns "" or the error; what the loader let pass (undefined normals, texture indices
+    // without vt lines: one line each, naming the file) goes to `warn(text)` when the load worked.
+    loadMesh: ({ name, source, bytes, pending = false, warn = null }) => {
+      const reply = callWithData('rf_load_mesh', { name, source, pending }, bytes);
+      if (!reply.error && warn) for (const warning of reply.warnings || []) warn(warning);
+      return errorOf(reply);
+    },
     skyboxImage: ({ index, source, bytes }) =>
       errorOf(callWithData('rf_pending_skybox_image', { index, source }, bytes)),
     commitScene: ({ cubeSize = 0 } = {}) => call('rf_commit_scene', { cubeSize }),

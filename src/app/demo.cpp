@@ -182,12 +182,24 @@ void Demo::renderLookupDirections(unsigned framebuffer, int width, int height) {
                         camera_.eye()};
   const std::vector<PlannedObject> objects = plannedObjects(clock_.seconds());
   renderer_->drawMain(scene_, clock_.seconds(), FramePlanner::layout(objects, captureContext()),
-                      view, viewDraws(objects, height), framebuffer, width, height, true);
+                      view, viewDraws(objects, width, height), framebuffer, width, height, true);
 }
 
-std::vector<DrawItem> Demo::viewDraws(const std::vector<PlannedObject>& objects, int height) const {
+std::vector<ScreenBox> Demo::screenBoxes(int width, int height) const {
+  const float aspect = height > 0 ? static_cast<float>(width) / static_cast<float>(height) : 1.0f;
+  const glm::mat4 viewProjection = camera_.projection(aspect) * camera_.view();
+  std::vector<ScreenBox> boxes;
+  for (const PlannedObject& object : plannedObjects(clock_.seconds())) {
+    boxes.push_back(screenBox(object.localBounds, object.model, viewProjection));
+  }
+  return boxes;
+}
+
+std::vector<DrawItem> Demo::viewDraws(const std::vector<PlannedObject>& objects, int width,
+                                      int height) const {
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const float pixelsPerTangent =
-      0.5f * static_cast<float>(height) / std::tan(glm::radians(camera_.fovYDeg()) * 0.5f);
+      0.5f * static_cast<float>(height) / std::tan(glm::radians(camera_.fovYDeg(aspect)) * 0.5f);
   return planViewDraws(objects, camera_.eye(), pixelsPerTangent, plannerSettings_);
 }
 
@@ -288,7 +300,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                         camera_.eye()};
   gpuTimer_->begin(GpuTimer::kMain);
   const PassCounts main =
-      renderer_->drawMain(scene_, stats_.timeSeconds, plan, view, viewDraws(objects, height),
+      renderer_->drawMain(scene_, stats_.timeSeconds, plan, view, viewDraws(objects, width, height),
                           framebuffer, width, height);
   gpuTimer_->end();
   gpuTimer_->endFrame();

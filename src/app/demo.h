@@ -14,6 +14,7 @@
 #include "core/animation_clock.h"
 #include "core/camera.h"
 #include "core/frame_planner.h"
+#include "core/frustum.h"
 #include "core/mesh_data.h"
 #include "core/obj_loader.h"
 #include "core/scene.h"
@@ -87,6 +88,9 @@ class Demo {
   // Renders the main view with mirrors and glass writing the direction they look up (RGB) into
   // `framebuffer` (a float target), for the accuracy measurement. Time does not advance.
   void renderLookupDirections(unsigned framebuffer, int width, int height);
+  // Where each scene object (in the scene's order) lands on a width x height view now: its
+  // bounding box projected by the camera (see screenBox), in fractions of the view.
+  std::vector<ScreenBox> screenBoxes(int width, int height) const;
   void setPlannerSettings(const PlannerSettings& settings);
   // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;
   // returns a message when it had to clamp.
@@ -103,8 +107,9 @@ class Demo {
   std::vector<PlannedObject> plannedObjects(double seconds) const;
   // Everything besides the objects that the captures depend on, as values.
   CaptureContext captureContext() const;
-  // The main pass's draws for a viewport `height` pixels tall (view LOD, if on).
-  std::vector<DrawItem> viewDraws(const std::vector<PlannedObject>& objects, int height) const;
+  // The main pass's draws for a width x height viewport (view LOD, if on).
+  std::vector<DrawItem> viewDraws(const std::vector<PlannedObject>& objects, int width,
+                                  int height) const;
 
   Scene scene_;
   std::map<std::string, std::vector<MeshData>> meshes_;  // levels of detail, 0 = as loaded

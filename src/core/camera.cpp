@@ -1,5 +1,6 @@
 #include "core/camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -63,9 +64,19 @@ glm::mat4 LookCamera::view() const {
          glm::translate(glm::mat4(1.0f), -eye_);
 }
 
+float LookCamera::fovYDeg(float aspect) const {
+  if (!std::isfinite(aspect) || !(aspect > 0.0f)) aspect = 1.0f;
+  if (aspect >= 1.0f) return settings_.fovYDeg;
+  // The horizontal field is the setting. Below aspect 0.006 (a sliver of a canvas) the vertical
+  // one stops at 179 degrees, short of the half turn where tan(fov / 2) would flip sign.
+  const float vertical =
+      glm::degrees(2.0f * std::atan(std::tan(glm::radians(settings_.fovYDeg) * 0.5f) / aspect));
+  return std::min(vertical, std::max(settings_.fovYDeg, 179.0f));
+}
+
 glm::mat4 LookCamera::projection(float aspect) const {
   if (!std::isfinite(aspect) || !(aspect > 0.0f)) aspect = 1.0f;
-  return glm::perspective(glm::radians(settings_.fovYDeg), aspect, settings_.near, settings_.far);
+  return glm::perspective(glm::radians(fovYDeg(aspect)), aspect, settings_.near, settings_.far);
 }
 
 }  // namespace reflect

@@ -7,6 +7,8 @@ namespace reflect {
 
 struct CameraSettings {
   glm::vec3 eye{0.0f, 1.0f, 7.0f};
+  // The field of view along the narrower side of the target: vertical on a landscape or square
+  // target (the course's 70 degrees), horizontal on a portrait one (see LookCamera::fovYDeg).
   float fovYDeg = 70.0f;
   float near = 1.0f;
   float far = 100.0f;
@@ -43,8 +45,15 @@ class LookCamera {
   glm::vec3 viewDirection() const;
   glm::mat4 view() const;
   // aspect = width / height of the target; a non-finite or non-positive aspect falls back to 1.
+  // A perspective of fovYDeg(aspect) vertically.
   glm::mat4 projection(float aspect) const;
-  float fovYDeg() const { return settings_.fovYDeg; }
+  // The vertical field of view on a target of this aspect (width / height), in degrees. The
+  // camera keeps its field of view along the narrower side: at aspect >= 1 the vertical field is
+  // the setting (the course's framing); on a portrait target the horizontal field is, so the
+  // vertical one is 2 atan(tan(setting / 2) / aspect) and a phone sees as wide as a square
+  // window (up to 179 degrees). Everything that sizes things by the field of view (view LOD)
+  // asks here. A bad aspect reads as 1.
+  float fovYDeg(float aspect) const;
 
  private:
   CameraSettings settings_;

@@ -52,4 +52,33 @@ bool faceMaySee(const glm::vec3& centre, int face, float near, float far, const 
   return true;
 }
 
+ScreenBox screenBox(const Bounds& local, const glm::mat4& model, const glm::mat4& viewProjection) {
+  ScreenBox box;
+  box.inFront = true;
+  bool any = false;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? local.max.x : local.min.x,
+                      (corner & 2) ? local.max.y : local.min.y,
+                      (corner & 4) ? local.max.z : local.min.z);
+    const glm::vec4 clip = viewProjection * model * glm::vec4(p, 1.0f);
+    if (!(clip.w > 0.0f)) {
+      box.inFront = false;
+      continue;
+    }
+    // Normalised device coordinates to fractions of the target, y from the top.
+    const float x = 0.5f + 0.5f * clip.x / clip.w;
+    const float y = 0.5f - 0.5f * clip.y / clip.w;
+    if (!any) {
+      box.x0 = box.x1 = x;
+      box.y0 = box.y1 = y;
+      any = true;
+    }
+    box.x0 = std::min(box.x0, x);
+    box.x1 = std::max(box.x1, x);
+    box.y0 = std::min(box.y0, y);
+    box.y1 = std::max(box.y1, y);
+  }
+  return box;
+}
+
 }  // namespace reflect

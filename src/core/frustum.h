@@ -1,5 +1,6 @@
 // Which cube faces can see a box: the six planes of a 90-degree face frustum, tested against a
-// world-space axis-aligned box (conservative: a box that might be visible is kept).
+// world-space axis-aligned box (conservative: a box that might be visible is kept). And where a
+// box lands on the main view's target.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -16,5 +17,16 @@ Bounds transformBounds(const Bounds& local, const glm::mat4& model);
 // into the box's own space, so a rotated figure is not inflated to a world-aligned box.
 bool faceMaySee(const glm::vec3& centre, int face, float near, float far, const Bounds& local,
                 const glm::mat4& model = glm::mat4(1.0f));
+
+// Where a box lands on a target: the rectangle around its 8 corners (the box `local` placed by
+// `model`) projected by `viewProjection`, in fractions of the target (x to the right, y down;
+// 0..1 is on the target). Conservative: the object inside the box covers at most this rectangle.
+// `inFront` is false when some corner is not in front of the eye; the rectangle then spans only
+// the corners that are (all zero when none is).
+struct ScreenBox {
+  float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
+  bool inFront = false;
+};
+ScreenBox screenBox(const Bounds& local, const glm::mat4& model, const glm::mat4& viewProjection);
 
 }  // namespace reflect

@@ -85,14 +85,15 @@ struct Compared {
   AccuracyReport report;
 };
 
-Compared renderBoth(Demo& demo, double t) {
+Compared renderBoth(Demo& demo, double t, int width = kSize, int height = kSize,
+                    const std::string& tag = "") {
   Compared c;
-  auto raster = renderFrameAt(demo, t, kSize, kSize);
+  auto raster = renderFrameAt(demo, t, width, height);
   EXPECT_TRUE(raster) << raster.error();
   if (!raster) return c;
   c.raster = raster.take();
   auto reference = renderReference(demo.scene(), meshesOf(demo), demo.skyboxFaces(), demo.camera(),
-                                   demo.clock().seconds(), kSize, kSize);
+                                   demo.clock().seconds(), width, height);
   EXPECT_TRUE(reference) << reference.error();
   if (!reference) return c;
   c.reference = reference.take();
@@ -100,7 +101,7 @@ Compared renderBoth(Demo& demo, double t) {
   EXPECT_TRUE(report) << report.error();
   if (report) c.report = report.value();
   c.report.timeSeconds = t;
-  const std::string suffix = "_t" + std::to_string(static_cast<int>(t)) + ".png";
+  const std::string suffix = tag + "_t" + std::to_string(static_cast<int>(t)) + ".png";
   testing::saveOutput(c.raster, "raster" + suffix);
   testing::saveOutput(c.reference.image, "reference" + suffix);
   testing::saveOutput(differenceImage(c.raster, c.reference.image, 4), "difference_x4" + suffix);
@@ -139,6 +140,27 @@ TEST(Reference, MirrorRegionMetricsAndCoverage) {
                 static_cast<int>(t), r.reflectorPixels, expected, ratio);
     EXPECT_NEAR(ratio, 1.0, 0.05);
   }
+}
+
+// A phone's shape (390x844, halved): the camera keeps its field of view across, and the
+// reference follows camera.projection as the raster does, so the two still agree off the mirror
+// and the mirror covers the exact sphere's disc, as wide as on a square target of that width.
+TEST(Reference, AgreesWithTheRasterOnAPortraitTarget) {
+  auto demo = testing::makeDemo(makeDynamicReflectionScene());
+  constexpr int kWidth = 195, kHeight = 422;
+  const Compared c = renderBoth(*demo, 0.0, kWidth, kHeight, "_portrait");
+  ASSERT_EQ(c.reference.image.width, kWidth);
+  ASSERT_EQ(c.reference.image.height, kHeight);
+  printReport("portrait", c.report);
+  EXPECT_GE(c.report.offReflector.psnrDb, kOffReflectorMinPsnr);
+  const glm::vec3 centre(0.0f, 0.25f, 0.0f);
+  const double radius = 1.2728;
+  const size_t disc = analyticDiscPixels(demo->camera(), kWidth, kHeight, centre, radius);
+  const size_t squareDisc = analyticDiscPixels(demo->camera(), kWidth, kWidth, centre, radius);
+  std::printf("portrait: mirror mask %zu px, exact disc %zu px, on a %dx%d target %zu px\n",
+              c.report.reflectorPixels, disc, kWidth, kWidth, squareDisc);
+  EXPECT_NEAR(static_cast<double>(c.report.reflectorPixels) / static_cast<double>(disc), 1.0, 0.05);
+  EXPECT_NEAR(static_cast<double>(disc) / static_cast<double>(squareDisc), 1.0, 0.03);
 }
 
 TEST(Reference, ProbeCentreIsTheMirrorsBoundsCentre) {

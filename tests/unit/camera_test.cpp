@@ -2,11 +2,16 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/camera.h"
+#include "core/frustum.h"
+#include "core/obj_loader.h"
+#include "core/scene_file.h"
 
 namespace reflect {
 namespace {
@@ -122,6 +127,124 @@ TEST(LookCamera, ProjectionFollowsAspectAndRejectsBadAspect) {
   EXPECT_FLOAT_EQ(wide[1][1], square[1][1]);
   EXPECT_EQ(camera.projection(0.0f), square);
   EXPECT_EQ(camera.projection(std::numeric_limits<float>::quiet_NaN()), square);
+}
+
+// The course's framing: 70 degrees vertically on a square or wider target, the matrix exactly as
+// before the field of view followed the aspect (goldens at aspect 1 depend on it).
+TEST(LookCamera, SquareAndWiderTargetsKeepTheVerticalFieldOfView) {
+  LookCamera camera;
+  for (float aspect : {1.0f, 4.0f / 3.0f, 16.0f / 9.0f, 2.0f, 1e4f}) {
+    EXPECT_EQ(camera.fovYDeg(aspect), 70.0f) << aspect;
+    EXPECT_EQ(camera.projection(aspect),
+              glm::perspective(glm::radians(70.0f), aspect, 1.0f, 100.0f))
+        << aspect;
+  }
+  CameraSettings narrow;
+  narrow.fovYDeg = 40.0f;
+  EXPECT_EQ(LookCamera(narrow).fovYDeg(1.5f), 40.0f);
+}
+
+// On a portrait target the horizontal field of view is the setting, so a phone sees as wide as a
+// square window; the vertical field is 2 atan(tan(35 degrees) / aspect).
+TEST(LookCamera, PortraitTargetsKeepTheHorizontalFieldOfView) {
+  LookCamera camera;
+  const double tanHalf = std::tan(35.0 * 3.14159265358979323846 / 180.0);
+  for (float aspect : {0.999f, 0.9f, 390.0f / 844.0f, 0.25f}) {
+    const double expectedDeg = 2.0 * std::atan(tanHalf / aspect) * 180.0 / 3.14159265358979323846;
+    EXPECT_NEAR(camera.fovYDeg(aspect), expectedDeg, 1e-4) << aspect;
+    EXPECT_GT(camera.fovYDeg(aspect), 70.0f) << aspect;
+    const glm::mat4 p = camera.projection(aspect);
+    // x_ndc = x_view * p[0][0] / -z: the half-width of the view at distance 1 is 1 / p[0][0].
+    EXPECT_NEAR(1.0 / p[0][0], tanHalf, 1e-5) << aspect;
+    EXPECT_NEAR(1.0 / p[1][1], tanHalf / aspect, 1e-5) << aspect;
+    EXPECT_TRUE(allFinite(p)) << aspect;
+  }
+  // Continuous through aspect 1: nothing jumps as a window is narrowed past square.
+  EXPECT_NEAR(camera.fovYDeg(0.99999f), 70.0f, 1e-3f);
+  // A 390x844 phone: 113 degrees vertically for 70 across.
+  EXPECT_NEAR(camera.fovYDeg(390.0f / 844.0f), 113.16f, 0.01f);
+}
+
+// Where the boxes of the course's scene land at t = 0: on a 390x844 phone every figure is in the
+// frame (with the fixed 70-degree vertical field mario was cut off at the right edge), and a
+// square window frames them as the course does.
+TEST(ScreenBox, TheCoursesFiguresAreInTheFrameOnAPhone) {
+  Result<Scene> scene = loadSceneFile(std::string(SCENE_DIR) + "/ex12-2.json");
+  ASSERT_TRUE(scene) << scene.error();
+  LookCamera camera(scene.value().camera);
+  const auto boxesAt = [&](const glm::mat4& projection) {
+    std::map<std::string, ScreenBox> boxes;
+    for (const SceneObject& object : scene.value().objects) {
+      if (object.mesh == "quad.obj") continue;  // the ground runs past every edge
+      Result<LoadedMesh> mesh = loadObjFile(std::string(MODEL_DIR) + "/" + object.mesh);
+      EXPECT_TRUE(mesh) << mesh.error();
+      if (!mesh) continue;
+      boxes[object.mesh] =
+          screenBox(mesh.value().mesh.bounds, scene.value().modelMatrix(object, 0.0),
+                    projection * camera.view());
+    }
+    return boxes;
+  };
+  const float phone = 390.0f / 844.0f;
+  const auto boxes = boxesAt(camera.projection(phone));
+  ASSERT_EQ(boxes.size(), 3u);
+  for (const auto& [mesh, box] : boxes) {
+    EXPECT_TRUE(box.inFront) << mesh;
+    EXPECT_GE(box.x0, 0.0f) << mesh;
+    EXPECT_LE(box.x1, 1.0f) << mesh;
+    EXPECT_GE(box.y0, 0.0f) << mesh;
+    EXPECT_LE(box.y1, 1.0f) << mesh;
+    EXPECT_LT(box.x0, box.x1) << mesh;
+    EXPECT_LT(box.y0, box.y1) << mesh;
+  }
+  // The sphere sits in the middle, mario right of it, sonic left.
+  EXPECT_NEAR((boxes.at("sphere.obj").x0 + boxes.at("sphere.obj").x1) / 2, 0.5f, 1e-4f);
+  EXPECT_GT(boxes.at("mario.obj").x0, boxes.at("sphere.obj").x1);
+  EXPECT_LT(boxes.at("sonic.obj").x1, boxes.at("sphere.obj").x0);
+  // The old rule, 70 degrees vertically whatever the aspect, put mario past the right edge.
+  const auto fixed = boxesAt(glm::perspective(glm::radians(70.0f), phone, 1.0f, 100.0f));
+  EXPECT_GT(fixed.at("mario.obj").x1, 1.0f);
+  // A square view and a phone see the same horizontal extent: the same x fractions.
+  const auto square = boxesAt(camera.projection(1.0f));
+  for (const auto& [mesh, box] : boxes) {
+    EXPECT_NEAR(square.at(mesh).x0, box.x0, 1e-5f) << mesh;
+    EXPECT_NEAR(square.at(mesh).x1, box.x1, 1e-5f) << mesh;
+  }
+}
+
+TEST(ScreenBox, CornersBehindTheEyeAreReported) {
+  LookCamera camera;  // at (0, 1, 7) looking down -z
+  const glm::mat4 viewProjection = camera.projection(1.0f) * camera.view();
+  const Bounds unit{glm::vec3(-0.5f), glm::vec3(0.5f)};
+  const ScreenBox ahead =
+      screenBox(unit, glm::translate(glm::mat4(1.0f), {0, 1, 0}), viewProjection);
+  EXPECT_TRUE(ahead.inFront);
+  EXPECT_NEAR((ahead.x0 + ahead.x1) / 2, 0.5f, 1e-5f);
+  EXPECT_NEAR((ahead.y0 + ahead.y1) / 2, 0.5f, 1e-5f);
+  // Half the box behind the eye: not in front, the rectangle from the corners that are.
+  const ScreenBox straddling =
+      screenBox(unit, glm::translate(glm::mat4(1.0f), {0, 1, 7}), viewProjection);
+  EXPECT_FALSE(straddling.inFront);
+  const ScreenBox behind =
+      screenBox(unit, glm::translate(glm::mat4(1.0f), {0, 1, 9}), viewProjection);
+  EXPECT_FALSE(behind.inFront);
+  EXPECT_EQ(behind.x0, 0.0f);
+  EXPECT_EQ(behind.x1, 0.0f);
+}
+
+TEST(LookCamera, SliverTargetsStopShortOfAHalfTurn) {
+  LookCamera camera;
+  for (float aspect : {1e-3f, 1e-6f, 1e-30f}) {
+    EXPECT_LE(camera.fovYDeg(aspect), 179.0f) << aspect;
+    EXPECT_GT(camera.fovYDeg(aspect), 170.0f) << aspect;
+    const glm::mat4 p = camera.projection(aspect);
+    EXPECT_TRUE(allFinite(p)) << aspect;
+    EXPECT_GT(p[1][1], 0.0f) << aspect;  // not flipped
+  }
+  for (float bad : {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(),
+                    std::numeric_limits<float>::infinity()}) {
+    EXPECT_EQ(camera.fovYDeg(bad), 70.0f) << bad;
+  }
 }
 
 }  // namespace

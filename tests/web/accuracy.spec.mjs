@@ -4,7 +4,13 @@
 import { test, expect } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { changedInSphere, collectErrors, expectedSphereBox, idle, messages, openDemo, renderAndRead } from './helpers.mjs';
+import {
+  changedInSphere, collectErrors, expectedSphereBox, idle, messages, openDemo, PANEL_OPEN_VIEWPORT,
+  renderAndRead,
+} from './helpers.mjs';
+
+// The panel's controls are used: a window where it starts open, the canvas 800x600 beside it.
+test.use({ viewport: PANEL_OPEN_VIEWPORT });
 
 const CSV = readFileSync(fileURLToPath(new URL('../../assets/sweep.csv', import.meta.url)), 'utf8');
 // name -> { setting, faceSize, psnr, angular } from the CSV (the setting and settings columns

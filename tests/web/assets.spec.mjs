@@ -159,6 +159,33 @@ test('a course-like sphere.obj (quads v/vt/vn, CR CR LF, missing mtllib, several
   expect(Math.abs(measured.height - (expected.y1 - expected.y0 + 1))).toBeLessThan(8);
 });
 
+// A model the loader lets pass with a warning (faces name normals the file has none of) is used,
+// and the warning is shown as an info message naming the file; a reload of the same scene (cube
+// size) does not repeat it.
+test('an ?assets= model with undefined normals loads, its warning shown as an info message', async ({ page }) => {
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await serveCourse(page, {
+    'mario.obj': real('mario.obj'), 'sonic.obj': 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//2 3//3\n',
+    'sphere.obj': real('sphere.obj'), 'quad.obj': real('quad.obj'),
+  });
+  await openDemo(page, '?paused&assets=/course/');
+  const warning = '/course/sonic.obj: faces name normals the file does not define (first on line 4); using computed normals';
+  const shown = () => page.evaluate((w) => window.demo.messages().filter((m) => m.text === w), warning);
+  expect(await shown()).toEqual([{ text: warning, kind: 'info' }]);
+  await expect(page.locator('#messages .message.info', { hasText: warning })).toBeVisible();
+  await expect(page.locator('#messages .message.error')).toHaveCount(0);
+  // The file's one triangle is sonic now.
+  await page.evaluate(() => window.demo.lodReady());
+  expect(await page.evaluate(() => window.demo.lodLevels('sonic.obj')?.[0])).toBe(1);
+  // A measured mode at another cube size reloads the same scene and its files.
+  await page.evaluate(() => window.demo.setAccuracy('default-size-64'));
+  await page.evaluate(() => window.demo.idle());
+  expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
+  expect(await shown()).toHaveLength(1);
+  expect(errors).toEqual([]);
+});
+
 // Paths as users write them: not ASCII, long, with quotes, backslashes and spaces. The page
 // fetches them (the browser encodes them) and names them whole in its messages and its link.
 const ODD_PREFIX = `/コース "ü" ${'long folder '.repeat(85)}\\ end/`;

@@ -6,8 +6,12 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import {
-  collectErrors, colourSummary, expectMessage, idle, messages, openDemo, readyOutcome, renderAndRead,
+  collectErrors, colourSummary, expectMessage, idle, messages, openDemo, PANEL_OPEN_VIEWPORT, readyOutcome,
+  renderAndRead,
 } from './helpers.mjs';
+
+// The panel's controls are used: a window where it starts open, the canvas 800x600 beside it.
+test.use({ viewport: PANEL_OPEN_VIEWPORT });
 
 const MODELS = fileURLToPath(new URL('../../assets/models/', import.meta.url));
 const real = (name) => readFileSync(MODELS + name, 'utf8');
@@ -66,6 +70,30 @@ test('a broken file is named in a message and the scene keeps its model', async 
   expect(await triangles(page)).toBe(before);
   const image = await page.evaluate(() => window.demo.frame(0));
   expect(image.drawCalls).toBeGreaterThan(0);
+});
+
+// Faces that name normals the file does not define: the loader computes normals and says so; the
+// page shows that as an info message (and keeps it in demo.messages()), for a new figure and for
+// a replaced model alike.
+test('a dropped OBJ with undefined normals loads, with its warning as an info message', async ({ page }) => {
+  const errors = collectErrors(page);
+  await openDemo(page, '?paused');
+  const TRIANGLE = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//2 3//3\n';
+  const warning = (name) => `${name}: faces name normals the file does not define (first on line 4); using computed normals`;
+  await drop(page, [{ name: 'triangle.obj', text: TRIANGLE }]);
+  await expectMessage(page, 'added triangle.obj as an orbiting figure', 'info');
+  await idle(page);
+  expect(await page.evaluate(() => window.demo.figures().map((f) => f.name))).toEqual(['triangle.obj']);
+  const history = await messages(page);
+  expect(history.filter((m) => m.text === warning('triangle.obj'))).toEqual([{ text: warning('triangle.obj'), kind: 'info' }]);
+  await expect(page.locator('#messages .message.info', { hasText: warning('triangle.obj') })).toBeVisible();
+
+  await drop(page, [{ name: 'sonic.obj', text: TRIANGLE }]);
+  await expectMessage(page, 'sonic.obj replaced by sonic.obj', 'info');
+  await expectMessage(page, warning('sonic.obj'), 'info');
+  await idle(page);
+  expect((await messages(page)).filter((m) => m.kind === 'error')).toEqual([]);
+  expect(errors).toEqual([]);
 });
 
 test('non-.obj files are reported, not loaded; files over 64 MB are refused unread', async ({ page }) => {

@@ -12,6 +12,11 @@ export const SCENE = {
   background: [102, 102, 102],
 };
 
+// A window in which the panel starts open (the page opens it from 1000 CSS px of width) with the
+// canvas beside it at the tests' usual 800x600 (the panel's column is 260 px): for tests that
+// use the panel's controls.
+export const PANEL_OPEN_VIEWPORT = { width: 1060, height: 600 };
+
 // Records console errors and uncaught page errors from the moment it is called.
 export function collectErrors(page) {
   const errors = [];
@@ -103,10 +108,17 @@ export function colourSummary(image) {
   return { distinct: colours.size, greyFraction: grey / n };
 }
 
+// tan of half the vertical field of view on a width x height picture: the camera keeps its 70
+// degrees along the narrower side (LookCamera::fovYDeg), so a portrait picture has 70 across.
+export function tanHalfFovY(width, height) {
+  const tanHalf = Math.tan((SCENE.fovYDeg / 2) * Math.PI / 180);
+  return width >= height ? tanHalf : tanHalf * height / width;
+}
+
 // Whether the eye ray through pixel (x, y) of a width x height picture passes within
 // radiusScale * radius of the sphere's centre (camera at its reset pose: yaw 0, pitch 0).
 export function makeSphereTest(width, height, { eye = SCENE.eye, radiusScale = 1 } = {}) {
-  const tanHalf = Math.tan((SCENE.fovYDeg / 2) * Math.PI / 180);
+  const tanHalf = tanHalfFovY(width, height);
   const aspect = width / height;
   const c = SCENE.sphereCentre.map((v, i) => v - eye[i]);
   const r = SCENE.sphereRadius * radiusScale;

@@ -1,7 +1,7 @@
 // Input: pointer drags (mouse and touch) turn the view by 100 degrees per canvas height, keys
 // move and reset the camera, Space pauses.
 import { test, expect } from '@playwright/test';
-import { openDemo, renderAndRead } from './helpers.mjs';
+import { openDemo, PANEL_OPEN_VIEWPORT, renderAndRead } from './helpers.mjs';
 
 const camera = (page) => page.evaluate(() => window.demo.camera());
 
@@ -184,17 +184,21 @@ test('A / D strafe and Q / E go down / up by 0.1, also when turned', async ({ pa
   expect(c.pitch).toBeCloseTo(-30, 3);
 });
 
-test('keys typed into a panel field move nothing', async ({ page }) => {
-  await openDemo(page, '?paused');
-  const field = page.locator('#control-captureLod input');
-  await field.focus();
-  for (const key of ['w', 'a', 's', 'd', 'q', 'e', 'r', ' ', 'ArrowUp']) await field.press(key);
-  expect(await camera(page)).toEqual({ eye: [0, 1, 7], yaw: 0, pitch: 0 });
-  expect(await page.evaluate(() => window.demo.paused())).toBe(true);
-  await expect(page.locator('#help-overlay')).toBeHidden();
-  await page.locator('#control-policy select').focus();
-  await page.keyboard.press('w');
-  expect(await camera(page)).toEqual({ eye: [0, 1, 7], yaw: 0, pitch: 0 });
+test.describe('with the panel open', () => {
+  test.use({ viewport: PANEL_OPEN_VIEWPORT });
+
+  test('keys typed into a panel field move nothing', async ({ page }) => {
+    await openDemo(page, '?paused');
+    const field = page.locator('#control-captureLod input');
+    await field.focus();
+    for (const key of ['w', 'a', 's', 'd', 'q', 'e', 'r', ' ', 'ArrowUp']) await field.press(key);
+    expect(await camera(page)).toEqual({ eye: [0, 1, 7], yaw: 0, pitch: 0 });
+    expect(await page.evaluate(() => window.demo.paused())).toBe(true);
+    await expect(page.locator('#help-overlay')).toBeHidden();
+    await page.locator('#control-policy select').focus();
+    await page.keyboard.press('w');
+    expect(await camera(page)).toEqual({ eye: [0, 1, 7], yaw: 0, pitch: 0 });
+  });
 });
 
 test('the mouse wheel moves along the view, and does not scroll the page', async ({ page }) => {

@@ -1,7 +1,12 @@
 // Levels of detail built in the browser with meshoptimizer (for captures and the main view), and
 // the page's bench mode.
 import { test, expect } from '@playwright/test';
-import { collectErrors, countChanged, openDemo, renderAndRead } from './helpers.mjs';
+import {
+  collectErrors, countChanged, openDemo, PANEL_OPEN_VIEWPORT, renderAndRead,
+} from './helpers.mjs';
+
+// The panel's controls are used: a window where it starts open, the canvas 800x600 beside it.
+test.use({ viewport: PANEL_OPEN_VIEWPORT });
 
 test('LOD levels are built for every mesh after the scene loads, by the native rules', async ({ page }) => {
   const infos = [];

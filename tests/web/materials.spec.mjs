@@ -1,7 +1,12 @@
 // The Materials folder: each mirror's and glass object's reflection weight, base weight, Fresnel,
 // index of refraction and environment, applied to the renderer and mirrored in the URL (mat=).
 import { test, expect } from '@playwright/test';
-import { changedInSphere, collectErrors, expectedSphereBox, openDemo, renderAndRead } from './helpers.mjs';
+import {
+  changedInSphere, collectErrors, expectedSphereBox, openDemo, PANEL_OPEN_VIEWPORT, renderAndRead,
+} from './helpers.mjs';
+
+// The panel's controls are used: a window where it starts open, the canvas 800x600 beside it.
+test.use({ viewport: PANEL_OPEN_VIEWPORT });
 
 // The link to what is on screen, as the page builds it (not the address bar, which is written
 // as changes happen and read by the test runner a moment later).

@@ -4,7 +4,12 @@ import { test, expect } from '@playwright/test';
 import { readFileSync, readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { decodePng } from './png.mjs';
-import { collectErrors, colourSummary, idle, openDemo, renderAndRead } from './helpers.mjs';
+import {
+  collectErrors, colourSummary, idle, openDemo, PANEL_OPEN_VIEWPORT, renderAndRead,
+} from './helpers.mjs';
+
+// The panel's controls are used: a window where it starts open, the canvas 800x600 beside it.
+test.use({ viewport: PANEL_OPEN_VIEWPORT });
 
 const SCENE_DIR = fileURLToPath(new URL('../../assets/scenes/', import.meta.url));
 const SHIPPED = readdirSync(SCENE_DIR).filter((f) => f.endsWith('.json')).map((f) => f.replace(/\.json$/, ''));

@@ -89,8 +89,14 @@ test('resizing keeps the drawing buffer at CSS size and the sphere round', async
   await page.setViewportSize({ width: 600, height: 900 });
   const tall = await expectRoundSphere(page, '600x900');
   expect(tall.size).toMatchObject({ width: 600, height: 900, clientWidth: 600, clientHeight: 900, dpr: 1 });
-  // The vertical field of view is fixed, so the sphere scales with the height.
-  expect(tall.measured.height / wide.measured.height).toBeCloseTo(900 / 600, 1);
+  // The field of view is kept along the narrower side (600 px both times: the height of the wide
+  // canvas, the width of the tall one), so the sphere keeps its size.
+  expect(tall.measured.height / wide.measured.height).toBeCloseTo(1, 1);
+
+  // Square: the same again (600 px each way).
+  await page.setViewportSize({ width: 600, height: 600 });
+  const square = await expectRoundSphere(page, '600x600');
+  expect(square.measured.height / wide.measured.height).toBeCloseTo(1, 1);
 });
 
 test.describe('at devicePixelRatio 2', () => {

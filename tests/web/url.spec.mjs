@@ -1,7 +1,10 @@
 // The URL mirrors every control (history.replaceState), and opening such a link restores the
 // scene, the capture settings, the camera and the paused time.
 import { test, expect } from '@playwright/test';
-import { expectMessage, idle, messages, openDemo } from './helpers.mjs';
+import { expectMessage, idle, messages, openDemo, PANEL_OPEN_VIEWPORT } from './helpers.mjs';
+
+// The panel's controls are used: a window where it starts open, the canvas 800x600 beside it.
+test.use({ viewport: PANEL_OPEN_VIEWPORT });
 
 const query = (page) => new URL(page.url()).search;
 

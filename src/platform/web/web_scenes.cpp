@@ -95,7 +95,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_pending_files() {
 
 // OBJ text (`bytes`) for mesh "name" of the pending scene, or of the current one when "pending"
 // is false (to replace a model in place or add one); "source" names the file in messages.
-// {} or {"error"}; on error the mesh it had is kept.
+// {} or {"error"} (the mesh it had is kept), or {"warnings": [...]} when the file loaded with
+// something the loader let pass (Demo::lastWarnings: each names the file and the first line).
 EMSCRIPTEN_KEEPALIVE const char* rf_load_mesh(const char* request, const uint8_t* bytes,
                                               int length) {
   auto r = parseRequest(request, "rf_load_mesh");
@@ -110,7 +111,10 @@ EMSCRIPTEN_KEEPALIVE const char* rf_load_mesh(const char* request, const uint8_t
   if (!error.empty()) return replyError("rf_load_mesh: " + error);
   reflect::Demo* demo = pending ? state().pending.demo.get() : state().demo.get();
   if (!demo) return replyError("no scene to load a model into");
-  return replyError(demo->loadMeshText(name, bytesText(bytes, length), source));
+  error = demo->loadMeshText(name, bytesText(bytes, length), source);
+  if (!error.empty()) return replyError(error);
+  if (demo->lastWarnings().empty()) return replyDone();
+  return reply({{"warnings", demo->lastWarnings()}});
 }
 
 // Skybox image "index" (in the order of rf_pending_files) as PNG/JPEG `bytes`; "source" names it.

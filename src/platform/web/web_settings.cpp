@@ -5,6 +5,7 @@
 #include <emscripten/emscripten.h>
 
 #include <string>
+#include <vector>
 
 #include "core/settings_schema.h"
 #include "platform/web/web_state.h"
@@ -111,19 +112,33 @@ EMSCRIPTEN_KEEPALIVE const char* rf_set_accuracy(const char* request) {
 
 // The current scene's objects: [{"mesh", "material": {type, reflection, base, ior, fresnel,
 // environment}, "summary": the panel's line, "reflective": it uses an environment, "editable":
-// the page may change its material, "orbits": it circles the origin, "translate": [x, y, z]}]
+// the page may change its material, "orbits": it circles the origin, "translate": [x, y, z],
+// "screen": {"x0", "y0", "x1", "y1", "inFront"} where its bounding box lands on the canvas now, in
+// fractions of the drawing buffer from the top left (Demo::screenBoxes)}]
 EMSCRIPTEN_KEEPALIVE const char* rf_objects_json() {
   json list = json::array();
   if (!state().demo) return reply(list);
-  for (const reflect::SceneObject& o : state().demo->scene().objects) {
+  int width = 0, height = 0;
+  emscripten_webgl_get_drawing_buffer_size(state().context, &width, &height);
+  const std::vector<reflect::ScreenBox> boxes = state().demo->screenBoxes(width, height);
+  const auto& objects = state().demo->scene().objects;
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const reflect::SceneObject& o = objects[i];
     const glm::vec3 at(o.placement[3]);
+    const reflect::ScreenBox& box = boxes[i];
     list.push_back({{"mesh", o.mesh},
                     {"material", reflect::settingsJson(o, reflect::materialFields())},
                     {"summary", materialSummary(o)},
                     {"reflective", o.usesEnvironment()},
                     {"editable", editable(o)},
                     {"orbits", o.motion == reflect::Motion::Orbit},
-                    {"translate", {at.x, at.y, at.z}}});
+                    {"translate", {at.x, at.y, at.z}},
+                    {"screen",
+                     {{"x0", box.x0},
+                      {"y0", box.y0},
+                      {"x1", box.x1},
+                      {"y1", box.y1},
+                      {"inFront", box.inFront}}}});
   }
   return reply(list);
 }
