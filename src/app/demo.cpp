@@ -167,9 +167,8 @@ unsigned Demo::environmentTexture() const {
 }
 
 std::string Demo::initGraphics() {
-  exactRenderer_.reset();
-  errorView_.reset();
-  exactTracer_.reset();
+  // The exact mode's tracer and the error view's renderer stay (the page's "auto" switches the
+  // accuracy settings back and forth); setUpExact remakes the renderer if its settings changed.
   renderer_.reset();
   planner_.invalidate();  // a new renderer has no captures yet
   Result<SceneRenderer> renderer = SceneRenderer::create(accuracy_);
@@ -197,15 +196,8 @@ std::string Demo::initGraphics() {
 std::string Demo::setUpExact() {
   if (!renderer_) return {};
   const bool traced = accuracy_.search == Search::Exact;
-  if (!showError_) {
-    exactRenderer_.reset();
-    errorView_.reset();
-  }
-  if (!traced && !showError_) {
-    exactTracer_.reset();
-    renderer_->setExactTracer(nullptr);
-    return {};
-  }
+  renderer_->setExactTracer(nullptr);
+  if (!traced && !showError_) return {};  // what exists stays, unused, for the next time
   if (!exactTracer_) {
     Result<ExactTracer> tracer = ExactTracer::create();
     if (!tracer) return tracer.error();
@@ -214,10 +206,11 @@ std::string Demo::setUpExact() {
     std::string error = exactTracer_->setSkybox(skyboxFaces());
     if (!error.empty()) return error;
   }
-  renderer_->setExactTracer(traced ? exactTracer_.get() : nullptr);
-  if (showError_ && !exactRenderer_) {
-    AccuracySettings exact = accuracy_;
-    exact.search = Search::Exact;
+  if (traced) renderer_->setExactTracer(exactTracer_.get());
+  AccuracySettings exact = accuracy_;
+  exact.search = Search::Exact;
+  if (showError_ && (!exactRenderer_ || !(exactRenderer_->accuracy() == exact))) {
+    exactRenderer_.reset();
     Result<SceneRenderer> renderer = SceneRenderer::create(exact);
     if (!renderer) return renderer.error();
     exactRenderer_ = std::make_unique<SceneRenderer>(renderer.take());
@@ -231,10 +224,12 @@ std::string Demo::setUpExact() {
       if (!error.empty()) return error;
     }
     exactRenderer_->setExactTracer(exactTracer_.get());
+    exactPlanner_.invalidate();
+  }
+  if (showError_ && !errorView_) {
     Result<ErrorView> view = ErrorView::create();
     if (!view) return view.error();
     errorView_ = std::make_unique<ErrorView>(view.take());
-    exactPlanner_.invalidate();
   }
   return {};
 }
@@ -361,8 +356,10 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                                plannerSettings_.captureLod};
   const std::vector<PlannedObject> objects = plannedObjects(stats_.timeSeconds);
   const FramePlan plan = planner_.plan(objects, context, plannerSettings_);
-  if (exactTracer_) exactTracer_->prepare(scene_, stats_.timeSeconds, plan, camera_.eye());
   const bool traced = accuracy_.search == Search::Exact;
+  if (exactTracer_ && (traced || showError_)) {
+    exactTracer_->prepare(scene_, stats_.timeSeconds, plan, camera_.eye());
+  }
   gpuTimer_->begin(GpuTimer::kCapture);
   Result<PassCounts> capture = renderer_->capture(
       scene_, stats_.timeSeconds, traced ? withoutTracedProbes(plan, scene_) : plan, camera_.eye());
