@@ -16,6 +16,7 @@ export class AutoPick {
     Object.assign(this, { session, page });
     this.last = null;  // { budget, pick, candidates, reason, at }
     this.running = null;
+    this.measuring = false;
     this.timer = null;
     this.measuredFor = null;  // what the last run measured: scene, size, budget
     session.onChange((kind) => {
@@ -58,6 +59,7 @@ export class AutoPick {
       const saved = { time: bridge.time(), view: bridge.view(), accuracy: bridge.accuracy() };
       const dt = session.paused ? 0 : 1 / 60;
       const candidates = bridge.budgetCandidates();
+      this.measuring = true;
       this.page.hold(true);
       try {
         if (saved.view.showError) bridge.setView({ showError: false });
@@ -96,6 +98,7 @@ export class AutoPick {
         bridge.setView({ showError: saved.view.showError });
         bridge.setTime(saved.time);
         this.page.hold(false);
+        this.measuring = false;
         session.changed('settings');
       }
     }).finally(() => { this.running = null; });
@@ -105,7 +108,7 @@ export class AutoPick {
   // The panel's line: what auto picked and why.
   readout() {
     if (!this.enabled()) return 'off';
-    if (this.running) return 'measuring…';
+    if (this.measuring) return 'measuring…';
     return this.last ? this.last.reason : 'waiting for the page to be idle';
   }
 }
