@@ -81,7 +81,7 @@ TEST(Sweep, CsvAndSvgAreWellFormed) {
   std::istringstream lines(csv);
   std::string header, line;
   std::getline(lines, header);
-  EXPECT_EQ(header.rfind("name,setting,face_size,ms,", 0), 0u);
+  EXPECT_EQ(header.rfind("name,setting,settings,face_size,ms,", 0), 0u);
   for (const char* column : {"ms", "psnr_db", "rmse", "p95"}) {
     EXPECT_NE(("," + header + ",").find(std::string(",") + column + ","), std::string::npos)
         << column;
