@@ -197,7 +197,7 @@ async function start() {
   Object.assign(window.demo, testApi({
     session, addressBar, sparkline, progress, fps: () => statsLine.fps, panel: () => panel,
     readPixels: () => readPixels(canvas), screenshot: () => screenshot(session, canvas), bench,
-    framesDrawn: () => framesDrawn, idle: () => idle, autoPick,
+    framesDrawn: () => framesDrawn, drawingIdle: () => idle, autoPick,
   }));
   resolveReady();
   if (link.bench) bench().catch(() => {});

@@ -66,9 +66,9 @@ export function testApi(page) {
     // The settings schema: { planner, accuracy, material, view }.
     schema: () => session.schema,
     // Frames the display loop has drawn since the page started (none while idle), and whether it
-    // is idle now (paused, nothing changed: no frame drawn, the canvas keeps its picture).
+    // draws none now (paused, nothing changed: the canvas keeps its picture).
     framesDrawn: () => page.framesDrawn(),
-    idle: () => page.idle(),
+    drawingIdle: () => page.drawingIdle(),
     // The view settings { showError, auto, budget }; setView({ showError: true }): "" or the error.
     view: () => bridge.view(),
     setView: (changes) => session.setView(changes),

@@ -6,16 +6,16 @@ import { collectErrors, idle, openDemo } from './helpers.mjs';
 test('idle: paused and unchanged, the page draws no frame in 2 s; a change draws at once', async ({ page }) => {
   await openDemo(page, '?paused&t=1');
   await idle(page);
-  await expect.poll(() => page.evaluate(() => window.demo.idle())).toBe(true);
+  await expect.poll(() => page.evaluate(() => window.demo.drawingIdle())).toBe(true);
   await expect(page.locator('#stats')).toContainText('idle');
   const before = await page.evaluate(() => window.demo.framesDrawn());
   await page.waitForTimeout(2000);
   expect(await page.evaluate(() => window.demo.framesDrawn())).toBe(before);
-  expect(await page.evaluate(() => window.demo.idle())).toBe(true);
+  expect(await page.evaluate(() => window.demo.drawingIdle())).toBe(true);
   // Any change draws again: a camera step, then a setting.
   await page.evaluate(() => window.demo.setCamera(0, 1, 6.5, 0, 0));
   await expect.poll(() => page.evaluate(() => window.demo.framesDrawn())).toBeGreaterThan(before);
-  await expect.poll(() => page.evaluate(() => window.demo.idle())).toBe(true);
+  await expect.poll(() => page.evaluate(() => window.demo.drawingIdle())).toBe(true);
   const after = await page.evaluate(() => window.demo.framesDrawn());
   await page.evaluate(() => window.demo.setPlanner({ captureLod: 0.5 }));
   await expect.poll(() => page.evaluate(() => window.demo.framesDrawn())).toBeGreaterThan(after);
@@ -27,7 +27,7 @@ test('idle: paused and unchanged, the page draws no frame in 2 s; a change draws
 test('the canvas keeps its picture while idle', async ({ page }) => {
   await openDemo(page, '?paused&t=1');
   await idle(page);
-  await expect.poll(() => page.evaluate(() => window.demo.idle())).toBe(true);
+  await expect.poll(() => page.evaluate(() => window.demo.drawingIdle())).toBe(true);
   await page.waitForTimeout(500);
   const shot = await page.locator('#canvas').screenshot();
   // The screenshot is the composited canvas: not cleared (the sphere's gold and the ground's blue
