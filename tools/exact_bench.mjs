@@ -184,7 +184,7 @@ async function main() {
       await page.close();
     }
     if (o.screenshot) {
-      const page = await open(browser, url, '?paused&t=4.6&showError=true&cam=1.2,0.6,4.2,12,-4', o);
+      const page = await open(browser, url, '?paused&t=1.5&showError=true&cam=0.6,0.5,4,8,-3', o);
       await page.evaluate(() => window.demo.frame(0));
       await page.waitForTimeout(500);
       await page.screenshot({ path: o.screenshot });
