@@ -4,6 +4,7 @@
 // scene and with a 151k-triangle figure in mario's place.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -57,7 +58,12 @@ double agreement(const Scene& scene, const std::map<std::string, MeshData>& mesh
   };
   std::map<std::string, std::shared_ptr<const MeshBvh>> trees;
   for (const auto& [name, mesh] : meshes) {
+    const auto start = std::chrono::steady_clock::now();
     trees[name] = std::make_shared<const MeshBvh>(buildMeshBvh(mesh));
+    std::printf("%s: %zu triangles, BVH of %zu nodes, depth %d, built in %.1f ms\n", name.c_str(),
+                mesh.triangleCount(), trees[name]->tree.nodes.size(), trees[name]->tree.depth,
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
   }
   std::vector<BvhInstance> instances;
   for (const SceneObject& o : scene.objects) {
