@@ -17,6 +17,9 @@
 //                    then the top level's nodes (from u_exactTopNodes) and items (u_exactTopOrder)
 // Rays go into each object's space unnormalised, so t is the same parameter in both.
 #if SEARCH == 3
+// Tracing needs full precision whatever the shader's default (mediump would lose the triangles).
+precision highp float;
+precision highp int;
 const int kExactWidth = 1024;       // kBvhTextureWidth
 const int kExactInstance = 10;      // kInstanceTexels
 const int kExactStack = 33;         // kBvhMaxDepth + 1
