@@ -7,7 +7,8 @@
 // Where a ray meets the live probe's surroundings is found by the search SEARCH picks when the
 // program is built (a runtime switch would not do: software rasterisers run both sides of a
 // branch): 0 the course's plain lookup along the ray's direction, 1 the linear search of
-// linear_search.glsl, 2 the hierarchical search of depth_search.glsl. u_search turns it off per
+// linear_search.glsl, 2 the hierarchical search of depth_search.glsl, 3 no lookup at all: the
+// exact mode of exact_trace.glsl (one hook at the top of main). u_search turns it off per
 // draw (a skybox environment, or a probe whose surroundings are all far enough that the plain
 // lookup is within half a texel).
 in vec3 v_worldPosition;
@@ -33,6 +34,7 @@ uniform int u_outputDirection; // 1: write the looked-up direction instead (for 
 #include "capture_output.glsl"
 #include "linear_search.glsl"
 #include "depth_search.glsl"
+#include "exact_trace.glsl"
 
 #if SEARCH == 2
 // The colour a probe stored around `p` (relative to its centre) in `layer`: the four nearest
@@ -110,6 +112,10 @@ void leaveGlassSphere(inout vec3 origin, inout vec3 d) {
 }
 
 void main() {
+#if SEARCH == 3  // hook: the exact mode traces every ray instead (exact_trace.glsl)
+  exactMain();
+  return;
+#endif
   vec3 N = normalize(v_worldNormal);
   vec3 I = normalize(v_worldPosition - u_viewPosition);
   vec3 reflectedDirection;

@@ -5,10 +5,15 @@
 //   drop.js         the user's files        panel.js    the controls     input.js  pointer and keys
 //   test_api.js     window.demo             layout.js   the panel's place, hints for the device
 //   stats.js, messages.js, bench.js, lod.js, figures.js, accuracy.js (the measured modes),
-//   scene_loader.js
+//   auto_pick.js (auto: the frame-budget pick), scene_loader.js
+//
+// Frames are drawn on demand: while the animation is paused and nothing changes (no input, no
+// load, no setting, no resize) the loop draws nothing, and the canvas keeps its last picture (the
+// browser shows the last composited frame when nothing is drawn); any change draws at once.
 import { parseSweep } from './accuracy.js';
 import { benchPage } from './bench.js';
 import { AddressBar, readPixels, screenshot } from './capture.js';
+import { AutoPick } from './auto_pick.js';
 import { attachDrop } from './drop.js';
 import { attachInput, helpOverlay } from './input.js';
 import { dockPanel, inputKinds, reservePanel, showHints } from './layout.js';
@@ -59,6 +64,7 @@ async function applyLink(session, link) {
     if (error) showMessage(`mat=${entry}: ${error}; ignored`);
   }
   each(link.planner, (c) => bridge.setPlanner(c));
+  each(link.view, (c) => bridge.setView(c));
   if (link.cam) bridge.setCamera({ eye: link.cam.slice(0, 3), yaw: link.cam[3], pitch: link.cam[4] });
   if (link.t !== null) bridge.setTime(link.t);
   session.changed('settings');
@@ -79,8 +85,17 @@ async function start() {
   const bridge = await createBridge(canvas);
   const createError = bridge.create();
   if (createError) throw new Error(createError);
+  let needsFrame = true;  // something changed since the last drawn frame
+  let onResize = () => {};
+  // The canvas takes its displayed size; a new size draws a frame and re-times auto's candidates.
+  const resizeCanvas = () => {
+    if (sizeCanvasToDisplay()) {
+      needsFrame = true;
+      onResize();
+    }
+  };
   sizeCanvasToDisplay();
-  new ResizeObserver(sizeCanvasToDisplay).observe(canvas);
+  new ResizeObserver(resizeCanvas).observe(canvas);
 
   const schema = bridge.schema();
   const { state: link, problems, notes } = parseQuery(location.search, schema);
@@ -92,18 +107,33 @@ async function start() {
   await applyLink(session, link);
   const statsLine = new StatsLine(document.getElementById('stats'));
   const sparkline = new Sparkline(document.getElementById('spark'));
+  session.onChange(() => { needsFrame = true; });
+  canvas.addEventListener('webglcontextrestored', () => { needsFrame = true; });
   session.frame(0, true);
   const addressBar = new AddressBar(session);
   addressBar.sync();
 
-  let held = false;  // the bench holds the frame loop
+  let held = false;  // the bench and auto hold the frame loop
+  // The display's frame interval, from the loop's own timestamps (the median of the last 30).
+  const intervals = [];
+  const displayInterval = () => {
+    if (intervals.length < 5) return null;
+    const sorted = [...intervals].sort((a, b) => a - b);
+    return sorted[Math.floor(sorted.length / 2)];
+  };
+  const autoPick = new AutoPick(session, {
+    hold: (on) => { held = on; needsFrame = true; },
+    displayInterval,
+    canvasSize: () => `${canvas.width}x${canvas.height}`,
+  });
+  onResize = () => autoPick.schedule();
   const bench = (frames = link.frames || 60) =>
-    benchPage(session, { frames, readPixels: () => readPixels(canvas), hold: (on) => { held = on; } })
+    benchPage(session, { frames, readPixels: () => readPixels(canvas), hold: (on) => { held = on; needsFrame = true; } })
       .then((results) => { window.demo.benchResults = results; return results; });
   document.getElementById('bench-close').onclick = () => { document.getElementById('bench-box').hidden = true; };
 
   const help = helpOverlay();
-  const camera = (change) => session.camera(change);
+  const camera = (change) => session.camera(change);  // a change: the loop draws
   attachInput(canvas, {
     drag: (dx, dy) => camera((b) => b.dragCamera({ dx, dy, height: canvas.clientHeight })),
     move: (steps) => camera((b) => b.moveCamera({ forward: steps })),
@@ -128,9 +158,10 @@ async function start() {
     bench: () => bench().catch(() => {}),
     toggleHelp: () => help.toggle(),
     helpLabel: kinds.keys ? 'keys and mouse (?)' : 'touch gestures',
-    resized: sizeCanvasToDisplay,
+    resized: resizeCanvas,
+    autoReadout: () => autoPick.readout(),
   }) : null;
-  if (!panel) dockPanel(null, sizeCanvasToDisplay);
+  if (!panel) dockPanel(null, resizeCanvas);
   const description = document.getElementById('scene-description');
   const describe = () => {
     const s = scenes.find((x) => x.name === session.scene.name);
@@ -139,25 +170,42 @@ async function start() {
   session.onChange((kind) => { if (kind === 'scene') describe(); });
   describe();
 
-  // The frame loop: one frame per display frame, the stats line and the sparkline.
+  // The frame loop: one frame per display frame while something moves or changes, the stats line
+  // and the sparkline; none at all while idle (paused, nothing changed, nothing loading).
   let previous = null;
   let lastError;
+  let framesDrawn = 0;
+  let idle = false;
   const tick = (now) => {
     requestAnimationFrame(tick);
     // Clamp the step so a tab that was hidden does not jump the animation.
     const dt = previous === null ? 0 : Math.min((now - previous) / 1000, 0.1);
+    if (previous !== null) {
+      intervals.push(now - previous);
+      if (intervals.length > 30) intervals.shift();
+    }
     previous = now;
     if (held) return;
+    if (session.paused && !needsFrame && !session.pending) {
+      if (!idle) statsLine.showIdle(session.lastStats);
+      idle = true;
+      return;
+    }
+    idle = false;
+    needsFrame = false;
+    ++framesDrawn;
     const stats = session.frame(session.paused ? 0 : dt);
     if (stats.error && stats.error !== lastError) showMessage(stats.error);
     lastError = stats.error;
     sparkline.push(statsLine.update(now, stats, session.paused), frameTimes(stats).frameMs);
   };
   requestAnimationFrame(tick);
+  autoPick.schedule();
 
   Object.assign(window.demo, testApi({
     session, addressBar, sparkline, progress, fps: () => statsLine.fps, panel: () => panel,
     readPixels: () => readPixels(canvas), screenshot: () => screenshot(session, canvas), bench,
+    framesDrawn: () => framesDrawn, drawingIdle: () => idle, autoPick,
   }));
   resolveReady();
   if (link.bench) bench().catch(() => {});
@@ -170,7 +218,9 @@ function sizeCanvasToDisplay() {
   if (canvas.width !== width || canvas.height !== height) {
     canvas.width = width;
     canvas.height = height;
+    return true;
   }
+  return false;
 }
 
 const kinds = inputKinds();

@@ -28,15 +28,16 @@ function addSetting(folder, target, info, apply, id) {
 }
 
 // GUI: lil-gui's class. session: session.js. actions: { scenes, screenshot, copyLink, pickFiles,
-// pickFolder, bench, toggleHelp, helpLabel, resized }. The panel goes in #dock; it starts open
-// in a wide window only, and the layout makes room for it (layout.js). Returns { gui, refresh }.
+// pickFolder, bench, toggleHelp, helpLabel, resized, autoReadout }. The panel goes in #dock; it
+// starts open in a wide window only, and the layout makes room for it (layout.js). Returns
+// { gui, refresh }.
 export function buildPanel(GUI, session, actions) {
   const { bridge, schema } = session;
   const gui = new GUI({ title: 'Controls', width: 260, container: document.getElementById('dock') });
   gui.domElement.id = 'panel';
   dockPanel(gui, actions.resized);
   const view = { scene: session.scene.name, cube: session.faceSize(), planner: bridge.planner(),
-                 accuracy: bridge.accuracy(), mode: '', staleness: '',
+                 accuracy: bridge.accuracy(), view: bridge.view(), mode: '', staleness: '',
                  lodLevels: '', paused: session.paused };
   const readOnly = (folder, key, label, id) => {
     const c = folder.add(view, key).name(label).disable();
@@ -81,6 +82,15 @@ export function buildPanel(GUI, session, actions) {
   readout.className = 'readout';
   readout.title = 'measured by reflect bench --sweep on the default scene, against the ray-traced reference';
   accuracy.$children.appendChild(readout);
+  // The view settings: show error (the heat map against the exact mode), auto and its budget.
+  for (const info of schema.view || []) {
+    addSetting(accuracy, view.view, info, (v) => session.setView({ [info.name]: v }), `control-view-${info.name}`);
+  }
+  const autoReadout = document.createElement('div');
+  autoReadout.id = 'auto-readout';
+  autoReadout.className = 'readout';
+  autoReadout.title = 'auto: each search timed on this machine, its error measured against the exact mode on this scene';
+  accuracy.$children.appendChild(autoReadout);
   const accuracySettings = accuracy.addFolder('settings');
   for (const info of schema.accuracy) {
     addSetting(accuracySettings, view.accuracy, info, (v) => session.setAccuracy({ [info.name]: v }),
@@ -151,6 +161,7 @@ export function buildPanel(GUI, session, actions) {
     });
     Object.assign(view.planner, state.settings);
     Object.assign(view.accuracy, bridge.accuracy());
+    Object.assign(view.view, bridge.view());
     for (const [name, c] of plannerControls) c.show(!state.unusedSettings?.includes(name));
     const objects = bridge.objects();
     for (const { index, line } of materialViews) {
@@ -165,6 +176,7 @@ export function buildPanel(GUI, session, actions) {
     }
     for (const c of gui.controllersRecursive()) c.updateDisplay();
     readout.textContent = session.accuracyReadout();
+    autoReadout.textContent = `auto: ${actions.autoReadout ? actions.autoReadout() : 'off'}`;
   }
   session.onChange((kind) => {
     if (kind === 'scene') showMaterials();

@@ -31,7 +31,7 @@ export class Session {
     this.pending = 0;
   }
 
-  // listener(kind): kind is 'scene', 'settings', 'camera', 'time' or 'models'.
+  // listener(kind): kind is 'scene', 'settings', 'camera', 'time', 'models' or 'view'.
   onChange(listener) { this.listeners.push(listener); }
   changed(kind) { for (const listener of this.listeners) listener(kind); }
 
@@ -170,6 +170,8 @@ export class Session {
   setPlanner(changes) { return this.report(this.bridge.setPlanner(changes)); }
   setAccuracy(changes) { return this.report(this.bridge.setAccuracy(changes)); }
   setMaterial(index, changes) { return this.report(this.bridge.setMaterial({ index, changes })); }
+  // Show error, auto and its budget (the 'view' listeners: the panel, the address bar, auto).
+  setView(changes) { return this.report(this.bridge.setView(changes), 'view'); }
 
   // The materials that differ from the scene file's: [{ index, changes }] by schema name.
   changedMaterials() {
@@ -234,7 +236,7 @@ export class Session {
       planner: this.bridge.plannerState(), paused: this.paused, time: this.bridge.time(),
       camera: this.bridge.camera(), home: this.homeCamera, assets: this.assets,
       acc: this.modes.linkName(accuracy, this.defaultAccuracy), accuracy,
-      materials: this.changedMaterials(),
+      materials: this.changedMaterials(), view: this.bridge.view(),
     };
   }
 }

@@ -34,15 +34,31 @@ export class StatsLine {
     this.element.textContent = formatStats(this.fps, stats, paused);
     return interval;
   }
+
+  // Nothing is drawn while idle: the line says so, with the last frame's numbers.
+  showIdle(stats) {
+    this.element.textContent = formatStats(this.fps, stats, true, true);
+    this.previous = null;  // the next interval starts with the next drawn frame
+  }
 }
 
-export function formatStats(fps, stats, paused) {
+// The error view's numbers (show error), or '' when it is off.
+export function formatErrorView(stats) {
+  const e = stats.errorView;
+  if (!e) return '';
+  const psnr = e.rmse === 0 ? '∞ dB (exact)' : `${e.psnrDb.toFixed(1)} dB`;
+  return `\nerror vs exact: reflector PSNR ${psnr} · ${e.pixelsOver32} of ${e.reflectorPixels} px off by >32 · ` +
+    `+${e.ms.toFixed(1)} ms`;
+}
+
+export function formatStats(fps, stats, paused, idle = false) {
   const triangles = stats.triangles >= 1000 ? `${(stats.triangles / 1000).toFixed(1)}k` : stats.triangles;
   const t = frameTimes(stats);
-  return `${fps.toFixed(0)} fps · frame ${(1000 / Math.max(fps, 1e-3)).toFixed(1)} ms` +
-    ` · ${t.label} ${t.frameMs.toFixed(2)} ms (capture ${t.captureMs.toFixed(2)})\n` +
-    `${stats.facesCaptured} faces · ${stats.drawCalls} draws · ${triangles} tris` +
-    (paused ? ' · paused' : '');
+  const head = idle ? 'idle: no frame drawn until something changes · last frame'
+                    : `${fps.toFixed(0)} fps · frame ${(1000 / Math.max(fps, 1e-3)).toFixed(1)} ms ·`;
+  return `${head} ${t.label} ${(t.frameMs || 0).toFixed(2)} ms (capture ${(t.captureMs || 0).toFixed(2)})\n` +
+    `${stats.facesCaptured ?? 0} faces · ${stats.drawCalls ?? 0} draws · ${triangles ?? 0} tris` +
+    (paused ? ' · paused' : '') + (idle ? ' · idle' : '') + formatErrorView(stats);
 }
 
 // A tiny graph of the last `capacity` display-frame intervals (white) and the renderer's own

@@ -3,7 +3,8 @@
 import { filesFromList, handleFiles } from './drop.js';
 import { messageHistory } from './messages.js';
 
-// page: { session, addressBar, canvas, readPixels, screenshot, bench, fps, sparkline, progress, panel }
+// page: { session, addressBar, canvas, readPixels, screenshot, bench, fps, sparkline, progress, panel,
+// framesDrawn, idle, autoPick }
 export function testApi(page) {
   const { session, addressBar } = page;
   const { bridge } = session;
@@ -62,7 +63,18 @@ export function testApi(page) {
     idle: () => session.idle(),
     // Every message shown, [{ text, kind }], also those that have gone.
     messages: () => messageHistory(),
-    // The settings schema: { planner, accuracy, material }.
+    // The settings schema: { planner, accuracy, material, view }.
     schema: () => session.schema,
+    // Frames the display loop has drawn since the page started (none while idle), and whether it
+    // draws none now (paused, nothing changed: the canvas keeps its picture).
+    framesDrawn: () => page.framesDrawn(),
+    drawingIdle: () => page.drawingIdle(),
+    // The view settings { showError, auto, budget }; setView({ showError: true }): "" or the error.
+    view: () => bridge.view(),
+    setView: (changes) => session.setView(changes),
+    // auto: measure now (a promise of { budget, pick: { index, fits, reason, table }, candidates:
+    // [{ name, accuracy, frameMs, psnrDb }] }), and the last such result (or null).
+    runAutoPick: () => page.autoPick.run(),
+    autoPick: () => page.autoPick.last,
   };
 }

@@ -7,6 +7,7 @@
 //   acc=ROW (a measured accuracy mode: a row name of sweep.csv, with its cube size unless cube=)
 //   captureAtOrigin=…&search=…&…   (accuracy settings, written when no row has them)
 //   mat=INDEX:NAME=VALUE,…;…   (changed material settings; INDEX is the object's place from 0)
+//   showError=true&auto=true&budget=MS   (the view settings, written when not at their default)
 //   paused  t=SECONDS (while paused)  cam=x,y,z,yaw,pitch (unless the scene's own)  assets=PREFIX
 // Not written (one-off actions): bench, frames.
 
@@ -76,7 +77,7 @@ export function parseQuery(search, schema) {
   const state = {
     scene: params.get('scene') || DEFAULT_SCENE, cube: 0, paused: params.has('paused'), t: null,
     cam: null, assets: params.get('assets'), bench: params.has('bench'), frames: null, acc: null,
-    planner: {}, accuracy: {}, materials: [],
+    planner: {}, accuracy: {}, materials: [], view: {},
   };
   const number = (key, ok, expected) => {
     if (!params.has(key)) return null;
@@ -98,8 +99,8 @@ export function parseQuery(search, schema) {
       state.cam = parts;
     }
   }
-  for (const group of ['planner', 'accuracy']) {
-    for (const info of schema[group]) {
+  for (const group of ['planner', 'accuracy', 'view']) {
+    for (const info of schema[group] || []) {
       if (params.has(info.name)) state[group][info.name] = fromText(info, params.get(info.name));
     }
   }
@@ -187,6 +188,10 @@ export function buildQuery(link, schema) {
   }
   if (link.materials?.length) {
     parts.push(`mat=${link.materials.map((m) => `${m.index}:${changesText(m.changes, schema.material)}`).join(';')}`);
+  }
+  for (const info of schema.view || []) {
+    const value = link.view?.[info.name];
+    if (value !== undefined && value !== info.default) parts.push(`${info.name}=${toText(info, value)}`);
   }
   if (link.assets) parts.push(`assets=${encodeURIComponent(link.assets)}`);
   return `?${parts.join('&')}`;

@@ -17,6 +17,7 @@ export async function createBridge(canvas) {
     rf_lod_settings_json: [], rf_add_lod: withData, rf_add_object: text, rf_mesh_bounds_json: text,
     rf_planner_json: [], rf_set_planner: text, rf_accuracy_json: [], rf_set_accuracy: text,
     rf_accuracy_from_description: text, rf_objects_json: [], rf_set_material: text,
+    rf_view_json: [], rf_set_view: text, rf_budget_candidates: [], rf_pick_accuracy: text,
   };
   const fn = Object.fromEntries(Object.entries(exports).map(([name, args]) => [name, Module.cwrap(name, 'string', args)]));
 
@@ -64,6 +65,14 @@ export async function createBridge(canvas) {
     accuracyDescription: () => call('rf_accuracy_json').describe || '',
     setAccuracy: (changes) => errorOf(call('rf_set_accuracy', changes)),
     // The settings a description (the sweep's `setting` column) names, or null.
+
+    // The page's view settings { showError, auto, budget }; setView(changes): "" or the error.
+    view: () => call('rf_view_json').settings || {},
+    setView: (changes) => errorOf(call('rf_set_view', changes)),
+    // "auto": the settings to time, [{ name, accuracy }], and the C++ rule's pick from their
+    // measured { name, accuracy, frameMs, psnrDb }: { index, fits, reason, table }.
+    budgetCandidates: () => call('rf_budget_candidates'),
+    pickAccuracy: ({ budget, candidates }) => call('rf_pick_accuracy', { budget, candidates }),
 
     // [{ mesh, material: { type, reflection, ... }, summary, reflective, editable, orbits, translate }]
     objects: () => call('rf_objects_json'),

@@ -21,6 +21,19 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
+// The exact mode needs no cube map but a cube-textured object's: the other probes capture
+// nothing.
+FramePlan withoutTracedProbes(FramePlan plan, const Scene& scene) {
+  for (ProbePlan& probe : plan.probes) {
+    bool cubeTextured = false;
+    for (int member : probe.members) {
+      cubeTextured |= scene.objects[static_cast<size_t>(member)].material == Material::CubeTextured;
+    }
+    if (!cubeTextured) probe.faces.clear();
+  }
+  return plan;
+}
+
 }  // namespace
 
 Demo::Demo(Scene scene) : scene_(std::move(scene)), camera_(scene_.camera) {}
@@ -54,11 +67,15 @@ std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   levels.front().sphereRadius = sphereRadiusOf(levels.front());
   for (MeshData& coarser : buildLodLevels(levels.front())) levels.push_back(std::move(coarser));
   for (MeshData& level : levels) chunkMesh(level);
-  if (renderer_) {
+  auto bvh = std::make_shared<const MeshBvh>(buildMeshBvh(levels.front()));
+  for (SceneRenderer* r : {renderer_.get(), exactRenderer_.get()}) {
+    if (!r) continue;
     for (size_t lod = 0; lod < levels.size(); ++lod) {
-      renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
+      r->setMesh(name, static_cast<int>(lod), levels[lod]);
     }
   }
+  if (exactTracer_) exactTracer_->setMesh(name, bvh);
+  bvhs_[name] = std::move(bvh);
   meshes_[name] = std::move(levels);
   ++meshRevisions_[name];
   return {};
@@ -70,7 +87,9 @@ std::string Demo::addLodLevel(const std::string& name, const std::vector<uint32_
   MeshData level = meshFromIndices(it->second.front(), indices);
   if (level.indices.empty()) return name + ": level of detail has no triangles";
   chunkMesh(level);
-  if (renderer_) renderer_->setMesh(name, static_cast<int>(it->second.size()), level);
+  for (SceneRenderer* r : {renderer_.get(), exactRenderer_.get()}) {
+    if (r) r->setMesh(name, static_cast<int>(it->second.size()), level);
+  }
   it->second.push_back(std::move(level));
   return {};
 }
@@ -92,8 +111,13 @@ std::string Demo::setMaterialJson(int index, const std::string& json) {
 }
 
 std::string Demo::setSkybox(CubeFaces faces) {
-  if (renderer_) {
-    std::string error = renderer_->setSkybox(faces);
+  for (SceneRenderer* r : {renderer_.get(), exactRenderer_.get()}) {
+    if (!r) continue;
+    std::string error = r->setSkybox(faces);
+    if (!error.empty()) return error;
+  }
+  if (exactTracer_) {
+    std::string error = exactTracer_->setSkybox(&faces);
     if (!error.empty()) return error;
   }
   skyboxContent_ = contentHash(faces);
@@ -143,6 +167,8 @@ unsigned Demo::environmentTexture() const {
 }
 
 std::string Demo::initGraphics() {
+  // The exact mode's tracer and the error view's renderer stay (the page's "auto" switches the
+  // accuracy settings back and forth); setUpExact remakes the renderer if its settings changed.
   renderer_.reset();
   planner_.invalidate();  // a new renderer has no captures yet
   Result<SceneRenderer> renderer = SceneRenderer::create(accuracy_);
@@ -162,7 +188,61 @@ std::string Demo::initGraphics() {
     std::string error = renderer_->setSkybox(*skybox_);
     if (!error.empty()) return error;
   }
+  std::string error = setUpExact();
+  if (!error.empty()) return error;
   return checkGlError("init graphics") ? std::string() : "GL error while creating resources";
+}
+
+std::string Demo::setUpExact() {
+  if (!renderer_) return {};
+  const bool traced = accuracy_.search == Search::Exact;
+  renderer_->setExactTracer(nullptr);
+  if (!traced && !showError_) return {};  // what exists stays, unused, for the next time
+  if (!exactTracer_) {
+    Result<ExactTracer> tracer = ExactTracer::create();
+    if (!tracer) return tracer.error();
+    exactTracer_ = std::make_unique<ExactTracer>(tracer.take());
+    for (const auto& [name, bvh] : bvhs_) exactTracer_->setMesh(name, bvh);
+    std::string error = exactTracer_->setSkybox(skyboxFaces());
+    if (!error.empty()) return error;
+  }
+  if (traced) renderer_->setExactTracer(exactTracer_.get());
+  AccuracySettings exact = accuracy_;
+  exact.search = Search::Exact;
+  if (showError_ && (!exactRenderer_ || !(exactRenderer_->accuracy() == exact))) {
+    exactRenderer_.reset();
+    Result<SceneRenderer> renderer = SceneRenderer::create(exact);
+    if (!renderer) return renderer.error();
+    exactRenderer_ = std::make_unique<SceneRenderer>(renderer.take());
+    for (const auto& [name, levels] : meshes_) {
+      for (size_t lod = 0; lod < levels.size(); ++lod) {
+        exactRenderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
+      }
+    }
+    if (skybox_) {
+      std::string error = exactRenderer_->setSkybox(*skybox_);
+      if (!error.empty()) return error;
+    }
+    exactRenderer_->setExactTracer(exactTracer_.get());
+    exactPlanner_.invalidate();
+  }
+  if (showError_ && !errorView_) {
+    Result<ErrorView> view = ErrorView::create();
+    if (!view) return view.error();
+    errorView_ = std::make_unique<ErrorView>(view.take());
+  }
+  return {};
+}
+
+std::string Demo::setShowError(bool on) {
+  if (on == showError_) return {};
+  showError_ = on;
+  return setUpExact();
+}
+
+const MeshBvh* Demo::meshBvh(const std::string& name) const {
+  auto it = bvhs_.find(name);
+  return it == bvhs_.end() ? nullptr : it->second.get();
 }
 
 std::string Demo::setAccuracySettings(const AccuracySettings& settings) {
@@ -204,6 +284,9 @@ std::vector<DrawItem> Demo::viewDraws(const std::vector<PlannedObject>& objects,
 }
 
 void Demo::releaseGraphics() {
+  exactRenderer_.reset();
+  errorView_.reset();
+  exactTracer_.reset();
   renderer_.reset();
   gpuTimer_.reset();
   planner_.invalidate();
@@ -212,6 +295,12 @@ void Demo::releaseGraphics() {
 void Demo::loseGraphics() {
   if (renderer_) renderer_->abandon();
   renderer_.reset();
+  if (exactRenderer_) exactRenderer_->abandon();
+  exactRenderer_.reset();
+  if (errorView_) errorView_->abandon();
+  errorView_.reset();
+  if (exactTracer_) exactTracer_->abandon();
+  exactTracer_.reset();
   if (gpuTimer_) gpuTimer_->abandon();
   gpuTimer_.reset();
   planner_.invalidate();
@@ -279,8 +368,13 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                                plannerSettings_.captureLod};
   const std::vector<PlannedObject> objects = plannedObjects(stats_.timeSeconds);
   const FramePlan plan = planner_.plan(objects, context, plannerSettings_);
+  const bool traced = accuracy_.search == Search::Exact;
+  if (exactTracer_ && (traced || showError_)) {
+    exactTracer_->prepare(scene_, stats_.timeSeconds, plan, camera_.eye());
+  }
   gpuTimer_->begin(GpuTimer::kCapture);
-  Result<PassCounts> capture = renderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
+  Result<PassCounts> capture = renderer_->capture(
+      scene_, stats_.timeSeconds, traced ? withoutTracedProbes(plan, scene_) : plan, camera_.eye());
   gpuTimer_->end();
   if (!capture) {
     stats_.error = "capture failed: " + capture.error();
@@ -298,10 +392,13 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   const ViewParams view{camera_.view(),
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
+  const bool errorView =
+      showError_ && errorView_ && exactRenderer_ && errorView_->resize(width, height).empty();
+  const std::vector<DrawItem> draws = viewDraws(objects, width, height);
   gpuTimer_->begin(GpuTimer::kMain);
-  const PassCounts main =
-      renderer_->drawMain(scene_, stats_.timeSeconds, plan, view, viewDraws(objects, width, height),
-                          framebuffer, width, height);
+  const PassCounts main = renderer_->drawMain(
+      scene_, stats_.timeSeconds, plan, view, draws,
+      errorView ? errorView_->currentFramebuffer() : framebuffer, width, height);
   gpuTimer_->end();
   gpuTimer_->endFrame();
   if (waitForGpu) reflect::waitForGpu();
@@ -312,7 +409,33 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   }
   stats_.mainDrawCalls = main.drawCalls;
   stats_.mainTriangles = main.triangles;
+  if (errorView) renderErrorView(objects, view, draws, framebuffer);
   return stats_;
+}
+
+void Demo::renderErrorView(const std::vector<PlannedObject>& objects, const ViewParams& view,
+                           const std::vector<DrawItem>& draws, unsigned framebuffer) {
+  const auto start = std::chrono::steady_clock::now();
+  CaptureContext context = captureContext();
+  context.accuracy.search = Search::Exact;
+  context.captureLod = 0.0f;
+  const FramePlan plan =
+      withoutTracedProbes(exactPlanner_.plan(objects, context, PlannerSettings{}), scene_);
+  Result<PassCounts> capture =
+      exactRenderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
+  if (!capture) exactPlanner_.invalidate();
+  exactTracer_->setMark(true);
+  exactRenderer_->drawMain(scene_, stats_.timeSeconds, plan, view, draws,
+                           errorView_->exactFramebuffer(), stats_.width, stats_.height);
+  exactTracer_->setMark(false);
+  const ErrorViewStats e = errorView_->compose(framebuffer);
+  stats_.errorView = true;
+  stats_.errorPsnrDb = e.psnrDb;
+  stats_.errorRmse = e.rmse;
+  stats_.errorPixelsOver32 = e.pixelsOverThreshold;
+  stats_.errorReflectorPixels = e.reflectorPixels;
+  stats_.errorMax = e.maxError;
+  stats_.errorViewMs = millisecondsSince(start);
 }
 
 }  // namespace reflect

@@ -12,6 +12,7 @@
 #include "app/frame_stats.h"
 #include "core/accuracy_settings.h"
 #include "core/animation_clock.h"
+#include "core/bvh.h"
 #include "core/camera.h"
 #include "core/frame_planner.h"
 #include "core/frustum.h"
@@ -19,6 +20,8 @@
 #include "core/obj_loader.h"
 #include "core/scene.h"
 #include "core/skybox_faces.h"
+#include "gfx/error_view.h"
+#include "gfx/exact_tracer.h"
 #include "gfx/gpu_timer.h"
 #include "gfx/scene_renderer.h"
 
@@ -92,6 +95,13 @@ class Demo {
   // bounding box projected by the camera (see screenBox), in fractions of the view.
   std::vector<ScreenBox> screenBoxes(int width, int height) const;
   void setPlannerSettings(const PlannerSettings& settings);
+  // The live error view (show error): each frame is also rendered in the exact mode off screen,
+  // compared with the current mode's on the GPU, and drawn as a heat map over the reflectors;
+  // the numbers are in the frame's stats. Returns "" or a message.
+  std::string setShowError(bool on);
+  bool showError() const { return showError_; }
+  // Mesh `name`'s tree for the exact mode (built when the mesh loaded), or null.
+  const MeshBvh* meshBvh(const std::string& name) const;
   // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;
   // returns a message when it had to clamp.
   std::string setCubeFaceSize(int size);
@@ -110,6 +120,12 @@ class Demo {
   // The main pass's draws for a width x height viewport (view LOD, if on).
   std::vector<DrawItem> viewDraws(const std::vector<PlannedObject>& objects, int width,
                                   int height) const;
+  // The exact mode's tracer (in the exact mode and with the error view), the error view's
+  // renderer and targets: made, or dropped, as the settings ask. Returns "" or a message.
+  std::string setUpExact();
+  // The error view's pass: the exact frame, the comparison into `framebuffer`, the numbers.
+  void renderErrorView(const std::vector<PlannedObject>& objects, const ViewParams& view,
+                       const std::vector<DrawItem>& draws, unsigned framebuffer);
 
   Scene scene_;
   std::map<std::string, std::vector<MeshData>> meshes_;  // levels of detail, 0 = as loaded
@@ -125,6 +141,12 @@ class Demo {
   std::unique_ptr<SceneRenderer> renderer_;
   std::unique_ptr<GpuTimer> gpuTimer_;
   FrameStats stats_;
+  std::map<std::string, std::shared_ptr<const MeshBvh>> bvhs_;  // level 0's, by mesh name
+  std::unique_ptr<ExactTracer> exactTracer_;
+  std::unique_ptr<SceneRenderer> exactRenderer_;  // the error view's exact pass
+  std::unique_ptr<ErrorView> errorView_;
+  FramePlanner exactPlanner_;
+  bool showError_ = false;
 };
 
 }  // namespace reflect

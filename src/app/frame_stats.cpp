@@ -23,6 +23,14 @@ nlohmann::json FrameStats::toJson() const {
                          {"time", timeSeconds},
                          {"orbitDegrees", orbitDegrees}};
   if (!error.empty()) json["error"] = error;
+  if (errorView) {
+    json["errorView"] = {{"psnrDb", errorPsnrDb},
+                         {"rmse", errorRmse},
+                         {"pixelsOver32", errorPixelsOver32},
+                         {"reflectorPixels", errorReflectorPixels},
+                         {"max", errorMax},
+                         {"ms", errorViewMs}};
+  }
   return json;
 }
 

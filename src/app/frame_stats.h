@@ -29,10 +29,19 @@ struct FrameStats {
   double timeSeconds = 0;
   double orbitDegrees = 0;
   std::string error;  // what went wrong this frame (the page shows it), or empty
+  // The live error view (show error): this frame's reflectors against the exact mode's.
+  bool errorView = false;
+  double errorPsnrDb = 0;        // reflector PSNR (99, the cap, when identical)
+  double errorRmse = 0;          // 0..255 over R, G, B
+  size_t errorPixelsOver32 = 0;  // reflector pixels off by more than 32 levels
+  size_t errorReflectorPixels = 0;
+  int errorMax = 0;
+  double errorViewMs = 0;  // the exact pass, the comparison and its read-back
 
   int drawCalls() const { return captureDrawCalls + mainDrawCalls; }
   size_t triangles() const { return captureTriangles + mainTriangles; }
-  // The numbers by name (demo.stats() in the page); "error" only when there is one.
+  // The numbers by name (demo.stats() in the page); "error" only when there is one; the error
+  // view's as {"errorView": {psnrDb, rmse, pixelsOver32, reflectorPixels, max, ms}} when it is on.
   nlohmann::json toJson() const;
 };
 

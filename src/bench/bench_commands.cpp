@@ -30,6 +30,8 @@ int benchFramesDefault(BenchMode mode) {
       return GrowthOptions{}.frames;
     case BenchMode::Sweep:
       return SweepOptions{}.frames;
+    case BenchMode::Budget:
+      return 30;
   }
   return 0;
 }
@@ -43,6 +45,8 @@ int benchWarmupDefault(BenchMode mode) {
       return GrowthOptions{}.warmup;
     case BenchMode::Sweep:
       return 0;
+    case BenchMode::Budget:
+      return 5;
   }
   return 0;
 }

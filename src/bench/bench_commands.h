@@ -27,9 +27,10 @@ struct BenchCommandOptions {
   PlannerSettings planner;  // the single policy; the comparison's time-sliced, every-n, LODs
   std::string csv;          // the sweep: CSV output ("" = none)
   std::string svg;          // the sweep: SVG plot output ("" = none)
+  double budgetMs = 0.0;    // --budget: the frame budget "auto" picks within
 };
 
-enum class BenchMode { PolicyComparison, SinglePolicy, Growth, Sweep };
+enum class BenchMode { PolicyComparison, SinglePolicy, Growth, Sweep, Budget };
 
 // Timed frames (per policy, per setting, per cell) and warm-up frames when not given.
 int benchFramesDefault(BenchMode mode);

@@ -27,11 +27,10 @@ std::vector<SweepSetting> sweepSettings() {
   AccuracySettings oneLayer = shipped;
   oneLayer.layers = 1;
 
-  std::vector<SweepSetting> s = {{"original", course, 256},
-                                 {"default", shipped, 256},
-                                 {"centre", centre, 256},
-                                 {"linear", linear, 256},
-                                 {"layers-1", oneLayer, 256}};
+  std::vector<SweepSetting> s = {
+      {"original", course, 256},   {"default", shipped, 256},
+      {"centre", centre, 256},     {"linear", linear, 256},
+      {"layers-1", oneLayer, 256}, {"exact", AccuracySettings{.search = Search::Exact}, 256}};
   for (int size : {32, 64, 128, 512, 1024})
     s.push_back({"size-" + std::to_string(size), centre, size});
   for (int size : {64, 128, 512})

@@ -10,12 +10,14 @@ const char* searchName(Search search) {
       return "linear";
     case Search::Hierarchical:
       return "hierarchical";
+    case Search::Exact:
+      return "exact";
   }
   return "?";
 }
 
 bool parseSearch(const std::string& name, Search* search) {
-  for (Search s : {Search::Plain, Search::Linear, Search::Hierarchical}) {
+  for (Search s : kSearches) {
     if (name == searchName(s)) {
       *search = s;
       return true;

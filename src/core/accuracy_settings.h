@@ -19,9 +19,15 @@ enum class Search {
   // A walk of each face's min/max depth chain that tests every texel the ray passes
   // (shaders/depth_search.glsl): nothing is stepped over.
   Hierarchical,
+  // Every mirror and glass pixel's ray traced against the scene's triangles (two-level BVH,
+  // core/bvh.h; shaders/exact_trace.glsl) and shaded as a capture would: no cube map at all.
+  Exact,
 };
 
 const char* searchName(Search search);
+// Every search, in the settings table's order.
+inline constexpr Search kSearches[] = {Search::Plain, Search::Linear, Search::Hierarchical,
+                                       Search::Exact};
 bool parseSearch(const std::string& name, Search* search);
 
 struct AccuracySettings {

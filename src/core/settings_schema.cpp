@@ -180,9 +180,10 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
       {choice("search", "search",
               "how a mirror finds what its ray meets: plain (the course: along the ray's "
               "direction), linear (12 steps against stored distances), hierarchical (every texel "
-              "the ray passes, through a min/max depth chain)",
+              "the ray passes, through a min/max depth chain), exact (the ray traced against the "
+              "scene's triangles: no cube map)",
               {searchName(Search::Plain), searchName(Search::Linear),
-               searchName(Search::Hierarchical)}),
+               searchName(Search::Hierarchical), searchName(Search::Exact)}),
        [](const A& s) { return json(searchName(s.search)); },
        [](A& s, const json& v) { parseSearch(v.get<std::string>(), &s.search); }},
       {integer("layers", "depth layers",
@@ -208,6 +209,28 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
       {flag("mediump", "mediump", "fragment shaders at mediump precision instead of highp"),
        [](const A& s) { return json(s.mediump); },
        [](A& s, const json& v) { s.mediump = v.get<bool>(); }},
+  };
+  return fields;
+}
+
+const std::vector<SettingField<ViewSettings>>& viewFields() {
+  using V = ViewSettings;
+  static const std::vector<SettingField<V>> fields = {
+      {flag("showError", "show error",
+            "a heat map of each reflector pixel's difference from the exact mode (rendered "
+            "alongside and compared on the GPU), with the reflector PSNR and the pixels off by "
+            "more than 32 levels"),
+       [](const V& s) { return json(s.showError); },
+       [](V& s, const json& v) { s.showError = v.get<bool>(); }},
+      {flag("auto", "auto (frame budget)",
+            "time the searches on this machine and run the most accurate one whose frame fits "
+            "the budget, judged by its error against the exact mode on the current scene"),
+       [](const V& s) { return json(s.autoAccuracy); },
+       [](V& s, const json& v) { s.autoAccuracy = v.get<bool>(); }},
+      {number("budget", "frame budget (ms)",
+              "auto: the frame time to stay within (0 = the display's frame interval)", 0, 1000),
+       [](const V& s) { return json(s.budget); },
+       [](V& s, const json& v) { s.budget = v.get<float>(); }},
   };
   return fields;
 }
@@ -284,7 +307,8 @@ const std::vector<SettingField<SceneObject>>& materialFields() {
 json settingsSchemaJson() {
   return {{"planner", schemaOf(plannerFields())},
           {"accuracy", schemaOf(accuracyFields())},
-          {"material", schemaOf(materialFields())}};
+          {"material", schemaOf(materialFields())},
+          {"view", schemaOf(viewFields())}};
 }
 
 }  // namespace reflect

@@ -43,6 +43,16 @@ struct SettingField {
 const std::vector<SettingField<PlannerSettings>>& plannerFields();
 const std::vector<SettingField<AccuracySettings>>& accuracyFields();
 
+// How the page shows and picks (show error, auto with its frame budget): page settings, in the
+// link and the panel like the rest; natively `render --error-view` and `bench --budget`.
+struct ViewSettings {
+  bool showError = false;
+  bool autoAccuracy = false;  // "auto"
+  float budget = 0.0f;        // ms; 0 = the display's frame interval
+  bool operator==(const ViewSettings&) const = default;
+};
+const std::vector<SettingField<ViewSettings>>& viewFields();
+
 // A material's settings, as scene files and the page's material editor name them.
 const std::vector<SettingField<SceneObject>>& materialFields();
 
@@ -88,7 +98,8 @@ std::string applySettingsJson(const nlohmann::json& changes,
   return {};
 }
 
-// The whole table for the page: {"planner": [INFO...], "accuracy": [...], "material": [...]},
+// The whole table for the page: {"planner": [INFO...], "accuracy": [...], "material": [...],
+// "view": [...]},
 // each INFO {"name", "label", "help", "kind", "min", "max", "choices", "default"}.
 nlohmann::json settingsSchemaJson();
 

@@ -9,6 +9,7 @@
 #include "core/depth_code.h"
 #include "core/frustum.h"
 #include "core/normal_matrix.h"
+#include "gfx/exact_tracer.h"
 
 namespace reflect {
 namespace {
@@ -100,8 +101,8 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
                                       e.uniform("u_eta"),
                                       e.uniform("u_fresnelF0"),
                                       e.uniform("u_fresnel"),
-                                      e.uniform("u_twoSurfaces"),
-                                      e.uniform("u_glassSphere"),
+                                      e.optionalUniform("u_twoSurfaces"),
+                                      e.optionalUniform("u_glassSphere"),
                                       e.optionalUniform("u_probeCentre"),
                                       e.optionalUniform("u_distanceUnit"),
                                       e.optionalUniform("u_search"),
@@ -111,7 +112,7 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
                                       e.optionalUniform("u_topLevel"),
                                       e.optionalUniform("u_pyramidTile")};
   glUseProgram(e.id());
-  glUniform1i(e.uniform("u_environment"), kEnvironmentUnit);
+  glUniform1i(e.optionalUniform("u_environment"), kEnvironmentUnit);
   glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
   glUniform1i(e.optionalUniform("u_pyramid"), kPyramidUnit);
   glUniform1i(e.optionalUniform("u_pyramid2"), kPyramid2Unit);
@@ -218,6 +219,7 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
       glUniformMatrix4fv(environment_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
       glUniform3fv(environment_.viewPosition, 1, glm::value_ptr(viewPosition));
       glUniform1i(environment_.outputDirection, outputDirections ? 1 : 0);
+      if (exact_) exact_->bind(environment_.program.id());  // the exact mode's scene
       break;
     case ProgramKind::CubeTextured:
       glUseProgram(cubeTextured_.program.id());
@@ -305,6 +307,7 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
       const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
       glUniform4f(environment_.glassSphere, centre.x, centre.y, centre.z, radius);
       bindEnvironment(scene, plan, item.object);
+      if (exact_) exact_->bindObject(environment_.program.id(), item.object);
       break;
     }
     case ProgramKind::CubeTextured:

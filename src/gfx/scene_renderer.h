@@ -25,6 +25,8 @@
 
 namespace reflect {
 
+class ExactTracer;
+
 struct ViewParams {
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};
@@ -71,6 +73,8 @@ class SceneRenderer {
   const CubeCaptureTarget* probeTarget(int owner) const;
   // After a lost context: drop every GL name without deleting (the context took them).
   void abandon();
+  // The exact mode's scene (search: exact), bound with the environment program; not owned.
+  void setExactTracer(const ExactTracer* tracer) { exact_ = tracer; }
 
  private:
   struct PhongProgram {
@@ -126,6 +130,7 @@ class SceneRenderer {
   AccuracySettings accuracy_;
   std::map<std::string, std::vector<MeshBuffer>> meshes_;  // levels of detail by mesh name
   ProgramKind current_ = ProgramKind::Phong;
+  const ExactTracer* exact_ = nullptr;
 };
 
 }  // namespace reflect

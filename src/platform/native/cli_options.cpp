@@ -392,6 +392,11 @@ void defineRender(Command& c, CliOptions& o) {
           "also write the exact (ray-traced, Embree) frame and print the reflector's error "
           "against it",
           "a PNG file name", kOptions, textInto(&o.referenceOut));
+  c.value("--error-view", "FILE",
+          "also write the error view of the frame (a heat map of each mirror and glass pixel's "
+          "difference from the exact mode) and print the reflector PSNR and the pixels off by "
+          "more than 32 levels",
+          "a PNG file name", kOptions, textInto(&o.errorViewOut));
   defineScene(c, o);
   defineSettings(c, o);
 }
@@ -439,6 +444,11 @@ void defineBench(Command& c, CliOptions& o) {
           "a file name", kOptions, textInto(&o.csv));
   c.value("--svg", "FILE", "sweep: write a plot of error against time with the Pareto front",
           "a file name", kOptions, textInto(&o.svg));
+  // The page's frame budget, here a mode: time each search, measure its error against the exact
+  // mode, print the table and what "auto" picks.
+  for (const auto& field : viewFields()) {
+    if (field.info.name == "budget") c.setting(field, o.view, kOptions);
+  }
   defineScene(c, o);
   defineSettings(c, o);
 }
@@ -462,6 +472,7 @@ bool isCommand(const std::string& name) {
 }  // namespace
 
 BenchMode CliOptions::benchMode() const {
+  if (budgetSet) return BenchMode::Budget;
   if (sweep) return BenchMode::Sweep;
   if (growth) return BenchMode::Growth;
   return policySet ? BenchMode::SinglePolicy : BenchMode::PolicyComparison;
@@ -480,6 +491,7 @@ BenchCommandOptions CliOptions::benchOptions() const {
   b.planner = planner;
   b.csv = csv;
   b.svg = svg;
+  b.budgetMs = view.budget;
   return b;
 }
 
@@ -524,6 +536,16 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
     return help;
   }
   o.policySet = definition->given("--policy");
+  o.budgetSet = command == "bench" && definition->given("--budget");
+  if (o.budgetSet && !(o.view.budget > 0.0f)) {
+    return Out::failure(
+        "bench: --budget: give the frame budget in ms, above 0 (natively there is "
+        "no display interval to default to)");
+  }
+  if (o.budgetSet && (o.sweep || o.growth)) {
+    return Out::failure(
+        "bench: --budget is a mode of its own; give it without --sweep or --growth");
+  }
   if (command == "bench") {
     if (o.growth && o.sweep) {
       return Out::failure("bench: --growth and --sweep are separate modes; give one of them");

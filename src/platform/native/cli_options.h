@@ -13,6 +13,7 @@
 #include "core/accuracy_settings.h"
 #include "core/frame_planner.h"
 #include "core/result.h"
+#include "core/settings_schema.h"
 
 namespace reflect {
 
@@ -24,6 +25,7 @@ struct CliOptions {
   double time = 0.0;              // render
   std::string out = "frame.png";  // render
   std::string referenceOut;       // render: also write the ray-traced reference of the frame
+  std::string errorViewOut;       // render: also write the error view (heat map) of the frame
   std::string assets;             // a folder with the course's models, by their file names
   std::string scene = "ex12-2";   // a shipped scene's name, or a .json path
   std::optional<int> cubeSize;    // otherwise the scene's capture.faceSize
@@ -39,6 +41,8 @@ struct CliOptions {
   bool sweep = false;         // bench: accuracy settings against the ray-traced reference
   std::string csv;            // sweep: CSV output
   std::string svg;            // sweep: SVG plot output
+  ViewSettings view;          // bench: the budget (--budget)
+  bool budgetSet = false;     // bench: pick the most accurate search within view.budget ms
 
   // bench: which mode the options select, and the options it takes.
   BenchMode benchMode() const;

@@ -9,6 +9,7 @@
 #include "app/headless_frames.h"
 #include "bench/accuracy.h"
 #include "bench/bench_commands.h"
+#include "bench/budget_bench.h"
 #include "core/image.h"
 #include "platform/native/model_paths.h"
 
@@ -58,6 +59,22 @@ Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, const DemoVariant& v
   return Out(std::move(demo));
 }
 
+// The reference of the frame (--reference), and its error.
+std::string writeReference(Demo& demo, const CliOptions& o) {
+  auto report = measureAccuracy(demo, o.time, o.width, o.height);
+  if (!report) return report.error();
+  std::string error = writePng(report.value().referenceImage, o.referenceOut);
+  if (!error.empty()) return error;
+  std::printf(
+      "wrote %s; reflector: PSNR %.2f dB, RMSE %.2f, p95 %d, max %d, pixels off by more than "
+      "%d levels %zu, mean angular error %.3f deg\n",
+      o.referenceOut.c_str(), report.value().reflector.psnrDb, report.value().reflector.rmse,
+      report.value().reflector.p95PixelError, report.value().reflector.maxPixelError,
+      kVisibleErrorLevels, report.value().reflector.visibleErrorPixels,
+      report.value().meanAngularErrorDeg);
+  return {};
+}
+
 }  // namespace
 
 std::string runRenderCommand(const CliOptions& o) {
@@ -69,18 +86,26 @@ std::string runRenderCommand(const CliOptions& o) {
   std::string error = writePng(image.value(), o.out);
   if (!error.empty()) return error;
   std::printf("wrote %s (%dx%d, t=%.3f s)\n", o.out.c_str(), o.width, o.height, o.time);
-  if (o.referenceOut.empty()) return {};
-  auto report = measureAccuracy(*demo.value(), o.time, o.width, o.height);
-  if (!report) return report.error();
-  error = writePng(report.value().referenceImage, o.referenceOut);
+  if (!o.referenceOut.empty()) {
+    error = writeReference(*demo.value(), o);
+    if (!error.empty()) return error;
+  }
+  if (o.errorViewOut.empty()) return {};
+  error = demo.value()->setShowError(true);
   if (!error.empty()) return error;
+  auto heat = renderFrameAt(*demo.value(), o.time, o.width, o.height);
+  if (!heat) return heat.error();
+  error = writePng(heat.value(), o.errorViewOut);
+  if (!error.empty()) return error;
+  const FrameStats& s = demo.value()->lastStats();
+  char psnr[32] = "inf (identical)";
+  if (s.errorRmse > 0) std::snprintf(psnr, sizeof psnr, "%.2f dB", s.errorPsnrDb);
   std::printf(
-      "wrote %s; reflector: PSNR %.2f dB, RMSE %.2f, p95 %d, max %d, pixels off by more than "
-      "%d levels %zu, mean angular error %.3f deg\n",
-      o.referenceOut.c_str(), report.value().reflector.psnrDb, report.value().reflector.rmse,
-      report.value().reflector.p95PixelError, report.value().reflector.maxPixelError,
-      kVisibleErrorLevels, report.value().reflector.visibleErrorPixels,
-      report.value().meanAngularErrorDeg);
+      "wrote %s (error view against the exact mode): reflector PSNR %s, %zu of %zu reflector "
+      "pixels off by more than 32 levels (max %d); the exact pass and the comparison took %.1f "
+      "ms, the frame %.1f ms\n",
+      o.errorViewOut.c_str(), psnr, s.errorPixelsOver32, s.errorReflectorPixels, s.errorMax,
+      s.errorViewMs, s.frameMs);
   return {};
 }
 
@@ -93,6 +118,8 @@ std::string runBenchCommand(const CliOptions& o) {
   switch (o.benchMode()) {
     case BenchMode::Sweep:
       return runSweepCommand(options, factory);
+    case BenchMode::Budget:
+      return runBudgetCommand(options, factory);
     case BenchMode::Growth:
       return runGrowthCommand(options, builtInModelDirectory());
     case BenchMode::SinglePolicy:

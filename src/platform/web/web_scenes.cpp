@@ -162,6 +162,7 @@ EMSCRIPTEN_KEEPALIVE const char* rf_commit_scene(const char* request) {
     pending.demo->setPlannerSettings(state().demo->plannerSettings());
     pending.demo->setAccuracySettings(state().demo->accuracySettings());
   }
+  pending.demo->setShowError(state().view.showError);
   error = pending.demo->initGraphics();
   if (!error.empty()) return replyError(error);
   if (state().demo) state().demo->releaseGraphics();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/budget_pick.h"
 #include "core/settings_schema.h"
 #include "platform/web/web_state.h"
 
@@ -169,6 +170,70 @@ EMSCRIPTEN_KEEPALIVE const char* rf_set_material(const char* request) {
   if (!error.empty()) return replyError(error);
   const json material = reflect::settingsJson(object, reflect::materialFields());
   return replyError(state().demo->setMaterialJson(static_cast<int>(index), material.dump()));
+}
+
+// The page's view settings: {"settings": {showError, auto, budget}}.
+EMSCRIPTEN_KEEPALIVE const char* rf_view_json() {
+  return reply({{"settings", reflect::settingsJson(state().view, reflect::viewFields())}});
+}
+
+// Changes them by the schema's names; showError turns the demo's error view on or off. {} or
+// {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* rf_set_view(const char* request) {
+  auto r = parseRequest(request, "rf_set_view");
+  if (!r) return replyError(r.error());
+  reflect::ViewSettings view = state().view;
+  std::string error = reflect::applySettingsJson(r.value(), reflect::viewFields(), view);
+  if (!error.empty()) return replyError(error);
+  if (state().demo) error = state().demo->setShowError(view.showError);
+  if (!error.empty()) return replyError(error);
+  state().view = view;
+  return replyDone();
+}
+
+// The settings "auto" times: [{"name", "accuracy": {by the schema's names}}] (the current accuracy
+// settings with each search).
+EMSCRIPTEN_KEEPALIVE const char* rf_budget_candidates() {
+  json list = json::array();
+  if (!state().demo) return reply(list);
+  for (const reflect::BudgetCandidate& c :
+       reflect::budgetCandidates(state().demo->accuracySettings())) {
+    list.push_back({{"name", c.name},
+                    {"accuracy", reflect::settingsJson(c.accuracy, reflect::accuracyFields())}});
+  }
+  return reply(list);
+}
+
+// The pick: {"budget": ms, "candidates": [{"name", "accuracy", "frameMs", "psnrDb"}]} (as measured
+// by the page) -> {"index", "fits", "reason", "table"} (core/budget_pick.h's rule).
+EMSCRIPTEN_KEEPALIVE const char* rf_pick_accuracy(const char* request) {
+  auto r = parseRequest(request, "rf_pick_accuracy");
+  if (!r) return replyError(r.error());
+  const json& in = r.value();
+  if (!in.contains("budget") || !in["budget"].is_number() || !in.contains("candidates") ||
+      !in["candidates"].is_array()) {
+    return replyError("rf_pick_accuracy: expected {budget: ms, candidates: [...]}");
+  }
+  std::vector<reflect::BudgetCandidate> candidates;
+  for (const json& c : in["candidates"]) {
+    reflect::BudgetCandidate candidate;
+    candidate.name = c.value("name", std::string());
+    if (c.contains("accuracy")) {
+      const std::string error =
+          reflect::applySettingsJson(c["accuracy"], reflect::accuracyFields(), candidate.accuracy);
+      if (!error.empty()) return replyError("rf_pick_accuracy: " + error);
+    }
+    const auto number = [&c](const char* key) {
+      return c.contains(key) && c[key].is_number() ? c[key].get<double>() : 0.0;
+    };
+    candidate.frameMs = number("frameMs");
+    candidate.psnrDb = number("psnrDb");
+    candidates.push_back(candidate);
+  }
+  const reflect::BudgetPick pick =
+      reflect::pickWithinBudget(candidates, in["budget"].get<double>());
+  return reply(
+      {{"index", pick.index}, {"fits", pick.fits}, {"reason", pick.reason}, {"table", pick.table}});
 }
 
 }  // extern "C"

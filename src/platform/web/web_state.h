@@ -19,6 +19,7 @@
 #include "core/image.h"
 #include "core/json_reader.h"
 #include "core/result.h"
+#include "core/settings_schema.h"
 
 namespace reflect::web {
 
@@ -33,6 +34,7 @@ struct WebState {
   PendingScene pending;        // a scene being loaded; replaces `demo` only once it is complete
   EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = 0;
   std::string reply;  // storage for the JSON handed back to JavaScript
+  ViewSettings view;  // show error, auto and its budget (showError is also the demo's)
 };
 
 WebState& state();

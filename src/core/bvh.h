@@ -1,0 +1,123 @@
+// Bounding volume hierarchies for the exact mode (search: exact), which traces every mirror and
+// glass pixel's ray against the scene's triangles in the fragment shader
+// (shaders/exact_trace.glsl). Neither Debian nor npm packages a BVH library that builds for wasm
+// (outside three.js), so this one is written here, and kept small:
+//  - buildBvh: a binned SAH build (16 bins per axis) over any boxes;
+//  - MeshBvh: one per mesh, over its triangles in object space, built once when the mesh loads;
+//  - SceneBvh: the top level over the placed objects (their world boxes), rebuilt every frame, so
+//  an
+//    orbiting figure costs no rebuild of its mesh's tree;
+//  - intersectScene: the CPU traversal (a stack, nearer child first), the same steps as the
+//  shader's;
+//  - BvhAtlas / packScene: the float textures the shader reads (WebGL2 has no storage buffers).
+// No GL here: core/ is unit-tested, and the Embree reference checks the hits (tests/reference).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/mesh_data.h"
+#include "core/scene.h"
+
+namespace reflect {
+
+struct BvhNode {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+  uint32_t first = 0;  // interior: the left child (the right one is first + 1); leaf: first item
+  uint32_t count = 0;  // items in a leaf; 0 for an interior node
+};
+
+struct Bvh {
+  std::vector<BvhNode> nodes;   // the root is nodes[0] (none for no items)
+  std::vector<uint32_t> order;  // the items in leaf order: a leaf holds order[first, first+count)
+  int depth = 0;                // levels, the root's included
+};
+
+// The stack the traversals keep (the shader's too); the build never goes deeper.
+inline constexpr int kBvhMaxDepth = 32;
+
+// Binned SAH over `boxes` (one per item), leaves of at most `maxLeaf` items (more only where the
+// depth limit or identical centroids leave no split).
+Bvh buildBvh(const std::vector<Bounds>& boxes, int maxLeaf = 4);
+
+// A mesh's tree, in object space, with its triangles stored in leaf order.
+struct MeshBvh {
+  Bvh tree;
+  std::vector<glm::vec3> positions;  // 3 per triangle, leaf order
+  std::vector<glm::vec3> normals;    // 3 per triangle (the vertices' normals)
+  std::vector<uint32_t> triangles;   // the mesh's triangle index for each stored triangle
+  size_t triangleCount() const { return triangles.size(); }
+};
+MeshBvh buildMeshBvh(const MeshData& mesh);
+
+// Möller-Trumbore: t in (tMin, tMax) and the barycentrics (u at v1, v at v2), or false.
+bool intersectTriangle(const glm::vec3& origin, const glm::vec3& direction, const glm::vec3& v0,
+                       const glm::vec3& v1, const glm::vec3& v2, float tMin, float tMax, float* t,
+                       float* u, float* v);
+
+// A placed object: its mesh's tree and where it stands.
+struct BvhInstance {
+  std::shared_ptr<const MeshBvh> mesh;  // null: not traced (a mesh not loaded)
+  glm::mat4 model{1.0f};
+  glm::mat4 inverse{1.0f};
+};
+
+struct SceneBvh {
+  Bvh top;  // over the instances with a mesh (items are instance indices)
+  std::vector<BvhInstance> instances;
+};
+// The top level over `instances` (their meshes' boxes placed by their models).
+SceneBvh buildSceneBvh(std::vector<BvhInstance> instances);
+
+struct RayHit {
+  float t = std::numeric_limits<float>::infinity();
+  int instance = -1;  // -1: nothing met
+  int slot = -1;      // the triangle's place in its MeshBvh (leaf order)
+  int triangle = -1;  // the mesh's own triangle index
+  float u = 0.0f, v = 0.0f;
+};
+
+// The nearest hit along origin + t direction (world space, t in (tMin, tMax)); instance `skip`
+// is left out, and with `only` >= 0 only that instance is tested. The ray goes into each object's
+// space unnormalised, so t is the same parameter everywhere.
+RayHit intersectScene(const SceneBvh& scene, const glm::vec3& origin, const glm::vec3& direction,
+                      float tMin = 0.0f, float tMax = std::numeric_limits<float>::infinity(),
+                      int skip = -1, int only = -1);
+
+// ---- The textures the shader reads (RGBA32F, kBvhTextureWidth texels a row)
+// ----------------------
+inline constexpr int kBvhTextureWidth = 1024;
+
+// Every mesh's tree in three float textures: nodes (2 texels each: min, first; max, count, with
+// `first` made absolute), triangle positions and normals (3 texels each). Built when the set of
+// meshes changes.
+struct BvhAtlas {
+  std::vector<float> nodes, positions, normals;  // RGBA texels
+  std::map<std::string, uint32_t> roots;         // each mesh's root node
+  void add(const std::string& name, const MeshBvh& mesh);
+};
+
+// Per frame: every object's texels (kInstanceTexels each, by object index), then the top level's
+// nodes (2 texels each, from texel topNodes on; `first` relative to the root), then the top
+// level's items (1 texel each, x = the object index, from texel topOrder on).
+inline constexpr int kInstanceTexels = 10;
+struct PackedScene {
+  std::vector<float> texels;
+  int topNodes = 0;  // texel index of the top level's root
+  int topOrder = 0;  // texel index of its first item
+  int instances = 0;
+  bool empty = true;  // no instance has a mesh
+};
+// `roots`: each object's mesh root in the atlas (-1: not traced); `probeCentres`: where each
+// object's probe captures from (the cube-textured material traces from there).
+PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector<int>& roots,
+                      const std::vector<glm::vec3>& probeCentres);
+
+}  // namespace reflect

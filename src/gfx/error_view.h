@@ -1,0 +1,42 @@
+// The live error view (show error): the current mode's frame and the exact mode's, each rendered
+// into a texture of the frame's size, compared on the GPU (shaders/error_view.frag): a heat map
+// over the reflectors drawn into the output framebuffer, and the per-pixel differences read back
+// and summed (core/error_view_stats.h).
+#pragma once
+
+#include "core/error_view_stats.h"
+#include "core/result.h"
+#include "gfx/gl_handle.h"
+#include "gfx/shader_program.h"
+
+namespace reflect {
+
+class ErrorView {
+ public:
+  static Result<ErrorView> create();
+
+  // Sizes the targets (a no-op when they have the size). Returns "" or a message.
+  std::string resize(int width, int height);
+  // Where the frame in the current mode, and the exact mode's (its reflectors at alpha 0), go.
+  GLuint currentFramebuffer() const { return targets_[0].framebuffer.id(); }
+  GLuint exactFramebuffer() const { return targets_[1].framebuffer.id(); }
+  // The heat map into `framebuffer`, and the numbers.
+  ErrorViewStats compose(GLuint framebuffer);
+  void abandon();
+
+ private:
+  struct Target {
+    TextureHandle colour;
+    RenderbufferHandle depth;
+    FramebufferHandle framebuffer;
+  };
+  ErrorView() = default;
+
+  ShaderProgram program_;
+  GLint current_ = -1, exact_ = -1, output_ = -1;
+  VertexArrayHandle vao_;
+  Target targets_[3];  // current, exact, differences
+  int width_ = 0, height_ = 0;
+};
+
+}  // namespace reflect

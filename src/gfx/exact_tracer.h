@@ -1,0 +1,65 @@
+// The exact mode's scene on the GPU (search: exact; shaders/exact_trace.glsl): every mesh's BVH
+// (core/bvh.h, built once when the mesh loads) in one atlas of float textures, uploaded when the
+// set of meshes changes; the top level over the placed objects, rebuilt and uploaded every frame
+// (prepare), so a moving figure costs no rebuild of its mesh's tree; and the sky the rays see
+// where they meet nothing. The scene renderer binds it with the environment program.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/bvh.h"
+#include "core/frame_planner.h"
+#include "core/result.h"
+#include "core/scene.h"
+#include "core/skybox_faces.h"
+#include "gfx/gl_handle.h"
+#include "gfx/skybox_pass.h"
+
+namespace reflect {
+
+// Texture units of the exact mode's samplers (after capture_state.h's).
+inline constexpr GLint kExactNodesUnit = 5;
+inline constexpr GLint kExactPositionsUnit = 6;
+inline constexpr GLint kExactNormalsUnit = 7;
+inline constexpr GLint kExactSceneUnit = 8;
+inline constexpr GLint kExactSkyUnit = 9;
+
+class ExactTracer {
+ public:
+  static Result<ExactTracer> create();
+
+  // Mesh `name`'s tree (level 0, object space); replaces the one it had.
+  void setMesh(const std::string& name, std::shared_ptr<const MeshBvh> bvh);
+  // The sky a ray that meets nothing sees (null: the clear colour). Returns "" or a message.
+  std::string setSkybox(const CubeFaces* faces);
+  // The frame's placement: the top level over `scene`'s objects at `seconds`, probe centres from
+  // `plan`, lit as seen from `eye`. Uploads the atlas first if a mesh changed.
+  void prepare(const Scene& scene, double seconds, const FramePlan& plan, const glm::vec3& eye);
+  // The error view's exact pass marks its pixels (alpha 0) while this is on.
+  void setMark(bool on) { mark_ = on; }
+
+  // For the environment program in use: the textures and the frame's uniforms; then, per draw,
+  // which object it is (its rays never meet itself, and glass is crossed inside it).
+  void bind(GLuint program) const;
+  void bindObject(GLuint program, int object) const;
+  void abandon();
+
+ private:
+  ExactTracer() = default;
+  void uploadAtlas();
+
+  TextureHandle nodes_, positions_, normals_, scene_;
+  std::unique_ptr<SkyboxPass> sky_;
+  std::map<std::string, std::shared_ptr<const MeshBvh>> meshes_;
+  std::map<std::string, uint32_t> roots_;
+  bool atlasDirty_ = true;
+  PackedScene packed_;
+  int sceneRows_ = 0;
+  glm::vec3 clear_{0.0f}, light_{0.0f}, eye_{0.0f};
+  glm::vec4 phong_{0.0f};
+  bool mark_ = false;
+};
+
+}  // namespace reflect
