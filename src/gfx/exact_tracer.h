@@ -14,17 +14,20 @@
 #include "core/result.h"
 #include "core/scene.h"
 #include "core/skybox_faces.h"
+#include "gfx/capture_state.h"
 #include "gfx/gl_handle.h"
 #include "gfx/skybox_pass.h"
 
 namespace reflect {
 
 // Texture units of the exact mode's samplers (after capture_state.h's).
-inline constexpr GLint kExactNodesUnit = 5;
-inline constexpr GLint kExactPositionsUnit = 6;
-inline constexpr GLint kExactNormalsUnit = 7;
-inline constexpr GLint kExactSceneUnit = 8;
-inline constexpr GLint kExactSkyUnit = 9;
+inline constexpr GLint kExactNodesUnit = kPeelBacksUnit + 1;
+inline constexpr GLint kExactPositionsUnit = kExactNodesUnit + 1;
+inline constexpr GLint kExactNormalsUnit = kExactNodesUnit + 2;
+inline constexpr GLint kExactSceneUnit = kExactNodesUnit + 3;
+inline constexpr GLint kExactSkyUnit = kExactNodesUnit + 4;
+// WebGL2 and GL ES 3.0 promise 16 units to a fragment shader.
+static_assert(kExactSkyUnit < 16, "the exact mode's samplers must fit the 16 units ES 3.0 promises");
 
 class ExactTracer {
  public:
