@@ -4,24 +4,23 @@
 //   url_state.js    links, both ways        capture.js  read-back, screenshot, the address bar
 //   drop.js         the user's files        panel.js    the controls     input.js  pointer and keys
 //   test_api.js     window.demo             layout.js   the panel's place, hints for the device
+//   frame_loop.js   frames on demand        apply_link.js  a link's settings, in order
 //   stats.js, messages.js, bench.js, lod.js, figures.js, accuracy.js (the measured modes),
 //   auto_pick.js (auto: the frame-budget pick), scene_loader.js
-//
-// Frames are drawn on demand: while the animation is paused and nothing changes (no input, no
-// load, no setting, no resize) the loop draws nothing, and the canvas keeps its last picture (the
-// browser shows the last composited frame when nothing is drawn); any change draws at once.
 import { parseSweep } from './accuracy.js';
+import { applyLink } from './apply_link.js';
+import { AutoPick } from './auto_pick.js';
 import { benchPage } from './bench.js';
 import { AddressBar, readPixels, screenshot } from './capture.js';
-import { AutoPick } from './auto_pick.js';
 import { attachDrop } from './drop.js';
 import { attachInput, helpOverlay } from './input.js';
+import { FrameLoop } from './frame_loop.js';
 import { dockPanel, inputKinds, reservePanel, showHints } from './layout.js';
 import { showMessage } from './messages.js';
 import { buildPanel } from './panel.js';
 import { sceneTitles } from './scene_loader.js';
 import { Session } from './session.js';
-import { frameTimes, Progress, Sparkline, StatsLine } from './stats.js';
+import { Progress, Sparkline, StatsLine } from './stats.js';
 import { testApi } from './test_api.js';
 import { parseQuery } from './url_state.js';
 import { createBridge } from './wasm_bridge.js';
@@ -30,45 +29,6 @@ const canvas = document.getElementById('canvas');
 let resolveReady, rejectReady;
 const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });
 ready.catch(() => {});  // failures are shown on the page; tests await it themselves
-
-// The link's settings: the first scene (at the link's cube size, or its accuracy mode's), then
-// the accuracy mode and settings, materials, planner settings, camera, time and pause. A value
-// that cannot be used is named in a message and the rest still applies.
-async function applyLink(session, link) {
-  const { bridge, modes, schema } = session;
-  const row = link.acc ? modes.find(link.acc) : null;
-  if (link.acc && !row) {
-    showMessage(`acc=${link.acc}: not a measured accuracy mode ` +
-                (modes.rows.length ? `(sweep.csv has ${modes.names()})` : '(sweep.csv is not available)') +
-                `; settings go as keys of their own (${schema.accuracy.map((i) => i.name).join(', ')}); ignored`);
-  }
-  session.cubeSize = link.cube || row?.faceSize || 0;
-  session.paused = link.paused;
-  await session.switchScene(link.scene);
-  // All at once (one GL rebuild for accuracy settings); when that fails, one by one.
-  const each = (changes, set) => {
-    if (!Object.keys(changes).length || !set(changes)) return;
-    for (const [key, value] of Object.entries(changes)) {
-      const error = set({ [key]: value });
-      if (error) showMessage(`${error} (from the link; ignored)`);
-    }
-  };
-  if (row) {
-    modes.chosen = row.name;
-    const error = bridge.setAccuracy(row.accuracy);
-    if (error) showMessage(`acc=${row.name}: ${error}`);
-  }
-  each(link.accuracy, (c) => bridge.setAccuracy(c));
-  for (const { index, changes, entry } of link.materials) {
-    const error = bridge.setMaterial({ index, changes });
-    if (error) showMessage(`mat=${entry}: ${error}; ignored`);
-  }
-  each(link.planner, (c) => bridge.setPlanner(c));
-  each(link.view, (c) => bridge.setView(c));
-  if (link.cam) bridge.setCamera({ eye: link.cam.slice(0, 3), yaw: link.cam[3], pitch: link.cam[4] });
-  if (link.t !== null) bridge.setTime(link.t);
-  session.changed('settings');
-}
 
 async function start() {
   if (typeof WebGL2RenderingContext === 'undefined') {
@@ -85,12 +45,12 @@ async function start() {
   const bridge = await createBridge(canvas);
   const createError = bridge.create();
   if (createError) throw new Error(createError);
-  let needsFrame = true;  // something changed since the last drawn frame
   let onResize = () => {};
+  let loop = null;
   // The canvas takes its displayed size; a new size draws a frame and re-times auto's candidates.
   const resizeCanvas = () => {
     if (sizeCanvasToDisplay()) {
-      needsFrame = true;
+      loop?.changed();
       onResize();
     }
   };
@@ -107,28 +67,21 @@ async function start() {
   await applyLink(session, link);
   const statsLine = new StatsLine(document.getElementById('stats'));
   const sparkline = new Sparkline(document.getElementById('spark'));
-  session.onChange(() => { needsFrame = true; });
-  canvas.addEventListener('webglcontextrestored', () => { needsFrame = true; });
+  loop = new FrameLoop(session, statsLine, sparkline);
+  session.onChange(() => loop.changed());
+  canvas.addEventListener('webglcontextrestored', () => loop.changed());
   session.frame(0, true);
   const addressBar = new AddressBar(session);
   addressBar.sync();
 
-  let held = false;  // the bench and auto hold the frame loop
-  // The display's frame interval, from the loop's own timestamps (the median of the last 30).
-  const intervals = [];
-  const displayInterval = () => {
-    if (intervals.length < 5) return null;
-    const sorted = [...intervals].sort((a, b) => a - b);
-    return sorted[Math.floor(sorted.length / 2)];
-  };
   const autoPick = new AutoPick(session, {
-    hold: (on) => { held = on; needsFrame = true; },
-    displayInterval,
+    hold: (on) => loop.hold(on),
+    displayInterval: () => loop.displayInterval(),
     canvasSize: () => `${canvas.width}x${canvas.height}`,
   });
   onResize = () => autoPick.schedule();
   const bench = (frames = link.frames || 60) =>
-    benchPage(session, { frames, readPixels: () => readPixels(canvas), hold: (on) => { held = on; needsFrame = true; } })
+    benchPage(session, { frames, readPixels: () => readPixels(canvas), hold: (on) => loop.hold(on) })
       .then((results) => { window.demo.benchResults = results; return results; });
   document.getElementById('bench-close').onclick = () => { document.getElementById('bench-box').hidden = true; };
 
@@ -170,42 +123,13 @@ async function start() {
   session.onChange((kind) => { if (kind === 'scene') describe(); });
   describe();
 
-  // The frame loop: one frame per display frame while something moves or changes, the stats line
-  // and the sparkline; none at all while idle (paused, nothing changed, nothing loading).
-  let previous = null;
-  let lastError;
-  let framesDrawn = 0;
-  let idle = false;
-  const tick = (now) => {
-    requestAnimationFrame(tick);
-    // Clamp the step so a tab that was hidden does not jump the animation.
-    const dt = previous === null ? 0 : Math.min((now - previous) / 1000, 0.1);
-    if (previous !== null) {
-      intervals.push(now - previous);
-      if (intervals.length > 30) intervals.shift();
-    }
-    previous = now;
-    if (held) return;
-    if (session.paused && !needsFrame && !session.pending) {
-      if (!idle) statsLine.showIdle(session.lastStats);
-      idle = true;
-      return;
-    }
-    idle = false;
-    needsFrame = false;
-    ++framesDrawn;
-    const stats = session.frame(session.paused ? 0 : dt);
-    if (stats.error && stats.error !== lastError) showMessage(stats.error);
-    lastError = stats.error;
-    sparkline.push(statsLine.update(now, stats, session.paused), frameTimes(stats).frameMs);
-  };
-  requestAnimationFrame(tick);
+  loop.start();
   autoPick.schedule();
 
   Object.assign(window.demo, testApi({
     session, addressBar, sparkline, progress, fps: () => statsLine.fps, panel: () => panel,
     readPixels: () => readPixels(canvas), screenshot: () => screenshot(session, canvas), bench,
-    framesDrawn: () => framesDrawn, drawingIdle: () => idle, autoPick,
+    framesDrawn: () => loop.framesDrawn, drawingIdle: () => loop.idle, autoPick,
   }));
   resolveReady();
   if (link.bench) bench().catch(() => {});

@@ -1,0 +1,41 @@
+// A link's settings applied to a new session, in the order they depend on each other.
+import { showMessage } from './messages.js';
+
+// The link's settings: the first scene (at the link's cube size, or its accuracy mode's), then
+// the accuracy mode and settings, materials, planner settings, camera, time and pause. A value
+// that cannot be used is named in a message and the rest still applies.
+export async function applyLink(session, link) {
+  const { bridge, modes, schema } = session;
+  const row = link.acc ? modes.find(link.acc) : null;
+  if (link.acc && !row) {
+    showMessage(`acc=${link.acc}: not a measured accuracy mode ` +
+                (modes.rows.length ? `(sweep.csv has ${modes.names()})` : '(sweep.csv is not available)') +
+                `; settings go as keys of their own (${schema.accuracy.map((i) => i.name).join(', ')}); ignored`);
+  }
+  session.cubeSize = link.cube || row?.faceSize || 0;
+  session.paused = link.paused;
+  await session.switchScene(link.scene);
+  // All at once (one GL rebuild for accuracy settings); when that fails, one by one.
+  const each = (changes, set) => {
+    if (!Object.keys(changes).length || !set(changes)) return;
+    for (const [key, value] of Object.entries(changes)) {
+      const error = set({ [key]: value });
+      if (error) showMessage(`${error} (from the link; ignored)`);
+    }
+  };
+  if (row) {
+    modes.chosen = row.name;
+    const error = bridge.setAccuracy(row.accuracy);
+    if (error) showMessage(`acc=${row.name}: ${error}`);
+  }
+  each(link.accuracy, (c) => bridge.setAccuracy(c));
+  for (const { index, changes, entry } of link.materials) {
+    const error = bridge.setMaterial({ index, changes });
+    if (error) showMessage(`mat=${entry}: ${error}; ignored`);
+  }
+  each(link.planner, (c) => bridge.setPlanner(c));
+  each(link.view, (c) => bridge.setView(c));
+  if (link.cam) bridge.setCamera({ eye: link.cam.slice(0, 3), yaw: link.cam[3], pitch: link.cam[4] });
+  if (link.t !== null) bridge.setTime(link.t);
+  session.changed('settings');
+}
