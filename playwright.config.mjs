@@ -8,7 +8,11 @@ export default defineConfig({
   testDir: 'tests/web',
   outputDir: 'build/playwright-results',
   workers: 1,  // two cores: one browser at a time keeps SwiftShader timings sane
-  timeout: 60_000,
+  // A frame of the default (hierarchical) search costs 0.5-1 s in SwiftShader at 800x600 on a
+  // loaded 2-core machine, and a test that opens two pages draws dozens: 60 s left one test
+  // (url.spec's copied link) at 50 s alone and past 60 s beside other work. No test waits on a
+  // time; this only bounds how long a hung test holds the run.
+  timeout: 180_000,
   // Scene reloads and model loads on a shared 2-core machine can take seconds; tests that wait
   // for the page's jobs await demo.idle() instead of a time.
   expect: { timeout: 15_000 },

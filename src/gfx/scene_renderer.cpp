@@ -51,17 +51,62 @@ float uniformScale(const glm::mat4& model) {
 
 }  // namespace
 
+// The reflectors' program with the search SEARCH (environment.frag) and its uniforms.
+Result<SceneRenderer::EnvironmentProgram> SceneRenderer::buildEnvironment(
+    int search, bool mediump, const std::string& precision) {
+  const std::string lookup = precision + "#define SEARCH " + std::to_string(search) +
+                             "\n#define DISTANCE_ITERATIONS 2\n";
+  Result<ShaderProgram> built = ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
+  if (!built) return Result<EnvironmentProgram>::failure(built.error());
+  const ShaderProgram& e = built.value();
+  EnvironmentProgram env{ShaderProgram{},
+                        CaptureUniforms::of(e),
+                        e.uniform("u_viewProjection"),
+                        e.uniform("u_model"),
+                        e.uniform("u_normalMatrix"),
+                        e.uniform("u_colour"),
+                        e.uniform("u_viewPosition"),
+                        e.uniform("u_reflectionWeight"),
+                        e.uniform("u_baseWeight"),
+                        e.uniform("u_refracts"),
+                        e.uniform("u_eta"),
+                        e.uniform("u_fresnelF0"),
+                        e.uniform("u_fresnel"),
+                        e.optionalUniform("u_twoSurfaces"),
+                        e.optionalUniform("u_glassSphere"),
+                        e.optionalUniform("u_probeCentre"),
+                        e.optionalUniform("u_distanceUnit"),
+                        e.optionalUniform("u_search"),
+                        e.uniform("u_outputDirection"),
+                        e.optionalUniform("u_layers"),
+                        e.optionalUniform("u_faceSize"),
+                        e.optionalUniform("u_topLevel"),
+                        e.optionalUniform("u_pyramidTile")};
+  glUseProgram(e.id());
+  glUniform1i(e.optionalUniform("u_environment"), kEnvironmentUnit);
+  glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
+  glUniform1i(e.optionalUniform("u_pyramid"), kPyramidUnit);
+  glUniform1i(e.optionalUniform("u_pyramid2"), kPyramid2Unit);
+  if (search == static_cast<int>(Search::Hierarchical)) setFaceFrames(e);
+  env.program = built.take();
+  return env;
+}
+
 Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   const bool mediump = accuracy.mediump;
   const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
   Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag", mediump, precision);
   if (!phong) return Result<SceneRenderer>::failure(phong.error());
-  const std::string lookup = precision + "#define SEARCH " +
-                             std::to_string(static_cast<int>(accuracy.search)) +
-                             "\n#define DISTANCE_ITERATIONS 2\n";
-  Result<ShaderProgram> environment =
-      ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
+  Result<EnvironmentProgram> environment =
+      buildEnvironment(static_cast<int>(accuracy.search), mediump, precision);
   if (!environment) return Result<SceneRenderer>::failure(environment.error());
+  // Reflectors that need no search (a skybox, a probe whose surroundings are all far) are drawn
+  // by a program without one: a software rasteriser pays for a branch not taken.
+  const bool searches = accuracy.search == Search::Linear || accuracy.search == Search::Hierarchical;
+  Result<EnvironmentProgram> plainEnvironment =
+      searches ? buildEnvironment(static_cast<int>(Search::Plain), mediump, precision)
+               : Result<EnvironmentProgram>(EnvironmentProgram{});
+  if (!plainEnvironment) return Result<SceneRenderer>::failure(plainEnvironment.error());
   Result<ShaderProgram> cubeTextured =
       ShaderProgram::build("mesh.vert", "cube_textured.frag", mediump, precision);
   if (!cubeTextured) return Result<SceneRenderer>::failure(cubeTextured.error());
@@ -87,37 +132,8 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
                           p.uniform("u_shininess")};
   r.phong_.program = phong.take();
 
-  const ShaderProgram& e = environment.value();
-  r.environment_ = EnvironmentProgram{ShaderProgram{},
-                                      CaptureUniforms::of(e),
-                                      e.uniform("u_viewProjection"),
-                                      e.uniform("u_model"),
-                                      e.uniform("u_normalMatrix"),
-                                      e.uniform("u_colour"),
-                                      e.uniform("u_viewPosition"),
-                                      e.uniform("u_reflectionWeight"),
-                                      e.uniform("u_baseWeight"),
-                                      e.uniform("u_refracts"),
-                                      e.uniform("u_eta"),
-                                      e.uniform("u_fresnelF0"),
-                                      e.uniform("u_fresnel"),
-                                      e.optionalUniform("u_twoSurfaces"),
-                                      e.optionalUniform("u_glassSphere"),
-                                      e.optionalUniform("u_probeCentre"),
-                                      e.optionalUniform("u_distanceUnit"),
-                                      e.optionalUniform("u_search"),
-                                      e.uniform("u_outputDirection"),
-                                      e.optionalUniform("u_layers"),
-                                      e.optionalUniform("u_faceSize"),
-                                      e.optionalUniform("u_topLevel"),
-                                      e.optionalUniform("u_pyramidTile")};
-  glUseProgram(e.id());
-  glUniform1i(e.optionalUniform("u_environment"), kEnvironmentUnit);
-  glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
-  glUniform1i(e.optionalUniform("u_pyramid"), kPyramidUnit);
-  glUniform1i(e.optionalUniform("u_pyramid2"), kPyramid2Unit);
-  if (accuracy.search == Search::Hierarchical) setFaceFrames(e);
-  r.environment_.program = environment.take();
+  r.environment_ = environment.take();
+  r.plainEnvironment_ = plainEnvironment.take();
 
   const ShaderProgram& c = cubeTextured.value();
   r.cubeTextured_ =
@@ -214,13 +230,16 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
       glUniform1f(phong_.shininess, scene.light.shininess);
       break;
     case ProgramKind::Environment:
-      glUseProgram(environment_.program.id());
-      environment_.capture.set(pass);
-      glUniformMatrix4fv(environment_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
-      glUniform3fv(environment_.viewPosition, 1, glm::value_ptr(viewPosition));
-      glUniform1i(environment_.outputDirection, outputDirections ? 1 : 0);
-      if (exact_) exact_->bind(environment_.program.id());  // the exact mode's scene
+    case ProgramKind::PlainEnvironment: {
+      const EnvironmentProgram& env = activeEnvironment();
+      glUseProgram(env.program.id());
+      env.capture.set(pass);
+      glUniformMatrix4fv(env.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
+      glUniform3fv(env.viewPosition, 1, glm::value_ptr(viewPosition));
+      glUniform1i(env.outputDirection, outputDirections ? 1 : 0);
+      if (exact_) exact_->bind(env.program.id());  // the exact mode's scene
       break;
+    }
     case ProgramKind::CubeTextured:
       glUseProgram(cubeTextured_.program.id());
       cubeTextured_.capture.set(pass);
@@ -229,12 +248,22 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
   }
 }
 
+bool SceneRenderer::searchesFor(const Scene& scene, const FramePlan& plan, int index) const {
+  if (accuracy_.search == Search::Plain) return false;
+  if (scene.objects[static_cast<size_t>(index)].environment == Environment::Skybox) return false;
+  const ProbePlan* probe = plan.probeOf(index);
+  return probe && !probe->plainLookupSuffices && probes_.count(probe->reflector) > 0;
+}
+
+const SceneRenderer::EnvironmentProgram& SceneRenderer::activeEnvironment() const {
+  return current_ == ProgramKind::PlainEnvironment ? plainEnvironment_ : environment_;
+}
+
 void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, int index) {
   const SceneObject& object = scene.objects[static_cast<size_t>(index)];
   GLuint colour = 0, colour2 = 0;
   GLuint pyramid = emptyPyramid_.id(), pyramid2 = emptyPyramid_.id();
   int layers = 1, faceSize = 1, topLevel = 0;
-  bool search = false;
   glm::vec3 centre(0.0f);
   if (object.environment == Environment::Skybox) {
     colour = skybox_ ? skybox_->texture() : 0;
@@ -252,7 +281,6 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
       }
       faceSize = t.faceSize();
       topLevel = t.topLevel();
-      search = accuracy_.search != Search::Plain && !probe->plainLookupSuffices;
     }
   }
   if (current_ == ProgramKind::CubeTextured) {
@@ -264,13 +292,14 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
   bindTexture(kPyramid2Unit, GL_TEXTURE_2D, pyramid2);
   glActiveTexture(GL_TEXTURE0);
-  glUniform3fv(environment_.probeCentre, 1, glm::value_ptr(centre));
-  glUniform1f(environment_.distanceUnit, scene.capture.near);
-  glUniform1i(environment_.search, search ? 1 : 0);
-  glUniform1i(environment_.layers, layers);
-  glUniform1i(environment_.faceSize, faceSize);
-  glUniform1i(environment_.topLevel, topLevel);
-  glUniform1i(environment_.pyramidTile, 1 << topLevel);
+  const EnvironmentProgram& env = activeEnvironment();
+  glUniform3fv(env.probeCentre, 1, glm::value_ptr(centre));
+  glUniform1f(env.distanceUnit, scene.capture.near);
+  glUniform1i(env.search, searchesFor(scene, plan, index) ? 1 : 0);
+  glUniform1i(env.layers, layers);
+  glUniform1i(env.faceSize, faceSize);
+  glUniform1i(env.topLevel, topLevel);
+  glUniform1i(env.pyramidTile, 1 << topLevel);
 }
 
 PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
@@ -288,26 +317,28 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
       glUniform3fv(phong_.colour, 1, glm::value_ptr(object.colour));
       glUniform1f(phong_.capture.extent, extent);
       break;
-    case ProgramKind::Environment: {
-      setObjectMatrices(environment_.model, environment_.normalMatrix, model);
-      glUniform3fv(environment_.colour, 1, glm::value_ptr(object.colour));
-      glUniform1f(environment_.capture.extent, extent);
-      glUniform1f(environment_.reflectionWeight, object.reflection);
-      glUniform1f(environment_.baseWeight, object.base);
-      glUniform1i(environment_.refracts, object.material == Material::Glass ? 1 : 0);
+    case ProgramKind::Environment:
+    case ProgramKind::PlainEnvironment: {
+      const EnvironmentProgram& env = activeEnvironment();
+      setObjectMatrices(env.model, env.normalMatrix, model);
+      glUniform3fv(env.colour, 1, glm::value_ptr(object.colour));
+      glUniform1f(env.capture.extent, extent);
+      glUniform1f(env.reflectionWeight, object.reflection);
+      glUniform1f(env.baseWeight, object.base);
+      glUniform1i(env.refracts, object.material == Material::Glass ? 1 : 0);
       const float n = std::max(object.ior, 1e-3f);
-      glUniform1f(environment_.eta, 1.0f / n);
-      glUniform1f(environment_.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
-      glUniform1i(environment_.fresnel, object.fresnel ? 1 : 0);
+      glUniform1f(env.eta, 1.0f / n);
+      glUniform1f(env.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
+      glUniform1i(env.fresnel, object.fresnel ? 1 : 0);
       // Glass leaves through its far side where the mesh is a sphere (uniformly scaled).
       const MeshBuffer* full = mesh(object.mesh, 0);
       const float radius = full ? full->sphereRadius() * uniformScale(model) : 0.0f;
       const bool twoSurfaces = accuracy_.glassSurfaces == 2 && radius > 0.0f;
-      glUniform1i(environment_.twoSurfaces, twoSurfaces ? 1 : 0);
+      glUniform1i(env.twoSurfaces, twoSurfaces ? 1 : 0);
       const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
-      glUniform4f(environment_.glassSphere, centre.x, centre.y, centre.z, radius);
+      glUniform4f(env.glassSphere, centre.x, centre.y, centre.z, radius);
       bindEnvironment(scene, plan, item.object);
-      if (exact_) exact_->bindObject(environment_.program.id(), item.object);
+      if (exact_) exact_->bindObject(env.program.id(), item.object);
       break;
     }
     case ProgramKind::CubeTextured:
@@ -328,13 +359,15 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
                                     const CaptureState& pass, bool outputDirections) {
   PassCounts counts;
   // One program switch per material kind present: Phong first, then the environment users.
-  for (ProgramKind kind :
-       {ProgramKind::Phong, ProgramKind::Environment, ProgramKind::CubeTextured}) {
+  for (ProgramKind kind : {ProgramKind::Phong, ProgramKind::PlainEnvironment,
+                           ProgramKind::Environment, ProgramKind::CubeTextured}) {
     bool inUse = false;
     for (const DrawItem& d : draws) {
       const Material m = scene.objects[static_cast<size_t>(d.object)].material;
+      const bool plain = plainEnvironment_.program.id() && !searchesFor(scene, plan, d.object);
       const ProgramKind wanted = m == Material::Phong          ? ProgramKind::Phong
                                  : m == Material::CubeTextured ? ProgramKind::CubeTextured
+                                 : plain                       ? ProgramKind::PlainEnvironment
                                                                : ProgramKind::Environment;
       if (wanted != kind) continue;
       if (!inUse) {
@@ -454,6 +487,7 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Fra
 void SceneRenderer::abandon() {
   phong_.program.abandon();
   environment_.program.abandon();
+  plainEnvironment_.program.abandon();
   cubeTextured_.program.abandon();
   pyramid_.first.abandon();
   pyramid_.reduce.abandon();

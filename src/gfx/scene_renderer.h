@@ -99,7 +99,7 @@ class SceneRenderer {
     ShaderProgram first, reduce;
     PyramidPrograms uses;
   };
-  enum class ProgramKind { Phong, Environment, CubeTextured };
+  enum class ProgramKind { Phong, PlainEnvironment, Environment, CubeTextured };
 
   SceneRenderer() = default;
   // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
@@ -114,10 +114,18 @@ class SceneRenderer {
   // Binds object `index`'s environment (its probe's layers, or the sky) for the environment
   // program and sets the search's uniforms.
   void bindEnvironment(const Scene& scene, const FramePlan& plan, int index);
+  // Whether object `index`'s lookup searches its probe's depths (its probe is captured, is no
+  // skybox, and not every surface it sees is far enough for the plain lookup).
+  bool searchesFor(const Scene& scene, const FramePlan& plan, int index) const;
+  // The environment program in use: the configured search's, or the one without a search.
+  const EnvironmentProgram& activeEnvironment() const;
+  static Result<EnvironmentProgram> buildEnvironment(int search, bool mediump,
+                                                     const std::string& precision);
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;
   EnvironmentProgram environment_;
+  EnvironmentProgram plainEnvironment_;  // SEARCH 0, only when the configured search searches
   CubeTexturedProgram cubeTextured_;
   PyramidProgramSet pyramid_;
   std::unique_ptr<SkyboxPass> skybox_;
