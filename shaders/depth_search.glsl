@@ -161,8 +161,10 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     if ((exitTexel & (2 * span - 1)) == 0 || faceEdge) level = min(level + 1, u_topLevel);
     tau = tauExit + max(tauExit * 1e-5, 1e-5);
   }
-  // Out of steps (a long grazing walk): the farthest point reached is the best guess.
-  return SearchResult(x + tau * d, 1, kMaxSteps);
+  // Out of steps (a long walk of a ray grazing the reflector's rim, behind the sky's texels or a
+  // figure's): taken as a miss, looked up along d. (The farthest point reached, the guess this
+  // replaced, painted the rim of skybox-grid's mirror grey: its PSNR 29.4 -> 46.0 dB.)
+  return SearchResult(d, 0, kMaxSteps);
 }
 
 #ifdef REFLECT_MEDIUMP
