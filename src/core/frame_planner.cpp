@@ -79,9 +79,12 @@ int PlannerSettings::maxStalenessFrames() const {
   }
 }
 
+float halfTexelAngle(int faceSize) {
+  return 0.4082f / static_cast<float>(std::max(faceSize, 1));
+}
+
 bool plainLookupWithinHalfTexel(float reach, float nearest, int faceSize) {
-  const float halfTexel = 0.4714f / static_cast<float>(std::max(faceSize, 1));
-  return reach < nearest * std::sin(halfTexel);
+  return reach < nearest * std::sin(halfTexelAngle(faceSize));
 }
 
 namespace {

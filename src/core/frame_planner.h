@@ -106,13 +106,23 @@ struct ProbePlan : ProbeLayout {
   bool plainLookupSuffices = false;
 };
 
-// The plain lookup (the cube map along the ray's direction) is off by the parallax angle between
-// the ray from a surface point at distance r from the probe centre and the line from the centre to
-// what the ray meets, at distance D: at most asin(r / D). A texel of a face of N texels spans at
-// least 0.9428 / N radians (at the face's corners: d(angle)/ds = sqrt(1 + t^2) / (1 + s^2 + t^2)
-// is smallest at s = t = 1, sqrt(2) / 3, and a texel is 2 / N of s). So the plain lookup is within
-// half a texel wherever r < D * sin(0.4714 / N). `reach`: the reflectors' farthest point from the
-// centre; `nearest`: the nearest surface the probe can store (infinity for the sky alone).
+// The plain lookup (the cube map along the ray's direction d) is off by the parallax angle
+// between d and the direction from the probe centre to what the ray meets. For a ray from p,
+// |p| <= r, meeting q = p + t d at |q| >= D > r, that angle is the triangle (centre, p, q)'s angle
+// at q, and by the law of sines sin(angle) = |p| sin(angle at p) / |q| <= r / D (the angle is
+// acute: it faces the shorter side): at most asin(r / D), reached when |p| = r, d is
+// perpendicular to p and |q| = D.
+// Half a texel, as an angle: a face point (s, t) is off by less than half a texel (1 / N of s and
+// of t, a texel being 2 / N) when its direction is closer than the nearest of the great circles
+// s = s0 +- 1 / N, t = t0 +- 1 / N around it. The angle from the direction (s, t, 1) to the great
+// circle s = c is asin(|s - c| / (sqrt(1 + c^2) sqrt(1 + s^2 + t^2))), smallest at the face's
+// corners (c, s, t -> 1): asin(1 / (sqrt(6) N)) > 0.4082 / N (halfTexelAngle). (Not 0.4714 / N,
+// the rate sqrt(1 + t^2) / (1 + s^2 + t^2) of the angle along s alone at the corner, sqrt(2) / 3:
+// a direction error along the corner's diagonal moves s by half a texel at 1 / (sqrt(6) N).)
+// So the plain lookup is within half a texel wherever asin(r / D) < halfTexelAngle(N), that is
+// r < D sin(halfTexelAngle(N)). `reach`: the reflectors' farthest point from the centre;
+// `nearest`: the nearest surface the probe can store (infinity for the sky alone).
+float halfTexelAngle(int faceSize);
 bool plainLookupWithinHalfTexel(float reach, float nearest, int faceSize);
 
 // Everything a frame's passes need to know: the capture renders `faces`, and the main pass binds
