@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <future>
 
 #include "core/mesh_chunks.h"
 #include "core/mesh_lod.h"
@@ -25,6 +26,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 Demo::Demo(Scene scene) : scene_(std::move(scene)), camera_(scene_.camera) {}
 
+Demo::~Demo() = default;
+
 std::string Demo::loadMesh(const std::string& name, const std::string& path) {
   return adoptLoaded(name, loadObjFile(path));
 }
@@ -32,6 +35,10 @@ std::string Demo::loadMesh(const std::string& name, const std::string& path) {
 std::string Demo::loadMeshText(const std::string& name, const std::string& text,
                                const std::string& source) {
   return adoptLoaded(name, parseObj(text, source));
+}
+
+std::string Demo::setLoadedMesh(const std::string& name, Result<LoadedMesh> loaded) {
+  return adoptLoaded(name, std::move(loaded));
 }
 
 std::string Demo::adoptLoaded(const std::string& name, Result<LoadedMesh> loaded) {
@@ -49,30 +56,216 @@ std::string Demo::setMeshData(const std::string& name, MeshData mesh) {
 
 std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   if (!mesh) return mesh.error();
-  std::vector<MeshData> levels;
-  levels.push_back(mesh.take());
-  levels.front().sphereRadius = sphereRadiusOf(levels.front());
-  for (MeshData& coarser : buildLodLevels(levels.front())) levels.push_back(std::move(coarser));
-  for (MeshData& level : levels) chunkMesh(level);
-  if (renderer_) {
-    for (size_t lod = 0; lod < levels.size(); ++lod) {
-      renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
-    }
+  MeshEntry entry;
+  entry.base = std::make_shared<MeshData>(mesh.take());
+  entry.base->chunks.clear();
+  entry.base->sphereRadius = sphereRadiusOf(*entry.base);
+  // Drawn whole at first; chunks and levels follow (after the first frame).
+  if (renderer_) renderer_->setMesh(name, 0, *entry.base);
+  auto it = meshes_.find(name);
+  if (it != meshes_.end()) {
+    if (it->second.pending.valid()) abandoned_.push_back(std::move(it->second.pending));
+    it->second = std::move(entry);
+  } else {
+    meshes_.emplace(name, std::move(entry));
   }
-  meshes_[name] = std::move(levels);
   ++meshRevisions_[name];
+  if (firstFrameDrawn_) startBuilds();
   return {};
 }
 
-std::string Demo::addLodLevel(const std::string& name, const std::vector<uint32_t>& indices) {
+bool Demo::needsLevels() const {
+  return plannerSettings_.captureLod > 0.0f || plannerSettings_.viewLod > 0.0f;
+}
+
+bool Demo::lodReady() const {
+  for (const auto& [name, entry] : meshes_) {
+    if (entry.pending.valid() || !entry.chunked) return false;
+    if (needsLevels() && !entry.levelsBuilt) return false;
+  }
+  return true;
+}
+
+std::vector<Demo::LevelJob> Demo::levelJobs() const {
+  std::vector<LevelJob> jobs;
+  for (const auto& [name, entry] : meshes_) {
+    const bool coarser = needsLevels() && !entry.levelsBuilt;
+    if (entry.chunked && !coarser) continue;
+    auto revision = meshRevisions_.find(name);
+    jobs.push_back(LevelJob{name, revision == meshRevisions_.end() ? 0 : revision->second,
+                            !entry.chunked, coarser});
+  }
+  return jobs;
+}
+
+void Demo::startBuilds() {
+  if (levelBuilds_ != LevelBuilds::Background) return;
+  const bool coarser = needsLevels();
+  for (auto& [name, entry] : meshes_) {
+    if (entry.pending.valid()) continue;  // one build of a mesh at a time: it reads the base
+    const bool chunks = !entry.chunked;
+    const bool levels = coarser && !entry.levelsBuilt;
+    if (!chunks && !levels) continue;
+    std::shared_ptr<const MeshData> base = entry.base;
+    entry.pending = std::async(
+        std::launch::async, [base, chunks, levels] { return buildLevels(*base, chunks, levels); });
+  }
+}
+
+void Demo::collectBuilds(bool wait) {
+  abandoned_.erase(std::remove_if(abandoned_.begin(), abandoned_.end(),
+                                  [](std::future<BuiltLevels>& f) {
+                                    return f.wait_for(std::chrono::seconds(0)) ==
+                                           std::future_status::ready;
+                                  }),
+                   abandoned_.end());
+  for (auto& [name, entry] : meshes_) {
+    if (!entry.pending.valid()) continue;
+    if (!wait && entry.pending.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      continue;
+    }
+    BuiltLevels built = entry.pending.get();
+    MeshData& base = *entry.base;
+    if (built.chunked) {
+      Result<std::vector<MeshChunk>> chunks =
+          chunksFromCounts(base.vertices, built.base.indices, built.base.chunkTriangles);
+      if (chunks) {
+        base.indices = std::move(built.base.indices);
+        base.chunks = chunks.take();
+      }
+      entry.chunked = true;  // a failure (never expected) leaves the mesh drawn whole
+    }
+    if (built.coarse) {
+      entry.coarser.clear();
+      for (LevelIndices& level : built.coarser) {
+        Result<std::vector<MeshChunk>> chunks =
+            chunksFromCounts(base.vertices, level.indices, level.chunkTriangles);
+        if (!chunks) break;
+        CoarseLevel coarse;
+        coarse.vertices = verticesUsed(base.vertices.size(), level.indices);
+        coarse.indices = std::move(level.indices);
+        coarse.chunks = chunks.take();
+        entry.coarser.push_back(std::move(coarse));
+      }
+      entry.levelsBuilt = true;
+    }
+    uploadLevels(name, entry);
+  }
+}
+
+void Demo::waitForLevels() {
+  startBuilds();
+  collectBuilds(true);
+}
+
+void Demo::uploadLevels(const std::string& name, const MeshEntry& entry) {
+  if (!renderer_) return;
+  renderer_->setMesh(name, 0, *entry.base);
+  for (size_t k = 0; k < entry.coarser.size(); ++k) {
+    // The GPU's copy is compact (the level's own vertices); the CPU keeps the index list.
+    renderer_->setMesh(name, static_cast<int>(k + 1),
+                       meshFromIndices(*entry.base, entry.coarser[k].indices));
+  }
+}
+
+Demo::MeshEntry* Demo::entryAt(const std::string& name, uint32_t revision, std::string* problem) {
   auto it = meshes_.find(name);
-  if (it == meshes_.end()) return name + ": no such mesh";
-  MeshData level = meshFromIndices(it->second.front(), indices);
-  if (level.indices.empty()) return name + ": level of detail has no triangles";
-  chunkMesh(level);
-  if (renderer_) renderer_->setMesh(name, static_cast<int>(it->second.size()), level);
-  it->second.push_back(std::move(level));
+  auto current = meshRevisions_.find(name);
+  if (it == meshes_.end() || current == meshRevisions_.end()) {
+    *problem = name + ": no such mesh";
+    return nullptr;
+  }
+  if (current->second != revision) {
+    *problem = name + ": the mesh has changed since (revision " + std::to_string(revision) +
+               ", now " + std::to_string(current->second) + ")";
+    return nullptr;
+  }
+  return &it->second;
+}
+
+std::string Demo::setMeshChunks(const std::string& name, uint32_t revision,
+                                std::vector<uint32_t> indices,
+                                const std::vector<uint32_t>& chunkTriangles) {
+  std::string problem;
+  MeshEntry* entry = entryAt(name, revision, &problem);
+  if (!entry) return problem;
+  MeshData& base = *entry->base;
+  if (indices.size() != base.indices.size()) {
+    return name + ": the chunked triangles are " + std::to_string(indices.size() / 3) +
+           ", the mesh has " + std::to_string(base.triangleCount());
+  }
+  Result<std::vector<MeshChunk>> chunks = chunksFromCounts(base.vertices, indices, chunkTriangles);
+  if (!chunks) return name + ": " + chunks.error();
+  base.indices = std::move(indices);
+  base.chunks = chunks.take();
+  entry->chunked = true;
+  uploadLevels(name, *entry);
   return {};
+}
+
+std::string Demo::addLodLevel(const std::string& name, uint32_t revision,
+                              std::vector<uint32_t> indices,
+                              const std::vector<uint32_t>& chunkTriangles) {
+  std::string problem;
+  MeshEntry* entry = entryAt(name, revision, &problem);
+  if (!entry) return problem;
+  if (indices.empty()) return name + ": level of detail has no triangles";
+  const MeshData& base = *entry->base;
+  Result<std::vector<MeshChunk>> chunks = chunksFromCounts(base.vertices, indices, chunkTriangles);
+  if (!chunks) return name + ": " + chunks.error();
+  CoarseLevel level;
+  level.vertices = verticesUsed(base.vertices.size(), indices);
+  level.indices = std::move(indices);
+  level.chunks = chunks.take();
+  if (renderer_) {
+    renderer_->setMesh(name, static_cast<int>(entry->coarser.size() + 1),
+                       meshFromIndices(base, level.indices));
+  }
+  entry->coarser.push_back(std::move(level));
+  return {};
+}
+
+std::string Demo::finishLevels(const std::string& name, uint32_t revision) {
+  std::string problem;
+  MeshEntry* entry = entryAt(name, revision, &problem);
+  if (!entry) return problem;
+  entry->levelsBuilt = true;
+  return {};
+}
+
+size_t Demo::meshGpuBytes() const {
+  size_t bytes = 0;
+  for (const auto& [name, entry] : meshes_) {
+    bytes += entry.base->vertices.size() * sizeof(Vertex) +
+             entry.base->indices.size() * sizeof(uint32_t);
+    for (const CoarseLevel& level : entry.coarser) {
+      bytes += level.vertices * sizeof(Vertex) + level.indices.size() * sizeof(uint32_t);
+    }
+  }
+  return bytes;
+}
+
+size_t Demo::meshCpuBytes() const {
+  size_t bytes = 0;
+  for (const auto& [name, entry] : meshes_) {
+    const MeshData& base = *entry.base;
+    bytes += base.vertices.capacity() * sizeof(Vertex) +
+             base.indices.capacity() * sizeof(uint32_t) +
+             base.chunks.capacity() * sizeof(MeshChunk);
+    for (const CoarseLevel& level : entry.coarser) {
+      bytes +=
+          level.indices.capacity() * sizeof(uint32_t) + level.chunks.capacity() * sizeof(MeshChunk);
+    }
+  }
+  return bytes;
+}
+
+std::vector<size_t> Demo::levelTriangles(const std::string& name) const {
+  auto it = meshes_.find(name);
+  if (it == meshes_.end()) return {};
+  std::vector<size_t> triangles{it->second.base->triangleCount()};
+  for (const CoarseLevel& level : it->second.coarser) triangles.push_back(level.indices.size() / 3);
+  return triangles;
 }
 
 std::string Demo::addObject(const SceneObject& object) {
@@ -103,8 +296,8 @@ std::string Demo::setSkybox(CubeFaces faces) {
 
 const MeshData* Demo::meshLevel(const std::string& name, int lod) const {
   auto it = meshes_.find(name);
-  if (it == meshes_.end() || lod < 0 || lod >= static_cast<int>(it->second.size())) return nullptr;
-  return &it->second[static_cast<size_t>(lod)];
+  if (it == meshes_.end() || lod != 0) return nullptr;
+  return it->second.base.get();
 }
 
 std::string Demo::loadMeshesFrom(const std::string& directory) {
@@ -127,6 +320,7 @@ bool Demo::hasAllMeshes() const {
 
 void Demo::setPlannerSettings(const PlannerSettings& settings) {
   plannerSettings_ = settings;
+  if (firstFrameDrawn_) startBuilds();  // a LOD setting turned on: its levels are wanted now
 }
 
 std::string Demo::setCubeFaceSize(int size) {
@@ -153,11 +347,7 @@ std::string Demo::initGraphics() {
   glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &maxCubeSize);
   scene_.capture.faceSize = std::clamp(scene_.capture.faceSize, 1, std::max(1, maxCubeSize));
   gpuTimer_ = std::make_unique<GpuTimer>();
-  for (const auto& [name, levels] : meshes_) {
-    for (size_t lod = 0; lod < levels.size(); ++lod) {
-      renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
-    }
-  }
+  for (const auto& [name, entry] : meshes_) uploadLevels(name, entry);
   if (skybox_) {
     std::string error = renderer_->setSkybox(*skybox_);
     if (!error.empty()) return error;
@@ -224,9 +414,11 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
     PlannedObject p;
     auto it = meshes_.find(object.mesh);
     if (it != meshes_.end()) {
-      p.localBounds = it->second.front().bounds;
-      for (const MeshData& level : it->second) {
-        p.levels.push_back(PlannedLevel{level.triangleCount(), &level.chunks});
+      const MeshData& base = *it->second.base;
+      p.localBounds = base.bounds;
+      p.levels.push_back(PlannedLevel{base.triangleCount(), &base.chunks});
+      for (const CoarseLevel& level : it->second.coarser) {
+        p.levels.push_back(PlannedLevel{level.indices.size() / 3, &level.chunks});
       }
     }
     auto revision = meshRevisions_.find(object.mesh);
@@ -244,6 +436,7 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
 
 const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width, int height,
                               bool waitForGpu) {
+  collectBuilds(false);  // levels built since the last frame join this one
   clock_.advance(dtSeconds);
   stats_ = FrameStats{};
   stats_.timeSeconds = clock_.seconds();
@@ -253,6 +446,9 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   stats_.cubeFaceSize = scene_.capture.faceSize;
   stats_.width = width;
   stats_.height = height;
+  stats_.lodReady = lodReady();
+  stats_.meshBytes = meshGpuBytes();
+  stats_.meshCpuBytes = meshCpuBytes();
   if (!renderer_ || width < 1 || height < 1) return stats_;  // hidden canvas: nothing to draw
 
   const auto start = std::chrono::steady_clock::now();
@@ -300,6 +496,11 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   }
   stats_.mainDrawCalls = main.drawCalls;
   stats_.mainTriangles = main.triangles;
+  if (!firstFrameDrawn_) {
+    // The first frame is on screen: now build what the meshes were drawn without.
+    firstFrameDrawn_ = true;
+    startBuilds();
+  }
   return stats_;
 }
 

@@ -55,6 +55,9 @@ Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, const DemoVariant& v
   warnings.print(loadWarnings);
   if (error.empty()) error = demo->initGraphics();
   if (!error.empty()) return Out::failure(error);
+  // Renders and benchmarks start with every chunk and level built, so what they print does not
+  // depend on when a background build happened to finish.
+  demo->waitForLevels();
   return Out(std::move(demo));
 }
 
