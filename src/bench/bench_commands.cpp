@@ -6,6 +6,7 @@
 
 #include "app/headless_frames.h"
 #include "bench/growth_bench.h"
+#include "bench/lod_sweep.h"
 #include "bench/policy_bench.h"
 #include "bench/sweep.h"
 
@@ -30,6 +31,10 @@ int benchFramesDefault(BenchMode mode) {
       return GrowthOptions{}.frames;
     case BenchMode::Sweep:
       return SweepOptions{}.frames;
+    case BenchMode::LodSweep:
+      return LodSweepOptions{}.frames;
+    case BenchMode::ViewLodSweep:
+      return 1;
   }
   return 0;
 }
@@ -42,9 +47,20 @@ int benchWarmupDefault(BenchMode mode) {
     case BenchMode::Growth:
       return GrowthOptions{}.warmup;
     case BenchMode::Sweep:
+    case BenchMode::ViewLodSweep:
       return 0;
+    case BenchMode::LodSweep:
+      return LodSweepOptions{}.warmup;
   }
   return 0;
+}
+
+std::string runLodSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {
+  return runCaptureLodSweep(o, makeDemo);
+}
+
+std::string runViewLodSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {
+  return runViewLodSweep(o, makeDemo);
 }
 
 std::string runSinglePolicy(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {

@@ -29,7 +29,7 @@ struct BenchCommandOptions {
   std::string svg;          // the sweep: SVG plot output ("" = none)
 };
 
-enum class BenchMode { PolicyComparison, SinglePolicy, Growth, Sweep };
+enum class BenchMode { PolicyComparison, SinglePolicy, Growth, Sweep, LodSweep, ViewLodSweep };
 
 // Timed frames (per policy, per setting, per cell) and warm-up frames when not given.
 int benchFramesDefault(BenchMode mode);
@@ -51,6 +51,12 @@ std::string runPolicyComparison(const BenchCommandOptions& options,
 std::string runSinglePolicy(const BenchCommandOptions& options, const BenchDemoFactory& makeDemo);
 // Every accuracy setting against the ray-traced reference: table, CSV, SVG.
 std::string runSweepCommand(const BenchCommandOptions& options, const BenchDemoFactory& makeDemo);
+// Capture LOD values against full detail (reflector vs the reference, capture triangles, frame
+// time), and view LOD values against the full-detail view (bench/lod_sweep.h).
+std::string runLodSweepCommand(const BenchCommandOptions& options,
+                               const BenchDemoFactory& makeDemo);
+std::string runViewLodSweepCommand(const BenchCommandOptions& options,
+                                   const BenchDemoFactory& makeDemo);
 // Frame time against reflectors and triangles, on scenes generated from `modelDirectory`.
 std::string runGrowthCommand(const BenchCommandOptions& options, const std::string& modelDirectory);
 

@@ -106,8 +106,12 @@ std::string loadSceneModels(Demo& demo, const std::string& userDirectory,
       if (std::filesystem::exists(user)) {
         path = user;
       } else {
-        std::fprintf(stderr, "reflect: %s not found, using the built-in %s\n", user.c_str(),
-                     name.c_str());
+        const std::string notice = user + " not found, using the built-in " + name;
+        if (warnings) {
+          warnings->push_back(notice);  // the caller prints each once
+        } else {
+          std::fprintf(stderr, "reflect: %s\n", notice.c_str());
+        }
       }
     }
     const std::string error = demo.loadMesh(name, path);
