@@ -1,6 +1,7 @@
 #include "app/demo.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -69,7 +70,9 @@ std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   } else {
     meshes_.emplace(name, std::move(entry));
   }
-  ++meshRevisions_[name];
+  // Unique across demos: a level built for a mesh of an earlier scene never fits a later one.
+  static std::atomic<uint32_t> nextRevision{1};
+  meshRevisions_[name] = nextRevision++;
   if (firstFrameDrawn_) startBuilds();
   return {};
 }

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/demo.h"
 #include "core/frame_planner.h"
@@ -23,10 +24,11 @@ struct BenchCommandOptions {
   // Unset: each mode's own default (benchFramesDefault, benchWarmupDefault).
   std::optional<int> frames;
   std::optional<int> warmup;
-  int accuracyFrames = 60;  // the policy comparison: frames compared with every-frame
-  PlannerSettings planner;  // the single policy; the comparison's time-sliced, every-n, LODs
-  std::string csv;          // the sweep: CSV output ("" = none)
-  std::string svg;          // the sweep: SVG plot output ("" = none)
+  int accuracyFrames = 60;    // the policy comparison: frames compared with every-frame
+  PlannerSettings planner;    // the single policy; the comparison's time-sliced, every-n, LODs
+  std::vector<double> times;  // the LOD sweeps: scene times measured (empty: their own)
+  std::string csv;            // the sweep: CSV output ("" = none)
+  std::string svg;            // the sweep: SVG plot output ("" = none)
 };
 
 enum class BenchMode { PolicyComparison, SinglePolicy, Growth, Sweep, LodSweep, ViewLodSweep };

@@ -468,6 +468,24 @@ void defineBench(Command& c, CliOptions& o) {
           "frames each policy is compared with every-frame (0..100000; default " +
               std::to_string(o.accuracyFrames) + ")",
           accuracyFrames.expected(), kOptions, wholeNumberInto(accuracyFrames, &o.accuracyFrames));
+  c.value("--times", "T1,T2,...",
+          "LOD sweeps: the scene times measured, in seconds (default 0,1,2,3,4,5; the view "
+          "sweep 0,3)",
+          "numbers of seconds T1,T2,...", kOptions, [&o](const std::string& text) {
+            std::vector<double> times;
+            size_t start = 0;
+            for (;;) {
+              const size_t comma = text.find(',', start);
+              const json value = numberJson(text.substr(start, comma - start));
+              if (value.is_null())
+                return "--times: " + text + " is not numbers of seconds T1,T2,...";
+              times.push_back(value.get<double>());
+              if (comma == std::string::npos) break;
+              start = comma + 1;
+            }
+            o.times = times;
+            return std::string();
+          });
   c.value("--csv", "FILE", "sweep: write the rows as CSV (name, ms, psnr_db, rmse, p95, ...)",
           "a file name", kOptions, textInto(&o.csv));
   c.value("--svg", "FILE", "sweep: write a plot of error against time with the Pareto front",
@@ -513,6 +531,7 @@ BenchCommandOptions CliOptions::benchOptions() const {
   b.warmup = warmup;
   b.accuracyFrames = accuracyFrames;
   b.planner = planner;
+  b.times = times;
   b.csv = csv;
   b.svg = svg;
   return b;

@@ -42,6 +42,7 @@ struct CliOptions {
   bool sweep = false;         // bench: accuracy settings against the ray-traced reference
   bool lodSweep = false;      // bench: capture LOD values against full detail
   bool viewLodSweep = false;  // bench: view LOD values against the full-detail view
+  std::vector<double> times;  // LOD sweeps: the scene times measured (empty: the sweep's own)
   std::string csv;            // sweep: CSV output
   std::string svg;            // sweep: SVG plot output
 
