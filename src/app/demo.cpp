@@ -263,6 +263,17 @@ size_t Demo::meshCpuBytes() const {
   return bytes;
 }
 
+std::vector<Demo::LevelInfo> Demo::levelInfo(const std::string& name) const {
+  auto it = meshes_.find(name);
+  if (it == meshes_.end()) return {};
+  const MeshData& base = *it->second.base;
+  std::vector<LevelInfo> levels{{base.triangleCount(), base.chunks.size(), base.vertices.size()}};
+  for (const CoarseLevel& level : it->second.coarser) {
+    levels.push_back({level.indices.size() / 3, level.chunks.size(), level.vertices});
+  }
+  return levels;
+}
+
 std::vector<size_t> Demo::levelTriangles(const std::string& name) const {
   auto it = meshes_.find(name);
   if (it == meshes_.end()) return {};

@@ -63,6 +63,14 @@ class Demo {
   const MeshData* meshLevel(const std::string& name, int lod) const;
   // Triangles of each level of mesh `name`, level 0 first (empty if there is no such mesh).
   std::vector<size_t> levelTriangles(const std::string& name) const;
+  // Each level of mesh `name`, level 0 first: its triangles, chunks and the vertices its GPU copy
+  // holds (level 0: all of the mesh's; a coarser level: the ones it uses).
+  struct LevelInfo {
+    size_t triangles = 0;
+    size_t chunks = 0;
+    size_t vertices = 0;
+  };
+  std::vector<LevelInfo> levelInfo(const std::string& name) const;
 
   // Who builds chunks and levels of detail: a thread of this demo (native), or the caller (the
   // page's worker, through levelJobs and the three calls after it).

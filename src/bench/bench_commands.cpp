@@ -56,11 +56,15 @@ int benchWarmupDefault(BenchMode mode) {
 }
 
 std::string runLodSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {
-  return runCaptureLodSweep(o, makeDemo);
+  LodSweepOptions sweep;
+  if (!o.times.empty()) sweep.times = o.times;
+  return runCaptureLodSweep(o, makeDemo, sweep);
 }
 
 std::string runViewLodSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {
-  return runViewLodSweep(o, makeDemo);
+  LodSweepOptions sweep;
+  if (!o.times.empty()) sweep.viewTimes = o.times;
+  return runViewLodSweep(o, makeDemo, sweep);
 }
 
 std::string runSinglePolicy(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {
