@@ -83,7 +83,8 @@ reflect::Result<LevelRequest> levelRequest(const char* request, const char* func
   out.revision = static_cast<uint32_t>(in["revision"].integer(0, 0, 1 << 30));
   if (r.value().contains("chunkTriangles") && r.value()["chunkTriangles"].is_array()) {
     for (const json& n : r.value()["chunkTriangles"]) {
-      if (!n.is_number_unsigned()) return Out::failure(std::string(function) + ": bad chunkTriangles");
+      if (!n.is_number_unsigned())
+        return Out::failure(std::string(function) + ": bad chunkTriangles");
       out.chunkTriangles.push_back(n.get<uint32_t>());
     }
   }
@@ -168,7 +169,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_mesh_stream_begin(const char* request) {
   if (!error.empty()) return replyError("rf_mesh_stream_begin: " + error);
   if (!demoFor(pending)) return replyError("no scene to load a model into");
   const int id = state().nextStream++;
-  state().streams.emplace(id, reflect::web::MeshStream{name, pending, reflect::ObjStreamParser(source)});
+  state().streams.emplace(
+      id, reflect::web::MeshStream{name, pending, reflect::ObjStreamParser(source)});
   return reply({{"stream", id}});
 }
 

@@ -33,7 +33,7 @@ struct PendingScene {
 // An OBJ file being streamed in (rf_mesh_stream_*): the page feeds each piece of the download as
 // it arrives, so the text is never whole in wasm memory.
 struct MeshStream {
-  std::string name;  // the mesh it becomes
+  std::string name;      // the mesh it becomes
   bool pending = false;  // of the scene being loaded (else of the current one)
   ObjStreamParser parser;
 };
