@@ -4,6 +4,7 @@
 //
 //   node tools/web_bench.mjs [--scene NAME] [--frames N] [--size WxH] [--query '&cube=128']
 //   node tools/web_bench.mjs --raw [--frames N] [--warmup N] [--size WxH] [--query '?paused&cube=128']
+//   node tools/web_bench.mjs --heavy [--runs N] [--frames N] [--warmup N] [--against OTHER_SITE]
 //
 // Default: the page's bench mode (?bench): on the scene, for each capture policy (every-frame,
 // when-changed, when-changed + LOD 0.5, + view LOD 0.5, time-sliced 2, every-n 4) it resets the time to 0 and
@@ -15,10 +16,27 @@
 // a warm-up: the page's frameMs / captureMs and the wall time of each call (median, p10, p90);
 // triangles and draw calls per frame.
 //
+// --heavy: the page where the weight is. The heavy figure (tools/make_models.py --heavy: 157k
+// triangles, written to build/heavy if it is not there) stands in for mario through ?assets=.
+// Each run launches a fresh browser per page and measures, for the default scene and for the
+// heavy one:
+//   load to first frame: performance.now() of the first draw call into the canvas (the default
+//     framebuffer), hooked from outside the page's code, so any build of the page is measured
+//     the same way (from navigation start);
+//   frame: N calls of demo.frame(1/60) (animated, the page's default settings) after a warm-up,
+//     once the page's levels of detail are built (demo.lodReady(), awaited where the page has it);
+//   memory: the resident memory (VmRSS, /proc) summed over the browser's renderer processes
+//     (--type=renderer), after a garbage collection (--js-flags=--expose-gc), read from outside
+//     the browser; the heavy page's growth is its total minus the default scene's. The wasm
+//     memories' sizes are read by hooking WebAssembly.instantiate (reflect's, and others such as
+//     npm meshoptimizer's when the page runs it on the main thread).
+// --against DIR: the same for another build of the page (e.g. an older commit's build/web/site),
+// run alternately with this one (A B, then B A, ...), and the two summarised side by side.
+//
 // Either way: serves build/web/site with tools/serve.mjs on a free port, 800x800 viewport.
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import { createServer } from 'node:net';
-import { existsSync } from 'node:fs';
+import { copyFileSync, existsSync, mkdirSync, readFileSync, readdirSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from '@playwright/test';
@@ -27,7 +45,8 @@ const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const site = join(repo, 'build/web/site');
 
 function parseArgs(argv) {
-  const options = { frames: 60, warmup: 10, width: 800, height: 800, query: null, scene: null, raw: false };
+  const options = { frames: 60, warmup: 10, width: 800, height: 800, query: null, scene: null, raw: false,
+                    heavy: false, runs: 3, against: null, site };
   for (let i = 0; i < argv.length; ++i) {
     const arg = argv[i];
     const value = () => {
@@ -39,6 +58,10 @@ function parseArgs(argv) {
     else if (arg === '--query') options.query = value();
     else if (arg === '--scene') options.scene = value();
     else if (arg === '--raw') options.raw = true;
+    else if (arg === '--heavy') options.heavy = true;
+    else if (arg === '--runs') options.runs = Number(value());
+    else if (arg === '--against') options.against = resolve(value());
+    else if (arg === '--site') options.site = resolve(value());
     else if (arg === '--size') {
       const m = /^(\d+)x(\d+)$/.exec(value());
       if (!m) throw new Error('--size wants WIDTHxHEIGHT');
@@ -46,13 +69,17 @@ function parseArgs(argv) {
       options.height = Number(m[2]);
     } else if (arg === '--help' || arg === '-h') {
       console.log('usage: node tools/web_bench.mjs [--scene NAME] [--frames N] [--size WxH] [--query Q]\n' +
-                  '       node tools/web_bench.mjs --raw [--frames N] [--warmup N] [--size WxH] [--query Q]');
+                  '       node tools/web_bench.mjs --raw [--frames N] [--warmup N] [--size WxH] [--query Q]\n' +
+                  '       node tools/web_bench.mjs --heavy [--runs N] [--frames N] [--warmup N] [--size WxH] ' +
+                  '[--site DIR] [--against DIR]');
       process.exit(0);
     } else throw new Error(`unknown argument ${arg}`);
   }
   if (!(Number.isInteger(options.frames) && options.frames > 0)) throw new Error('--frames wants a positive integer');
   if (!(Number.isInteger(options.warmup) && options.warmup >= 0)) throw new Error('--warmup wants an integer >= 0');
   if (options.scene !== null && !/^[\w.-]+$/.test(options.scene)) throw new Error('--scene wants a scene name like ex12-2');
+  if (!(Number.isInteger(options.runs) && options.runs > 0)) throw new Error('--runs wants a positive integer');
+  if (options.heavy) return options;
   if (options.raw) {
     if (options.query === null) options.query = '?paused';
     if (options.scene) options.query += `&scene=${options.scene}`;
@@ -77,8 +104,8 @@ function freePort() {
   });
 }
 
-async function startServer(port) {
-  const child = spawn(process.execPath, [join(repo, 'tools/serve.mjs'), site, String(port)], {
+async function startServer(port, root = site) {
+  const child = spawn(process.execPath, [join(repo, 'tools/serve.mjs'), root, String(port)], {
     stdio: ['ignore', 'ignore', 'inherit'],
   });
   const url = `http://127.0.0.1:${port}/`;
@@ -111,6 +138,7 @@ function distinct(values) {
 
 async function main() {
   const options = parseArgs(process.argv.slice(2));
+  if (options.heavy) return heavyBench(options);
   if (!existsSync(join(site, 'index.html'))) {
     throw new Error(`${site} has no index.html: build the web preset first (cmake --build --preset web)`);
   }
@@ -214,6 +242,210 @@ async function main() {
   } finally {
     if (browser) await browser.close();
     child.kill();
+  }
+}
+
+// --- --heavy ---------------------------------------------------------------------------------
+
+// Runs before any script of the page: the time of the first draw into the canvas, and every wasm
+// instance's memory (reflect's and any other the page runs, e.g. npm meshoptimizer's).
+const PAGE_HOOKS = () => {
+  window.__firstFrameMs = null;
+  const proto = WebGL2RenderingContext.prototype;
+  const drawElements = proto.drawElements;
+  proto.drawElements = function (...args) {
+    if (window.__firstFrameMs === null && this.getParameter(this.DRAW_FRAMEBUFFER_BINDING) === null) {
+      window.__firstFrameMs = performance.now();
+      proto.drawElements = drawElements;
+    }
+    return drawElements.apply(this, args);
+  };
+  window.__wasmInstances = [];
+  const keep = (result) => {
+    const instance = result.instance || result;
+    if (instance && instance.exports) window.__wasmInstances.push(instance);
+    return result;
+  };
+  const instantiate = WebAssembly.instantiate;
+  WebAssembly.instantiate = function (...args) { return instantiate.apply(this, args).then(keep); };
+  const streaming = WebAssembly.instantiateStreaming;
+  if (streaming) {
+    WebAssembly.instantiateStreaming = function (...args) { return streaming.apply(this, args).then(keep); };
+  }
+};
+
+// Resident memory (VmRSS) summed over the renderer processes among `pid`'s descendants.
+function rendererMemory(pid) {
+  const parents = new Map();
+  for (const entry of readdirSync('/proc')) {
+    if (!/^\d+$/.test(entry)) continue;
+    try {
+      const stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
+      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+      parents.set(Number(entry), Number(fields[1]));
+    } catch { /* gone */ }
+  }
+  const descends = (p) => {
+    for (let q = p, depth = 0; q && depth < 64; q = parents.get(q), ++depth) if (q === pid) return true;
+    return false;
+  };
+  let kb = 0, count = 0;
+  for (const p of parents.keys()) {
+    if (!descends(p)) continue;
+    try {
+      if (!readFileSync(`/proc/${p}/cmdline`, 'utf8').includes('--type=renderer')) continue;
+      const rss = /VmRSS:\s+(\d+) kB/.exec(readFileSync(`/proc/${p}/status`, 'utf8'));
+      if (rss) { kb += Number(rss[1]); ++count; }
+    } catch { /* gone */ }
+  }
+  return { mb: kb / 1024, processes: count };
+}
+
+// The heavy figure in DIR/heavy-bench/ with the other built-in models beside it (as a folder of
+// the course's models would be), made once.
+function heavyAssets(root) {
+  const heavy = join(repo, 'build/heavy/mario.obj');
+  if (!existsSync(heavy)) {
+    const made = spawnSync('python3', [join(repo, 'tools/make_models.py'), '--heavy'], { stdio: 'inherit' });
+    if (made.status !== 0) throw new Error('tools/make_models.py --heavy failed');
+  }
+  const dir = join(root, 'heavy-bench');
+  mkdirSync(dir, { recursive: true });
+  copyFileSync(heavy, join(dir, 'mario.obj'));
+  for (const name of ['sonic.obj', 'sphere.obj', 'quad.obj']) copyFileSync(join(repo, 'assets/models', name), join(dir, name));
+  return 'heavy-bench/';
+}
+
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+
+// One page in a fresh browser: load to first frame, frames, memory.
+async function measurePage(url, options) {
+  // A server, so the browser's process id is known (its renderers are among its descendants).
+  const server = await chromium.launchServer({
+    executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
+    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
+           '--disable-sync', '--no-first-run', '--disable-default-apps', '--js-flags=--expose-gc'],
+  });
+  const browser = await chromium.connect(server.wsEndpoint());
+  try {
+    const page = await browser.newPage({ viewport: { width: options.width, height: options.height } });
+    const problems = [];
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
+    await page.addInitScript(PAGE_HOOKS);
+    await page.goto(url);
+    await page.waitForFunction(() => window.demo !== undefined);
+    const readyMs = await page.evaluate(() => window.demo.ready.then(() => performance.now()));
+    const lodMs = await page.evaluate(async () => {
+      if (window.demo.lodReady) await window.demo.lodReady();
+      return performance.now();
+    });
+    const firstFrameMs = await page.evaluate(() => window.__firstFrameMs);
+    const frames = await page.evaluate(({ warmup, count }) => {
+      for (let i = 0; i < warmup; ++i) window.demo.frame(1 / 60);
+      const out = [];
+      for (let i = 0; i < count; ++i) {
+        const start = performance.now();
+        const s = window.demo.frame(1 / 60);
+        out.push({ wallMs: performance.now() - start, frameMs: s.frameMs, triangles: s.triangles,
+                   captureTriangles: s.captureTriangles, mainTriangles: s.mainTriangles });
+      }
+      return out;
+    }, { warmup: options.warmup, count: options.frames });
+    for (let i = 0; i < 2; ++i) {
+      await page.evaluate(() => window.gc && window.gc());
+      await sleep(500);
+    }
+    const memory = rendererMemory(server.process().pid);
+    const wasm = await page.evaluate(() => window.__wasmInstances.map((instance) => {
+      const memories = Object.values(instance.exports).filter((e) => e instanceof WebAssembly.Memory);
+      // Emscripten minifies reflect's export names; npm meshoptimizer's keep theirs.
+      const meshopt = Object.keys(instance.exports).some((name) => name.startsWith('meshopt_'));
+      return { reflect: !meshopt, bytes: memories.reduce((a, m) => a + m.buffer.byteLength, 0) };
+    }));
+    const stats = await page.evaluate(() => window.demo.stats());
+    return {
+      firstFrameMs, readyMs, lodMs, frames, memory, problems, stats,
+      reflectHeap: wasm.filter((w) => w.reflect).reduce((a, w) => a + w.bytes, 0),
+      otherWasm: wasm.filter((w) => !w.reflect).reduce((a, w) => a + w.bytes, 0),
+    };
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+}
+
+async function heavyBench(options) {
+  const sites = [{ name: 'this build', root: options.site }];
+  if (options.against) sites.push({ name: 'against', root: options.against });
+  for (const s of sites) {
+    if (!existsSync(join(s.root, 'index.html'))) throw new Error(`${s.root} has no index.html: build the web preset first`);
+    s.prefix = heavyAssets(s.root);
+    s.port = await freePort();
+    s.server = await startServer(s.port, s.root);
+    s.samples = [];
+  }
+  const mb = (bytes) => (bytes / (1024 * 1024)).toFixed(1);
+  try {
+    console.log(`heavy bench: ${options.runs} run(s), ${options.width}x${options.height}, ` +
+                `${options.frames} frames after ${options.warmup} warm-up; sites: ` +
+                sites.map((s) => `${s.name} = ${s.root}`).join(', '));
+    for (let run = 0; run < options.runs; ++run) {
+      const order = run % 2 === 0 ? sites : [...sites].reverse();
+      for (const s of order) {
+        const base = s.server.url;
+        const light = await measurePage(base, options);
+        const heavy = await measurePage(`${base}?assets=${s.prefix}`, options);
+        const sample = { light, heavy };
+        s.samples.push(sample);
+        const median = (r) => summary(r.frames.map((f) => f.wallMs)).median;
+        console.log(`run ${run + 1} ${s.name}: first frame ${light.firstFrameMs?.toFixed(0)} / ` +
+                    `${heavy.firstFrameMs?.toFixed(0)} ms (default / heavy), levels ready ` +
+                    `${heavy.lodMs.toFixed(0)} ms; frame ${median(light).toFixed(1)} / ${median(heavy).toFixed(1)} ms; ` +
+                    `renderer RSS ${light.memory.mb.toFixed(0)} / ${heavy.memory.mb.toFixed(0)} MB ` +
+                    `(+${(heavy.memory.mb - light.memory.mb).toFixed(0)}); reflect wasm memory ` +
+                    `${mb(light.reflectHeap)} / ${mb(heavy.reflectHeap)} MB; other wasm ${mb(heavy.otherWasm)} MB` +
+                    (heavy.stats.meshBytes !== undefined ? `; meshes as drawn ${mb(heavy.stats.meshBytes)} MB` : ''));
+        for (const p of [...light.problems, ...heavy.problems]) console.log(`  note: ${p}`);
+      }
+    }
+    const med = (values) => summary(values).median;
+    console.log('');
+    console.log('medians over the runs (heavy figure through ?assets=, against the default scene):');
+    const rows = [
+      ['load to first frame, default scene (ms)', (x) => x.light.firstFrameMs],
+      ['load to first frame, heavy (ms)', (x) => x.heavy.firstFrameMs],
+      ['levels of detail ready, heavy (ms)', (x) => x.heavy.lodMs],
+      ['frame, default scene (ms, wall)', (x) => med(x.light.frames.map((f) => f.wallMs))],
+      ['frame, heavy (ms, wall)', (x) => med(x.heavy.frames.map((f) => f.wallMs))],
+      ['frame, heavy (ms, page frameMs)', (x) => med(x.heavy.frames.map((f) => f.frameMs))],
+      ['triangles a frame, heavy', (x) => med(x.heavy.frames.map((f) => f.triangles))],
+      ['capture triangles a frame, heavy', (x) => med(x.heavy.frames.map((f) => f.captureTriangles))],
+      ['renderer RSS, default scene (MB)', (x) => x.light.memory.mb],
+      ['renderer RSS, heavy (MB)', (x) => x.heavy.memory.mb],
+      ['renderer RSS growth, heavy over default (MB)', (x) => x.heavy.memory.mb - x.light.memory.mb],
+      ['reflect wasm memory, default scene (MB)', (x) => x.light.reflectHeap / 1048576],
+      ['reflect wasm memory, heavy (MB)', (x) => x.heavy.reflectHeap / 1048576],
+      ['other wasm memory, heavy (MB)', (x) => x.heavy.otherWasm / 1048576],
+      ['meshes as drawn, heavy (MB; demo.stats().meshBytes)', (x) => (x.heavy.stats.meshBytes ?? NaN) / 1048576],
+    ];
+    const width = Math.max(...rows.map(([label]) => label.length)) + 2;
+    console.log(''.padEnd(width) + sites.map((s) => s.name.padStart(14)).join(''));
+    for (const [label, get] of rows) {
+      console.log(label.padEnd(width) + sites.map((s) => {
+        const v = med(s.samples.map(get).filter((x) => x !== null && x !== undefined && !Number.isNaN(x)));
+        return (Number.isFinite(v) ? (Math.abs(v) >= 1000 ? v.toFixed(0) : v.toFixed(1)) : 'n/a').padStart(14);
+      }).join(''));
+    }
+    if (sites.length === 2) {
+      console.log('');
+      for (const [label, get] of rows.slice(0, 11)) {
+        const a = med(sites[0].samples.map(get)), b = med(sites[1].samples.map(get));
+        if (Number.isFinite(a) && Number.isFinite(b) && b !== 0) console.log(`${label}: ${(a / b).toFixed(2)}x`);
+      }
+    }
+  } finally {
+    for (const s of sites) s.server.child.kill();
   }
 }
 

@@ -34,6 +34,7 @@ export async function applyLink(session, link) {
     if (error) showMessage(`mat=${entry}: ${error}; ignored`);
   }
   each(link.planner, (c) => bridge.setPlanner(c));
+  session.startLevels();  // levels the link's LOD settings want
   each(link.view, (c) => bridge.setView(c));
   if (link.cam) bridge.setCamera({ eye: link.cam.slice(0, 3), yaw: link.cam[3], pitch: link.cam[4] });
   if (link.t !== null) bridge.setTime(link.t);

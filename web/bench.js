@@ -37,7 +37,8 @@ function compare(a, b) {
 }
 
 // demo: { frame(dt) -> stats (waits for the GPU), setTime, setPlanner(settings) -> "" or the error,
-// readPixels() -> { width, height, data }, scene() }.
+// levels() -> a promise of the levels the settings need, readPixels() -> { width, height, data },
+// scene() }.
 // Returns { scene, frames, width, height, rows: [...], table }.
 export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}) {
   const memoryLimit = 512 * 1024 * 1024;  // reference frames kept for the comparison
@@ -50,6 +51,7 @@ export async function runBench(demo, { frames = 60, onProgress = () => {} } = {}
     await new Promise((r) => setTimeout(r, 0));  // let the progress line show
     const error = demo.setPlanner(config.settings);
     if (error) throw new Error(`bench: ${config.label}: ${error}`);
+    await demo.levels?.();  // a LOD row starts with its levels built
     demo.setTime(0);
     const frameMs = [], faces = [], draws = [], triangles = [], captureTriangles = [];
     let maxDiff = 0, differingFrames = 0, compared = 0, gpuTiming = false;
@@ -123,7 +125,7 @@ export function formatTable({ scene, frames, width, height, compareEvery, rows }
 // restored afterwards, and the table shown. Resolves to the results.
 export function benchPage(session, { frames = 60, readPixels, hold }) {
   return session.serial(async () => {
-    await session.lodReady;
+    await session.lodReady();
     const { bridge } = session;
     const saved = { planner: bridge.planner(), time: bridge.time() };
     const status = document.getElementById('progress');
@@ -133,6 +135,7 @@ export function benchPage(session, { frames = 60, readPixels, hold }) {
         frame: (dt) => session.frame(dt, true),
         setTime: (t) => bridge.setTime(t),
         setPlanner: (settings) => bridge.setPlanner(settings),
+        levels: () => { session.startLevels(); return session.lodReady(); },
         readPixels,
         scene: () => bridge.scene(),
       }, { frames, onProgress: (text) => { status.hidden = false; status.textContent = text; } });

@@ -4,7 +4,7 @@
 // them. File names go through as they are (any length, any characters).
 import { figureObject, freeAngle, takenAngles } from './figures.js';
 import { showMessage } from './messages.js';
-import { MAX_MODEL_BYTES, readFileBytes, tooLargeMessage } from './scene_loader.js';
+import { MAX_MODEL_BYTES, tooLargeMessage } from './scene_loader.js';
 
 // Every file in a FileSystemDirectoryEntry, recursively, as { file, path }.
 async function readDirectory(entry) {
@@ -71,28 +71,19 @@ export function sortFiles(files, meshNames) {
   return { replace, extra, ignored };
 }
 
-// Reads a dropped or picked file (size limit, progress). Resolves to its bytes or null (the
-// problem shown).
-async function readUserFile(f, progress) {
-  if (f.file.size > MAX_MODEL_BYTES) {
-    showMessage(tooLargeMessage(f.path, f.file.size));
-    return null;
-  }
-  try {
-    return await readFileBytes(f.file, progress?.track(f.path));
-  } catch (e) {
-    showMessage(`${f.path}: could not be read (${e.message})`);
-    return null;
-  } finally {
-    progress?.clear();
-  }
+// Whether a dropped or picked file may be read (the size limit, checked before any byte is read).
+function readable(f) {
+  if (f.file.size <= MAX_MODEL_BYTES) return true;
+  showMessage(tooLargeMessage(f.path, f.file.size));
+  return false;
 }
 
 // The message for a model that could not be used (the C++ message names the file when it can).
 const failed = (f, error, outcome) => `${error.includes(f.path) ? error : `${f.path}: ${error}`}\n(${outcome})`;
 
 // The user's .obj files: those named like a model of the scene replace it; the others are added
-// as orbiting figures. Resolves to { replaced, added, extra, ignored } (mesh names and paths).
+// as orbiting figures. Each is parsed as it is read (scene_loader.js readFileMesh), with progress.
+// Resolves to { replaced, added, extra, ignored } (mesh names and paths).
 export function handleFiles(session, files) {
   return session.serial(async () => {
     const { bridge, progress } = session;
@@ -100,36 +91,41 @@ export function handleFiles(session, files) {
     const list = (fs) => fs.map((f) => f.path).join(', ');
     if (ignored.length) showMessage(`${list(ignored)}: not .obj files; ignored`, 'info', 8000);
     const replaced = [], added = [];
-    const replaceWith = (f, mesh, bytes) => {
-      const error = session.replaceModel(f, mesh, bytes);
+    const tracked = async (f, read) => {
+      try {
+        return await read(progress?.track(f.path));
+      } finally {
+        progress?.clear();
+      }
+    };
+    const replaceWith = async (f, mesh) => {
+      const error = await tracked(f, (onProgress) => session.replaceModel(f, mesh, onProgress));
       if (error) showMessage(failed(f, error, `keeping the ${mesh} it had`));
       else replaced.push({ ...f, mesh });
     };
     for (const f of replace) {
-      const bytes = await readUserFile(f, progress);
-      if (bytes) replaceWith(f, f.mesh, bytes);
+      if (readable(f)) await replaceWith(f, f.mesh);
     }
     const objects = () => bridge.objects();
     for (const f of extra) {
-      const bytes = await readUserFile(f, progress);
-      if (!bytes) continue;
+      if (!readable(f)) continue;
       const base = f.path.split('/').pop();
       // A second file of the same name (another folder) replaces the figure added before.
       const known = (bridge.scene().meshes || []).find((m) => m.toLowerCase() === base.toLowerCase());
       if (known) {
-        replaceWith(f, known, bytes);
+        await replaceWith(f, known);
         continue;
       }
       const place = (bounds, figures) =>
         figureObject(base, bounds, freeAngle(takenAngles(objects())), figures.length);
-      const error = session.addFigure(f, base, bytes, place);
+      const error = await tracked(f, (onProgress) => session.addFigure(f, base, place, onProgress));
       if (error) showMessage(failed(f, error, 'not added'));
       else added.push({ ...f, mesh: base });
     }
     if (replaced.length || added.length) {
       showMessage([...replaced.map((f) => `${f.mesh} replaced by ${f.path}`),
                    ...added.map((f) => `added ${f.path} as an orbiting figure`)].join('\n'), 'info', 5000);
-      await session.modelsChanged([...replaced, ...added].map((f) => f.mesh));
+      session.modelsChanged();  // their chunks and levels are built in the background
     }
     return { replaced: replaced.map((f) => f.mesh), added: added.map((f) => f.mesh),
              extra: added.map((f) => f.path), ignored: ignored.map((f) => f.path) };

@@ -1,20 +1,17 @@
-// Capture levels of detail, built in the browser: the wasm build has no meshoptimizer, so after
-// each scene commit (and each model replacement) the page simplifies every mesh with npm
-// meshoptimizer's MeshoptSimplifier and hands each level to the renderer (bridge.addLod) as indices
-// into the mesh's level-0 vertices. Same rules as the native build (src/core/mesh_lod.cpp):
-// level k from level k-1 with target = indexCount * triangleRatio (a multiple of 3), stop below
-// minTriangles or when the result is not below 3/4 of its input.
-
-let simplifierPromise = null;
-function simplifier() {
-  if (!simplifierPromise) {
-    simplifierPromise = import('./vendor/meshopt_simplifier.js').then(async ({ MeshoptSimplifier }) => {
-      await MeshoptSimplifier.ready;
-      return MeshoptSimplifier;
-    });
-  }
-  return simplifierPromise;
-}
+// Chunks and levels of detail, built off the main thread. The wasm build has no meshoptimizer, and
+// chunking a 150k-triangle figure in wasm would hold the page for tens of milliseconds, so after
+// the first frame the page asks the C++ side what is left to build (bridge.levelJobs(): a mesh's
+// chunks, and its coarser levels while a LOD setting is on), and a Web Worker (lod_worker.js)
+// builds it with npm meshoptimizer's MeshoptSimplifier. The results come back to the main thread
+// one piece a task (level 0 in chunk order, then each coarser level, then "done"), so frames,
+// input, scene switches and dropped files go on in between.
+//
+// The rules are the native build's (src/core/mesh_lod.cpp, src/core/mesh_chunks.cpp): level k
+// from level k-1 with target = indexCount * triangleRatio (a multiple of 3), stop below
+// minTriangles or when the result is not below 3/4 of its input; chunks by recursive median splits
+// of triangle centres along the longest axis, at most chunkTriangles each.
+//
+// This module is loaded by the page and by the worker: it imports nothing of the page.
 
 // The index arrays of levels 1.. for one mesh (pure: no wasm of ours involved).
 export function simplifyLevels(MeshoptSimplifier, positions, indices, settings, vertexFloats = 6) {
@@ -32,34 +29,203 @@ export function simplifyLevels(MeshoptSimplifier, positions, indices, settings, 
   return levels;
 }
 
-// Builds the levels of `names` (default: every mesh of the current scene) through the bridge
-// (wasm_bridge.js). Returns { name: [triangles of level 0, level 1, ...] } for the meshes it
-// handled.
-export async function buildLods(bridge, names = null) {
-  let MeshoptSimplifier;
-  try {
-    MeshoptSimplifier = await simplifier();
-  } catch (e) {
-    console.warn(`capture LOD: the simplifier could not be loaded (${e.message}); no levels built`);
-    return {};
-  }
-  const settings = bridge.lodSettings();
-  const built = {};
-  for (const name of names || bridge.scene().meshes || []) {
-    const base = bridge.meshLevelZero(name);
-    if (!base) continue;
-    const triangles = [base.indices.length / 3];
-    for (const indices of simplifyLevels(MeshoptSimplifier, base.positions, base.indices, settings, base.vertexFloats)) {
-      const error = bridge.addLod(name, indices);
-      if (error) {
-        console.warn(`capture LOD of ${name}: ${error}`);
-        break;
+// Rearranges order[begin..end) so that order[middle] has the key it would have sorted, smaller
+// keys before it and larger after (std::nth_element).
+function nthElement(order, keys, begin, end, middle) {
+  let lo = begin, hi = end - 1;
+  while (hi > lo) {
+    // Median of three as the pivot.
+    const a = keys[order[lo]], b = keys[order[(lo + hi) >> 1]], c = keys[order[hi]];
+    const pivot = a < b ? (b < c ? b : (a < c ? c : a)) : (a < c ? a : (b < c ? c : b));
+    let i = lo, j = hi;
+    while (i <= j) {
+      while (keys[order[i]] < pivot) ++i;
+      while (keys[order[j]] > pivot) --j;
+      if (i <= j) {
+        const t = order[i];
+        order[i] = order[j];
+        order[j] = t;
+        ++i;
+        --j;
       }
-      triangles.push(indices.length / 3);
     }
-    built[name] = triangles;
+    if (middle <= j) hi = j;
+    else if (middle >= i) lo = i;
+    else return;
   }
-  const summary = Object.entries(built).map(([n, t]) => `${n} ${t.join(' > ')}`).join(', ');
-  console.info(`capture LOD levels (triangles): ${summary || 'none'}`);
-  return built;
+}
+
+// `indices` (triangles over `positions`, `stride` floats a vertex) reordered into chunks of at
+// most `maxTriangles` nearby triangles: { indices: Uint32Array, counts: [triangles a chunk] }.
+export function chunkOrder(positions, stride, indices, maxTriangles) {
+  const triangles = indices.length / 3;
+  const centres = [new Float32Array(triangles), new Float32Array(triangles), new Float32Array(triangles)];
+  for (let t = 0; t < triangles; ++t) {
+    for (let axis = 0; axis < 3; ++axis) {
+      centres[axis][t] = (positions[indices[t * 3] * stride + axis] + positions[indices[t * 3 + 1] * stride + axis] +
+                          positions[indices[t * 3 + 2] * stride + axis]) / 3;
+    }
+  }
+  const order = new Uint32Array(triangles);
+  for (let t = 0; t < triangles; ++t) order[t] = t;
+  const counts = [];
+  const split = (begin, end) => {
+    if (end - begin <= maxTriangles) {
+      if (end > begin) counts.push(end - begin);
+      return;
+    }
+    const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
+    for (let i = begin; i < end; ++i) {
+      for (let axis = 0; axis < 3; ++axis) {
+        const v = centres[axis][order[i]];
+        if (v < min[axis]) min[axis] = v;
+        if (v > max[axis]) max[axis] = v;
+      }
+    }
+    const extent = [max[0] - min[0], max[1] - min[1], max[2] - min[2]];
+    const axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : (extent[1] >= extent[2] ? 1 : 2);
+    const middle = begin + Math.floor((end - begin) / 2);
+    nthElement(order, centres[axis], begin, end, middle);
+    split(begin, middle);
+    split(middle, end);
+  };
+  split(0, triangles);
+  const reordered = new Uint32Array(indices.length);
+  for (let t = 0; t < triangles; ++t) {
+    const from = order[t] * 3;
+    reordered[t * 3] = indices[from];
+    reordered[t * 3 + 1] = indices[from + 1];
+    reordered[t * 3 + 2] = indices[from + 2];
+  }
+  return { indices: reordered, counts };
+}
+
+// What the worker does with one job (lod_worker.js calls it): { chunks: { indices, counts } or
+// null, levels: [{ indices, counts }] or null }.
+export function buildJob(MeshoptSimplifier, { positions, vertexFloats, indices, chunks, coarser, settings }) {
+  const levels = coarser
+    ? simplifyLevels(MeshoptSimplifier, positions, indices, settings, vertexFloats)
+      .map((level) => chunkOrder(positions, vertexFloats, level, settings.chunkTriangles))
+    : null;
+  return { chunks: chunks ? chunkOrder(positions, vertexFloats, indices, settings.chunkTriangles) : null, levels };
+}
+
+const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
+
+// Builds what the C++ side asks for, one build at a time; a new scene cancels the one under way.
+export class LevelBuilder {
+  constructor(bridge) {
+    this.bridge = bridge;
+    this.generation = 0;
+    this.worker = null;
+    this.running = null;  // the build under way (a promise), or null
+    this.longestHandOffMs = 0;  // the longest main-thread task that handed a piece in
+    this.events = [];  // 'start', 'done' with times (performance.now()), for tests and tools
+  }
+
+  // Stops the build under way (its results are dropped) and ends its worker.
+  cancel() {
+    ++this.generation;
+    this.worker?.terminate();
+    this.worker = null;
+    this.running = null;
+  }
+
+  // Starts a build of what is left (if none is under way) and resolves when it is done, with
+  // { name: [triangles of level 0, 1, ...] } for the meshes it gave levels to (null if cancelled).
+  build() {
+    if (!this.running) {
+      const generation = this.generation;
+      this.running = this.run(generation).finally(() => {
+        if (generation === this.generation) this.running = null;
+      });
+    }
+    return this.running;
+  }
+
+  async run(generation) {
+    const { bridge } = this;
+    const jobs = bridge.levelJobs();
+    if (!jobs.length) return {};
+    this.events.push({ event: 'start', at: performance.now(), jobs: jobs.length });
+    const settings = bridge.lodSettings();
+    let worker = null;
+    try {
+      worker = new Worker(new URL('./lod_worker.js', import.meta.url), { type: 'module' });
+      this.worker = worker;
+    } catch (e) {
+      console.warn(`levels of detail: no worker (${e.message}); meshes stay whole`);
+    }
+    // Every job goes to the worker at once; it works through them while the page draws, and each
+    // answer comes back as a task of its own.
+    const answers = new Map();
+    if (worker) {
+      worker.onmessage = ({ data }) => answers.get(data.id)?.resolve(data);
+      worker.onerror = (e) => {
+        for (const a of answers.values()) a.resolve({ error: e.message || 'the worker failed' });
+      };
+    }
+    const work = jobs.map((job, id) => {
+      const base = bridge.meshLevelZero(job.name);
+      if (!base) return null;
+      const triangles = base.indices.length / 3;
+      if (!worker) return { job, triangles, answer: Promise.resolve({ error: 'no worker' }) };
+      const answer = new Promise((resolve) => answers.set(id, { resolve }));
+      worker.postMessage({ id, positions: base.positions, vertexFloats: base.vertexFloats, indices: base.indices,
+                           chunks: job.chunks, coarser: job.coarser, settings },
+                         [base.positions.buffer, base.indices.buffer]);
+      return { job, triangles, answer };
+    });
+    // Each piece handed in is a short main-thread task; after a long one the page gets a turn.
+    let since = performance.now();
+    const handOff = async (call) => {
+      const start = performance.now();
+      const error = call();
+      const end = performance.now();
+      this.longestHandOffMs = Math.max(this.longestHandOffMs, end - start);
+      if (end - since > 8) {
+        await nextTask();
+        since = performance.now();
+      }
+      return error;
+    };
+    const built = {};
+    for (const item of work) {
+      if (!item) continue;
+      const result = await item.answer;
+      since = performance.now();  // a new task
+      if (generation !== this.generation) return null;
+      const { job, triangles } = item;
+      const { name, revision } = job;
+      if (result.error) console.warn(`levels of detail of ${name}: ${result.error}; drawn whole`);
+      if (job.chunks) {
+        // Without a result, the mesh is one chunk: culled whole, as before it had chunks.
+        const chunks = result.chunks ||
+          { indices: bridge.meshLevelZero(name)?.indices || new Uint32Array(0), counts: [triangles] };
+        const error = await handOff(() => bridge.setMeshChunks({ name, revision, indices: chunks.indices, chunkTriangles: chunks.counts }));
+        if (error) console.warn(`chunks of ${name}: ${error}`);
+      }
+      if (job.coarser) {
+        const levelTriangles = [triangles];
+        for (const level of result.levels || []) {
+          if (generation !== this.generation) return null;
+          const error = await handOff(() => bridge.addLod({ name, revision, indices: level.indices, chunkTriangles: level.counts }));
+          if (error) {
+            console.warn(`capture LOD of ${name}: ${error}`);
+            break;
+          }
+          levelTriangles.push(level.indices.length / 3);
+        }
+        if (generation !== this.generation) return null;
+        bridge.finishLevels({ name, revision });
+        built[name] = levelTriangles;
+      }
+    }
+    worker?.terminate();  // its memory (meshoptimizer's heap included) goes with it
+    if (this.worker === worker) this.worker = null;
+    this.events.push({ event: 'done', at: performance.now() });
+    const summary = Object.entries(built).map(([n, t]) => `${n} ${t.join(' > ')}`).join(', ');
+    if (Object.keys(built).length) console.info(`capture LOD levels (triangles): ${summary}`);
+    return built;
+  }
 }

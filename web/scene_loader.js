@@ -1,13 +1,16 @@
-// Loads a scene into the wasm module in stages: the JSON, then every model it names (the
-// project's own from models/, then with ?assets=PREFIX the user's files by the same names, then
-// models the user dropped on the page), then its skybox images, then commit. Until commit
-// succeeds the scene on screen stays, so a bad file never costs the user what they had. A user's
-// model that is missing or broken is reported and the built-in one is kept.
+// Loads a scene into the wasm module in stages: the JSON, then every model it names (a model the
+// user dropped on the page, else with ?assets=PREFIX the user's file by the same name, else the
+// project's own from models/: the first that loads; one that is missing or broken is reported and
+// the next one taken), then its skybox images, then commit. Until commit succeeds the scene on
+// screen stays, so a bad file never costs the user what they had.
+//
+// Models are parsed as they stream in: each piece of a download (or of a dropped file) goes to the
+// C++ parser as it arrives (bridge.streamMesh), so the text is never whole in memory, on either
+// side of the bridge.
 import { showMessage } from './messages.js';
 import { DEFAULT_SCENE } from './url_state.js';
 
-// Models larger than this are refused before they are read (the wasm heap holds the text, the
-// parsed mesh and its levels of detail at once).
+// Models larger than this are refused before they are read (or as soon as more arrives).
 export const MAX_MODEL_BYTES = 64 * 1024 * 1024;
 
 export const megabytes = (bytes) => (bytes / (1024 * 1024)).toFixed(1);
@@ -67,15 +70,70 @@ export function readFileBytes(file, onProgress = null) {
   return readStream(file.stream(), file.size, onProgress, 0, file.name);
 }
 
+// Streams `stream` (total bytes, 0 if unknown) into mesh `target.name` (target: { name, source,
+// pending, warn }: bridge.streamMesh's), piece by piece as it arrives. Resolves to "" or the parser's error (the mesh it had
+// stays); rejects when the stream fails or passes `limit`.
+async function streamInto(bridge, target, stream, total, { onProgress = null, limit = 0 } = {}) {
+  const parser = bridge.streamMesh(target);
+  if (parser.error) return parser.error;
+  const reader = stream.getReader();
+  let loaded = 0;
+  onProgress?.(0, total);
+  try {
+    for (;;) {
+      const { done, value } = await reader.read();
+      if (done) break;
+      loaded += value.length;
+      if (limit && loaded > limit) throw new Error(tooLargeMessage(target.source, loaded));
+      const error = parser.feed(value);
+      if (error) {  // the file is broken: no need to read the rest
+        reader.cancel().catch(() => {});
+        return error;
+      }
+      onProgress?.(loaded, total);
+    }
+  } catch (e) {
+    parser.cancel();
+    reader.cancel().catch(() => {});
+    throw e;
+  }
+  return parser.end();
+}
+
+// Fetches the model at `url` into mesh `target.name`, parsing it as it arrives. Resolves to "" or
+// the parser's error; rejects with a message when it cannot be fetched or is too large.
+export async function fetchMesh(bridge, target, url, { onProgress = null, limit = 0 } = {}) {
+  let response;
+  try {
+    response = await fetch(url);
+  } catch (e) {
+    throw new Error(`${url}: could not be fetched (${e.message})`);
+  }
+  if (!response.ok) throw new Error(`${url}: HTTP ${response.status} ${response.statusText}`.trim());
+  const total = Number(response.headers.get('Content-Length')) || 0;
+  if (limit && total > limit) {
+    response.body?.cancel();
+    throw new Error(tooLargeMessage(url, total));
+  }
+  const body = response.body || new Blob([await response.arrayBuffer()]).stream();
+  return streamInto(bridge, target, body, total, { onProgress, limit });
+}
+
+// A dropped or picked File (or any Blob) into mesh `target.name`, parsed as it is read.
+export function readFileMesh(bridge, target, file, onProgress = null) {
+  return streamInto(bridge, target, file.stream(), file.size, { onProgress });
+}
+
 export function sceneUrl(nameOrUrl) {
   return /[/:]|\.json$/.test(nameOrUrl) ? nameOrUrl : `scenes/${nameOrUrl}.json`;
 }
 
 // Loads a scene through the bridge (wasm_bridge.js). `overrides` maps a model file name to
-// { bytes, source } the user supplied (dropped files); `progress` is a Progress (or null) that
-// shows the bytes still coming. Returns the scene's title. Throws an Error with the message to
-// show when the scene cannot be loaded. `beforeCommit` runs right before the new scene replaces
-// the old one (to carry over what the user did to the old one while the new one was loading).
+// { file, source } the user supplied (dropped files, kept as File objects); `progress` is a
+// Progress (or null) that shows the bytes still coming. Returns the scene's title. Throws an Error
+// with the message to show when the scene cannot be loaded. `beforeCommit` runs right before the
+// new scene replaces the old one (to carry over what the user did to the old one while the new one
+// was loading).
 // `warn(text)` gets each model's loader warnings (models that loaded with something let pass).
 export async function loadScene(bridge, url, {
   userPrefix = null, cubeSize = 0, overrides = null, progress = null, beforeCommit = null, warn = null,
@@ -84,27 +142,31 @@ export async function loadScene(bridge, url, {
   const beginError = bridge.beginScene({ source: url, bytes: await fetchBytes(url) });
   if (beginError) throw new Error(beginError);
   const files = bridge.pendingFiles();
-  const load = (name, source, bytes) => bridge.loadMesh({ name, source, bytes, pending: true, warn });
 
   try {
     await Promise.all(files.meshes.map(async (name) => {
       const builtIn = `models/${name}`;
-      const error = load(name, builtIn, await fetchBytes(builtIn, { onProgress: track(builtIn), limit: MAX_MODEL_BYTES }));
-      if (error) throw new Error(error);
-      if (userPrefix) {
-        const url2 = userPrefix + name;
-        try {
-          const userError = load(name, url2, await fetchBytes(url2, { onProgress: track(url2), limit: MAX_MODEL_BYTES }));
-          if (userError) showMessage(`${userError}\n(keeping the built-in ${name})`);
-        } catch (e) {
-          showMessage(`${e.message}\n(keeping the built-in ${name})`);
-        }
-      }
+      // The user's model if there is one that loads; each that does not is named, and the next
+      // in line taken (the built-in model last).
       const own = overrides?.get(name);
+      const user = userPrefix ? userPrefix + name : null;
+      const fallback = (next) => (next === builtIn ? `(keeping the built-in ${name})` : `(using ${next} instead)`);
       if (own) {
-        const ownError = load(name, own.source, own.bytes);
-        if (ownError) showMessage(`${ownError}\n(keeping the built-in ${name})`);
+        const error = await readFileMesh(bridge, { name, source: own.source, pending: true, warn }, own.file, track(own.source))
+          .catch((e) => e.message);
+        if (!error) return;
+        showMessage(`${error}\n${fallback(user || builtIn)}`);
       }
+      if (user) {
+        const error = await fetchMesh(bridge, { name, source: user, pending: true, warn }, user,
+                                      { onProgress: track(user), limit: MAX_MODEL_BYTES })
+          .catch((e) => e.message);
+        if (!error) return;
+        showMessage(`${error}\n${fallback(builtIn)}`);
+      }
+      const error = await fetchMesh(bridge, { name, source: builtIn, pending: true, warn }, builtIn,
+                                    { onProgress: track(builtIn), limit: MAX_MODEL_BYTES });
+      if (error) throw new Error(error);
     }));
 
     await Promise.all(files.skybox.map(async (path, index) => {

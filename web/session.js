@@ -2,11 +2,13 @@
 // the planner, accuracy and material settings, the added figures and replaced models, the
 // camera, time and pause. Every change goes through here, to the C++ side through the bridge,
 // and tells the listeners (the panel, the address bar) what changed. Scene loads, model changes
-// and the bench run one at a time in a job queue; idle() resolves when it is empty.
+// and the bench run one at a time in a job queue; idle() resolves when it is empty and the levels
+// of detail are built. Levels are built after each first frame, off the main thread (lod.js), and
+// never hold a job: a scene switch cancels the build under way.
 import { AccuracyModes } from './accuracy.js';
-import { buildLods } from './lod.js';
+import { LevelBuilder } from './lod.js';
 import { showMessage } from './messages.js';
-import { loadScene, sceneUrl } from './scene_loader.js';
+import { loadScene, readFileMesh, sceneUrl } from './scene_loader.js';
 
 // A model's loader warning (it loaded, with something let pass): an info message.
 const warnInfo = (text) => showMessage(text, 'info');
@@ -20,12 +22,16 @@ export class Session {
     this.paused = false;
     this.homeCamera = null;  // the scene's own camera (cam= stays out of links while it is there)
     this.sceneMaterials = [];  // the objects' materials as the scene file has them
-    this.figures = [];  // added figures { name, bytes, source, object }: kept through reloads of the same scene
-    this.overrides = new Map();  // mesh name -> { bytes, source }: the user's replacement models
+    // Added figures { name, file, source, object }: kept through reloads of the same scene. The
+    // user's files are kept as File objects (the browser's handle on the file), not their text.
+    this.figures = [];
+    this.overrides = new Map();  // mesh name -> { file, source }: the user's replacement models
     this.defaultAccuracy = Object.fromEntries(schema.accuracy.map((i) => [i.name, i.default]));
     this.lodLevels = {};
-    this.lodReady = Promise.resolve({});
+    this.levels = new LevelBuilder(bridge);
+    this.levelsDone = Promise.resolve({});
     this.lastStats = {};
+    this.firstFrameStats = null;  // the stats of the first frame after the last scene load
     this.listeners = [];
     this.queue = Promise.resolve();
     this.pending = 0;
@@ -43,9 +49,37 @@ export class Session {
     return run;
   }
 
-  // Resolves once no job is queued or running (jobs queued meanwhile included).
+  // Resolves once no job is queued or running (jobs queued meanwhile included) and the levels of
+  // detail are built.
   async idle() {
-    while (this.pending) await this.queue;
+    for (;;) {
+      while (this.pending) await this.queue;
+      await this.lodReady();
+      if (!this.pending) return;
+    }
+  }
+
+  // Builds what the C++ side still lacks (chunks; levels while a LOD setting is on), in the
+  // background; the promise resolves when that build is done.
+  startLevels() {
+    this.levelsDone = this.levels.build().then((built) => {
+      if (built && Object.keys(built).length) {
+        this.lodLevels = { ...this.lodLevels, ...built };
+        this.changed('models');
+      }
+      return built;
+    });
+    return this.levelsDone;
+  }
+
+  // Resolves (to { mesh: [triangles a level] }) once nothing is left to build.
+  async lodReady() {
+    for (let attempt = 0; attempt < 8; ++attempt) {
+      await this.levelsDone;
+      if (!this.bridge.levelJobs().length) break;
+      if (!this.levels.running) this.startLevels();
+    }
+    return this.lodLevels;
   }
 
   faceSize() { return this.bridge.scene().cubeFaceSize || this.cubeSize; }
@@ -65,6 +99,7 @@ export class Session {
     let view = null;
     const beforeCommit = () => {
       if (keepView) view = { camera: this.bridge.camera(), time: this.bridge.time() };
+      this.levels.cancel();  // its meshes are about to go
     };
     let title;
     try {
@@ -89,17 +124,19 @@ export class Session {
     this.sceneMaterials = this.bridge.objects().map((o) => o.material);
     if (same) {
       for (const f of this.figures) {
-        const error = this.bridge.loadMesh({ name: f.name, source: f.source, bytes: f.bytes }) ||
-                      this.bridge.addObject(f.object);
+        const error = (await readFileMesh(this.bridge, { name: f.name, source: f.source }, f.file)
+          .catch((e) => e.message)) || this.bridge.addObject(f.object);
         if (error) showMessage(`${f.source}: ${error}`);
       }
       for (const edit of edits) this.bridge.setMaterial(edit);
     } else {
       this.figures = [];
     }
-    this.frame(0);
+    this.lodLevels = {};
+    // First frame first: the scene is drawn as parsed; its chunks and levels come after.
+    this.firstFrameStats = this.frame(0);
     this.changed('scene');
-    await this.rebuildLods();
+    this.startLevels();
     return title;
   }
 
@@ -118,45 +155,40 @@ export class Session {
     return this.reload();
   }
 
-  // Mesh `mesh` of the scene from the user's file { path } (the bytes are kept for reloads).
-  // Returns "" or the error; the loader's warnings are shown as info messages.
-  replaceModel(file, mesh, bytes) {
-    const error = this.bridge.loadMesh({ name: mesh, source: file.path, bytes, warn: warnInfo });
+  // Mesh `mesh` of the scene from the user's file { file, path }, parsed as it is read (the File is
+  // kept for reloads). Resolves to "" or the error; the
+  // loader's warnings are shown as info messages.
+  async replaceModel(f, mesh, onProgress = null) {
+    const error = await readFileMesh(this.bridge, { name: mesh, source: f.path, warn: warnInfo }, f.file, onProgress)
+      .catch((e) => e.message);
     if (error) return error;
     const figure = this.figures.find((g) => g.name === mesh);
-    if (figure) Object.assign(figure, { bytes, source: file.path });
-    else this.overrides.set(mesh, { bytes, source: file.path });
+    if (figure) Object.assign(figure, { file: f.file, source: f.path });
+    else this.overrides.set(mesh, { file: f.file, source: f.path });
     return '';
   }
 
-  // A new figure from the user's file: `place(bounds, figures)` gives its scene-file object.
-  // Returns "" or the error; the loader's warnings are shown as info messages.
-  addFigure(file, name, bytes, place) {
-    const error = this.bridge.loadMesh({ name, source: file.path, bytes, warn: warnInfo });
+  // A new figure from the user's file { file, path }: `place(bounds, figures)` gives its
+  // scene-file object. Resolves to "" or the error; the loader's
+  // warnings are shown as info messages.
+  async addFigure(f, name, place, onProgress = null) {
+    const error = await readFileMesh(this.bridge, { name, source: f.path, warn: warnInfo }, f.file, onProgress)
+      .catch((e) => e.message);
     if (error) return error;
     const bounds = this.bridge.meshBounds(name);
     if (!bounds) return 'no bounds for the loaded mesh';
     const object = place(bounds, this.figures.map((g) => g.object));
     const addError = this.bridge.addObject(object);
     if (addError) return addError;
-    this.figures.push({ name, bytes, source: file.path, object });
+    this.figures.push({ name, file: f.file, source: f.path, object });
     return '';
   }
 
-  // After models changed: a frame, the listeners, and levels of detail for `meshes`.
-  modelsChanged(meshes) {
+  // After models changed: a frame, the listeners, and (in the background) their chunks and levels.
+  modelsChanged() {
     this.frame(0);
     this.changed('models');
-    return this.rebuildLods(meshes);
-  }
-
-  rebuildLods(names = null) {
-    this.lodReady = buildLods(this.bridge, names).then((built) => {
-      this.lodLevels = names ? { ...this.lodLevels, ...built } : built;
-      this.changed('models');
-      return this.lodLevels;
-    });
-    return this.lodReady;
+    return this.startLevels();
   }
 
   // --- settings --------------------------------------------------------------------------------
@@ -167,7 +199,11 @@ export class Session {
     this.changed(kind);
     return error || '';
   }
-  setPlanner(changes) { return this.report(this.bridge.setPlanner(changes)); }
+  setPlanner(changes) {
+    const error = this.report(this.bridge.setPlanner(changes));
+    if (!error) this.startLevels();  // a LOD setting turned on wants levels
+    return error;
+  }
   setAccuracy(changes) { return this.report(this.bridge.setAccuracy(changes)); }
   setMaterial(index, changes) { return this.report(this.bridge.setMaterial({ index, changes })); }
   // Show error, auto and its budget (the 'view' listeners: the panel, the address bar, auto).

@@ -34,7 +34,16 @@ export function testApi(page) {
     loadScene: (nameOrUrl) => session.loadScene(nameOrUrl),
     // Triangles of each level of detail of mesh `name` (null before any was built).
     lodLevels: (name) => session.lodLevels[name] || null,
-    lodReady: () => session.lodReady,
+    // Resolves (to { mesh: [triangles a level] }) once every mesh's chunks and, while a LOD
+    // setting is on, its levels are built and in use (they are built after the first frame).
+    lodReady: () => session.lodReady(),
+    // The stats of the first frame drawn after the last scene load (drawn before any level was
+    // built: its lodReady is false), and the level builder's events ({ event, at }: 'start',
+    // 'done', at performance.now()) with the first frame's time.
+    firstFrameStats: () => session.firstFrameStats,
+    levelEvents: () => [...session.levels.events],
+    // The longest main-thread task that handed a built piece in (ms).
+    longestLevelHandOffMs: () => session.levels.longestHandOffMs,
     readPixels: () => page.readPixels(),
     screenshot: () => page.screenshot(),
     copyLink: () => addressBar.copyLink(),

@@ -13,8 +13,10 @@ export async function createBridge(canvas) {
   const exports = {
     rf_create: [], rf_schema_json: [], rf_frame: text, rf_clock: text, rf_camera: text,
     rf_begin_scene: withData, rf_pending_files: [], rf_load_mesh: withData,
+    rf_mesh_stream_begin: text, rf_mesh_stream_feed: withData, rf_mesh_stream_end: text,
     rf_pending_skybox_image: withData, rf_commit_scene: text, rf_scene_json: [], rf_mesh_arrays: text,
-    rf_lod_settings_json: [], rf_add_lod: withData, rf_add_object: text, rf_mesh_bounds_json: text,
+    rf_lod_settings_json: [], rf_level_jobs: [], rf_set_mesh_chunks: withData, rf_add_lod: withData,
+    rf_finish_levels: text, rf_level_triangles: text, rf_add_object: text, rf_mesh_bounds_json: text,
     rf_planner_json: [], rf_set_planner: text, rf_accuracy_json: [], rf_set_accuracy: text,
     rf_accuracy_from_description: text, rf_objects_json: [], rf_set_material: text,
     rf_view_json: [], rf_set_view: text, rf_budget_candidates: [], rf_pick_accuracy: text,
@@ -34,6 +36,26 @@ export async function createBridge(canvas) {
     }
   };
   const errorOf = (reply) => reply.error || '';
+
+  // The pieces of a streamed model go through one staging buffer in wasm memory, reused (and
+  // grown to the largest piece, at most 1 MB; larger pieces go in parts), so streaming a file
+  // allocates no more than that.
+  const kStagingMax = 1 << 20;
+  let staging = 0, stagingSize = 0;
+  const feedPiece = (stream, bytes) => {
+    for (let at = 0; at < bytes.length; at += kStagingMax) {
+      const part = bytes.subarray(at, Math.min(at + kStagingMax, bytes.length));
+      if (part.length > stagingSize) {
+        if (staging) Module._free(staging);
+        stagingSize = Math.max(part.length, 64 * 1024);
+        staging = Module._malloc(stagingSize);
+      }
+      Module.HEAPU8.set(part, staging);
+      const error = errorOf(JSON.parse(fn.rf_mesh_stream_feed(JSON.stringify({ stream }), staging, part.length)));
+      if (error) return error;
+    }
+    return '';
+  };
 
   return {
     // "" or why WebGL2 could not be set up.
@@ -95,6 +117,23 @@ export async function createBridge(canvas) {
       if (!reply.error && warn) for (const warning of reply.warnings || []) warn(warning);
       return errorOf(reply);
     },
+    // A model parsed as it streams in: { feed(bytes) -> "" or the error (the stream is over then),
+    // end() -> "" or the error (the mesh replaces the one of its name; its loader warnings go to
+    // `warn(text)`), cancel() }, or { error }.
+    streamMesh: ({ name, source, pending = false, warn = null }) => {
+      const begun = call('rf_mesh_stream_begin', { name, source, pending });
+      if (begun.error) return { error: begun.error };
+      const stream = begun.stream;
+      return {
+        feed: (bytes) => feedPiece(stream, bytes),
+        end: () => {
+          const reply = call('rf_mesh_stream_end', { stream });
+          if (!reply.error && warn) for (const warning of reply.warnings || []) warn(warning);
+          return errorOf(reply);
+        },
+        cancel: () => { call('rf_mesh_stream_end', { stream, cancel: true }); },
+      };
+    },
     skyboxImage: ({ index, source, bytes }) =>
       errorOf(callWithData('rf_pending_skybox_image', { index, source }, bytes)),
     commitScene: ({ cubeSize = 0 } = {}) => call('rf_commit_scene', { cubeSize }),
@@ -112,7 +151,19 @@ export async function createBridge(canvas) {
       };
     },
     lodSettings: () => call('rf_lod_settings_json'),
-    addLod: (name, indices) => errorOf(callWithData('rf_add_lod', { name }, indices, indices.length)),
+    // What is left to build: [{ name, revision, chunks, coarser }] (web/lod.js builds it).
+    levelJobs: () => call('rf_level_jobs'),
+    // Mesh `name`'s triangles in chunk order, the chunks' triangle counts. "" or the error.
+    setMeshChunks: ({ name, revision, indices, chunkTriangles }) =>
+      errorOf(callWithData('rf_set_mesh_chunks', { name, revision, chunkTriangles }, indices, indices.length)),
+    // The next coarser level of mesh `name` (indices into its level-0 vertices, in chunk order).
+    addLod: ({ name, revision, indices, chunkTriangles }) =>
+      errorOf(callWithData('rf_add_lod', { name, revision, chunkTriangles }, indices, indices.length)),
+    finishLevels: ({ name, revision }) => errorOf(call('rf_finish_levels', { name, revision })),
+    // Triangles of each level of mesh `name`, level 0 first, or null.
+    levelTriangles: (name) => call('rf_level_triangles', { name }).levels || null,
+    // The wasm memory's size in bytes (it grows, and never shrinks).
+    heapBytes: () => Module.HEAPU8.length,
     // { min: [x, y, z], max } of mesh `name`, or null.
     meshBounds: (name) => {
       const bounds = call('rf_mesh_bounds_json', { name });

@@ -1,9 +1,11 @@
 #include "app/demo.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <future>
 
 #include "core/mesh_chunks.h"
 #include "core/mesh_lod.h"
@@ -38,6 +40,8 @@ FramePlan withoutTracedProbes(FramePlan plan, const Scene& scene) {
 
 Demo::Demo(Scene scene) : scene_(std::move(scene)), camera_(scene_.camera) {}
 
+Demo::~Demo() = default;
+
 std::string Demo::loadMesh(const std::string& name, const std::string& path) {
   return adoptLoaded(name, loadObjFile(path));
 }
@@ -45,6 +49,10 @@ std::string Demo::loadMesh(const std::string& name, const std::string& path) {
 std::string Demo::loadMeshText(const std::string& name, const std::string& text,
                                const std::string& source) {
   return adoptLoaded(name, parseObj(text, source));
+}
+
+std::string Demo::setLoadedMesh(const std::string& name, Result<LoadedMesh> loaded) {
+  return adoptLoaded(name, std::move(loaded));
 }
 
 std::string Demo::adoptLoaded(const std::string& name, Result<LoadedMesh> loaded) {
@@ -62,36 +70,245 @@ std::string Demo::setMeshData(const std::string& name, MeshData mesh) {
 
 std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   if (!mesh) return mesh.error();
-  std::vector<MeshData> levels;
-  levels.push_back(mesh.take());
-  levels.front().sphereRadius = sphereRadiusOf(levels.front());
-  for (MeshData& coarser : buildLodLevels(levels.front())) levels.push_back(std::move(coarser));
-  for (MeshData& level : levels) chunkMesh(level);
-  auto bvh = std::make_shared<const MeshBvh>(buildMeshBvh(levels.front()));
+  MeshEntry entry;
+  entry.base = std::make_shared<MeshData>(mesh.take());
+  entry.base->chunks.clear();
+  entry.base->sphereRadius = sphereRadiusOf(*entry.base);
+  // Drawn whole at first; chunks and levels follow (after the first frame).
   for (SceneRenderer* r : {renderer_.get(), exactRenderer_.get()}) {
-    if (!r) continue;
-    for (size_t lod = 0; lod < levels.size(); ++lod) {
-      r->setMesh(name, static_cast<int>(lod), levels[lod]);
-    }
+    if (r) r->setMesh(name, 0, *entry.base);
   }
-  if (exactTracer_) exactTracer_->setMesh(name, bvh);
-  bvhs_[name] = std::move(bvh);
-  meshes_[name] = std::move(levels);
-  ++meshRevisions_[name];
+  // The exact mode's tree: built now only while that mode (or the error view) is set up, else
+  // when it is (setUpExact), so a load that never traces pays nothing.
+  bvhs_.erase(name);
+  if (exactTracer_) exactTracer_->setMesh(name, bvhFor(name, *entry.base));
+  auto it = meshes_.find(name);
+  if (it != meshes_.end()) {
+    if (it->second.pending.valid()) abandoned_.push_back(std::move(it->second.pending));
+    it->second = std::move(entry);
+  } else {
+    meshes_.emplace(name, std::move(entry));
+  }
+  // Unique across demos: a level built for a mesh of an earlier scene never fits a later one.
+  static std::atomic<uint32_t> nextRevision{1};
+  meshRevisions_[name] = nextRevision++;
+  if (firstFrameDrawn_) startBuilds();
   return {};
 }
 
-std::string Demo::addLodLevel(const std::string& name, const std::vector<uint32_t>& indices) {
-  auto it = meshes_.find(name);
-  if (it == meshes_.end()) return name + ": no such mesh";
-  MeshData level = meshFromIndices(it->second.front(), indices);
-  if (level.indices.empty()) return name + ": level of detail has no triangles";
-  chunkMesh(level);
-  for (SceneRenderer* r : {renderer_.get(), exactRenderer_.get()}) {
-    if (r) r->setMesh(name, static_cast<int>(it->second.size()), level);
+bool Demo::needsLevels() const {
+  return plannerSettings_.captureLod > 0.0f || plannerSettings_.viewLod > 0.0f;
+}
+
+bool Demo::lodReady() const {
+  for (const auto& [name, entry] : meshes_) {
+    if (entry.pending.valid() || !entry.chunked) return false;
+    if (needsLevels() && !entry.levelsBuilt) return false;
   }
-  it->second.push_back(std::move(level));
+  return true;
+}
+
+std::vector<Demo::LevelJob> Demo::levelJobs() const {
+  std::vector<LevelJob> jobs;
+  for (const auto& [name, entry] : meshes_) {
+    const bool coarser = needsLevels() && !entry.levelsBuilt;
+    if (entry.chunked && !coarser) continue;
+    auto revision = meshRevisions_.find(name);
+    jobs.push_back(LevelJob{name, revision == meshRevisions_.end() ? 0 : revision->second,
+                            !entry.chunked, coarser});
+  }
+  return jobs;
+}
+
+void Demo::startBuilds() {
+  if (levelBuilds_ != LevelBuilds::Background) return;
+  const bool coarser = needsLevels();
+  for (auto& [name, entry] : meshes_) {
+    if (entry.pending.valid()) continue;  // one build of a mesh at a time: it reads the base
+    const bool chunks = !entry.chunked;
+    const bool levels = coarser && !entry.levelsBuilt;
+    if (!chunks && !levels) continue;
+    std::shared_ptr<const MeshData> base = entry.base;
+    entry.pending = std::async(
+        std::launch::async, [base, chunks, levels] { return buildLevels(*base, chunks, levels); });
+  }
+}
+
+void Demo::collectBuilds(bool wait) {
+  abandoned_.erase(std::remove_if(abandoned_.begin(), abandoned_.end(),
+                                  [](std::future<BuiltLevels>& f) {
+                                    return f.wait_for(std::chrono::seconds(0)) ==
+                                           std::future_status::ready;
+                                  }),
+                   abandoned_.end());
+  for (auto& [name, entry] : meshes_) {
+    if (!entry.pending.valid()) continue;
+    if (!wait && entry.pending.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      continue;
+    }
+    BuiltLevels built = entry.pending.get();
+    MeshData& base = *entry.base;
+    if (built.chunked) {
+      Result<std::vector<MeshChunk>> chunks =
+          chunksFromCounts(base.vertices, built.base.indices, built.base.chunkTriangles);
+      if (chunks) {
+        base.indices = std::move(built.base.indices);
+        base.chunks = chunks.take();
+      }
+      entry.chunked = true;  // a failure (never expected) leaves the mesh drawn whole
+    }
+    if (built.coarse) {
+      entry.coarser.clear();
+      for (LevelIndices& level : built.coarser) {
+        Result<std::vector<MeshChunk>> chunks =
+            chunksFromCounts(base.vertices, level.indices, level.chunkTriangles);
+        if (!chunks) break;
+        CoarseLevel coarse;
+        coarse.vertices = verticesUsed(base.vertices.size(), level.indices);
+        coarse.indices = std::move(level.indices);
+        coarse.chunks = chunks.take();
+        entry.coarser.push_back(std::move(coarse));
+      }
+      entry.levelsBuilt = true;
+    }
+    uploadLevels(name, entry);
+  }
+}
+
+void Demo::waitForLevels() {
+  startBuilds();
+  collectBuilds(true);
+}
+
+void Demo::uploadLevels(const std::string& name, const MeshEntry& entry) {
+  for (SceneRenderer* r : {renderer_.get(), exactRenderer_.get()}) {
+    if (!r) continue;
+    r->setMesh(name, 0, *entry.base);
+    for (size_t k = 0; k < entry.coarser.size(); ++k) {
+      // The GPU's copy is compact (the level's own vertices); the CPU keeps the index list.
+      r->setMesh(name, static_cast<int>(k + 1),
+                 meshFromIndices(*entry.base, entry.coarser[k].indices));
+    }
+  }
+}
+
+std::shared_ptr<const MeshBvh> Demo::bvhFor(const std::string& name, const MeshData& mesh) {
+  auto it = bvhs_.find(name);
+  if (it != bvhs_.end()) return it->second;
+  auto bvh = std::make_shared<const MeshBvh>(buildMeshBvh(mesh));
+  bvhs_[name] = bvh;
+  return bvh;
+}
+
+Demo::MeshEntry* Demo::entryAt(const std::string& name, uint32_t revision, std::string* problem) {
+  auto it = meshes_.find(name);
+  auto current = meshRevisions_.find(name);
+  if (it == meshes_.end() || current == meshRevisions_.end()) {
+    *problem = name + ": no such mesh";
+    return nullptr;
+  }
+  if (current->second != revision) {
+    *problem = name + ": the mesh has changed since (revision " + std::to_string(revision) +
+               ", now " + std::to_string(current->second) + ")";
+    return nullptr;
+  }
+  return &it->second;
+}
+
+std::string Demo::setMeshChunks(const std::string& name, uint32_t revision,
+                                std::vector<uint32_t> indices,
+                                const std::vector<uint32_t>& chunkTriangles) {
+  std::string problem;
+  MeshEntry* entry = entryAt(name, revision, &problem);
+  if (!entry) return problem;
+  MeshData& base = *entry->base;
+  if (indices.size() != base.indices.size()) {
+    return name + ": the chunked triangles are " + std::to_string(indices.size() / 3) +
+           ", the mesh has " + std::to_string(base.triangleCount());
+  }
+  Result<std::vector<MeshChunk>> chunks = chunksFromCounts(base.vertices, indices, chunkTriangles);
+  if (!chunks) return name + ": " + chunks.error();
+  base.indices = std::move(indices);
+  base.chunks = chunks.take();
+  entry->chunked = true;
+  uploadLevels(name, *entry);
   return {};
+}
+
+std::string Demo::addLodLevel(const std::string& name, uint32_t revision,
+                              std::vector<uint32_t> indices,
+                              const std::vector<uint32_t>& chunkTriangles) {
+  std::string problem;
+  MeshEntry* entry = entryAt(name, revision, &problem);
+  if (!entry) return problem;
+  if (indices.empty()) return name + ": level of detail has no triangles";
+  const MeshData& base = *entry->base;
+  Result<std::vector<MeshChunk>> chunks = chunksFromCounts(base.vertices, indices, chunkTriangles);
+  if (!chunks) return name + ": " + chunks.error();
+  CoarseLevel level;
+  level.vertices = verticesUsed(base.vertices.size(), indices);
+  level.indices = std::move(indices);
+  level.chunks = chunks.take();
+  for (SceneRenderer* r : {renderer_.get(), exactRenderer_.get()}) {
+    if (r) r->setMesh(name, static_cast<int>(entry->coarser.size() + 1),
+                      meshFromIndices(base, level.indices));
+  }
+  entry->coarser.push_back(std::move(level));
+  return {};
+}
+
+std::string Demo::finishLevels(const std::string& name, uint32_t revision) {
+  std::string problem;
+  MeshEntry* entry = entryAt(name, revision, &problem);
+  if (!entry) return problem;
+  entry->levelsBuilt = true;
+  return {};
+}
+
+size_t Demo::meshGpuBytes() const {
+  size_t bytes = 0;
+  for (const auto& [name, entry] : meshes_) {
+    bytes += entry.base->vertices.size() * sizeof(Vertex) +
+             entry.base->indices.size() * sizeof(uint32_t);
+    for (const CoarseLevel& level : entry.coarser) {
+      bytes += level.vertices * sizeof(Vertex) + level.indices.size() * sizeof(uint32_t);
+    }
+  }
+  return bytes;
+}
+
+size_t Demo::meshCpuBytes() const {
+  size_t bytes = 0;
+  for (const auto& [name, entry] : meshes_) {
+    const MeshData& base = *entry.base;
+    bytes += base.vertices.capacity() * sizeof(Vertex) +
+             base.indices.capacity() * sizeof(uint32_t) +
+             base.chunks.capacity() * sizeof(MeshChunk);
+    for (const CoarseLevel& level : entry.coarser) {
+      bytes +=
+          level.indices.capacity() * sizeof(uint32_t) + level.chunks.capacity() * sizeof(MeshChunk);
+    }
+  }
+  return bytes;
+}
+
+std::vector<Demo::LevelInfo> Demo::levelInfo(const std::string& name) const {
+  auto it = meshes_.find(name);
+  if (it == meshes_.end()) return {};
+  const MeshData& base = *it->second.base;
+  std::vector<LevelInfo> levels{{base.triangleCount(), base.chunks.size(), base.vertices.size()}};
+  for (const CoarseLevel& level : it->second.coarser) {
+    levels.push_back({level.indices.size() / 3, level.chunks.size(), level.vertices});
+  }
+  return levels;
+}
+
+std::vector<size_t> Demo::levelTriangles(const std::string& name) const {
+  auto it = meshes_.find(name);
+  if (it == meshes_.end()) return {};
+  std::vector<size_t> triangles{it->second.base->triangleCount()};
+  for (const CoarseLevel& level : it->second.coarser) triangles.push_back(level.indices.size() / 3);
+  return triangles;
 }
 
 std::string Demo::addObject(const SceneObject& object) {
@@ -127,8 +344,8 @@ std::string Demo::setSkybox(CubeFaces faces) {
 
 const MeshData* Demo::meshLevel(const std::string& name, int lod) const {
   auto it = meshes_.find(name);
-  if (it == meshes_.end() || lod < 0 || lod >= static_cast<int>(it->second.size())) return nullptr;
-  return &it->second[static_cast<size_t>(lod)];
+  if (it == meshes_.end() || lod != 0) return nullptr;
+  return it->second.base.get();
 }
 
 std::string Demo::loadMeshesFrom(const std::string& directory) {
@@ -151,6 +368,7 @@ bool Demo::hasAllMeshes() const {
 
 void Demo::setPlannerSettings(const PlannerSettings& settings) {
   plannerSettings_ = settings;
+  if (firstFrameDrawn_) startBuilds();  // a LOD setting turned on: its levels are wanted now
 }
 
 std::string Demo::setCubeFaceSize(int size) {
@@ -179,11 +397,7 @@ std::string Demo::initGraphics() {
   glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &maxCubeSize);
   scene_.capture.faceSize = std::clamp(scene_.capture.faceSize, 1, std::max(1, maxCubeSize));
   gpuTimer_ = std::make_unique<GpuTimer>();
-  for (const auto& [name, levels] : meshes_) {
-    for (size_t lod = 0; lod < levels.size(); ++lod) {
-      renderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
-    }
-  }
+  for (const auto& [name, entry] : meshes_) uploadLevels(name, entry);
   if (skybox_) {
     std::string error = renderer_->setSkybox(*skybox_);
     if (!error.empty()) return error;
@@ -202,7 +416,7 @@ std::string Demo::setUpExact() {
     Result<ExactTracer> tracer = ExactTracer::create();
     if (!tracer) return tracer.error();
     exactTracer_ = std::make_unique<ExactTracer>(tracer.take());
-    for (const auto& [name, bvh] : bvhs_) exactTracer_->setMesh(name, bvh);
+    for (const auto& [name, entry] : meshes_) exactTracer_->setMesh(name, bvhFor(name, *entry.base));
     std::string error = exactTracer_->setSkybox(skyboxFaces());
     if (!error.empty()) return error;
   }
@@ -214,11 +428,7 @@ std::string Demo::setUpExact() {
     Result<SceneRenderer> renderer = SceneRenderer::create(exact);
     if (!renderer) return renderer.error();
     exactRenderer_ = std::make_unique<SceneRenderer>(renderer.take());
-    for (const auto& [name, levels] : meshes_) {
-      for (size_t lod = 0; lod < levels.size(); ++lod) {
-        exactRenderer_->setMesh(name, static_cast<int>(lod), levels[lod]);
-      }
-    }
+    for (const auto& [name, entry] : meshes_) uploadLevels(name, entry);
     if (skybox_) {
       std::string error = exactRenderer_->setSkybox(*skybox_);
       if (!error.empty()) return error;
@@ -325,9 +535,11 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
     PlannedObject p;
     auto it = meshes_.find(object.mesh);
     if (it != meshes_.end()) {
-      p.localBounds = it->second.front().bounds;
-      for (const MeshData& level : it->second) {
-        p.levels.push_back(PlannedLevel{level.triangleCount(), &level.chunks});
+      const MeshData& base = *it->second.base;
+      p.localBounds = base.bounds;
+      p.levels.push_back(PlannedLevel{base.triangleCount(), &base.chunks});
+      for (const CoarseLevel& level : it->second.coarser) {
+        p.levels.push_back(PlannedLevel{level.indices.size() / 3, &level.chunks});
       }
     }
     auto revision = meshRevisions_.find(object.mesh);
@@ -345,6 +557,7 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
 
 const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width, int height,
                               bool waitForGpu) {
+  collectBuilds(false);  // levels built since the last frame join this one
   clock_.advance(dtSeconds);
   stats_ = FrameStats{};
   stats_.timeSeconds = clock_.seconds();
@@ -354,6 +567,9 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   stats_.cubeFaceSize = scene_.capture.faceSize;
   stats_.width = width;
   stats_.height = height;
+  stats_.lodReady = lodReady();
+  stats_.meshBytes = meshGpuBytes();
+  stats_.meshCpuBytes = meshCpuBytes();
   if (!renderer_ || width < 1 || height < 1) return stats_;  // hidden canvas: nothing to draw
 
   const auto start = std::chrono::steady_clock::now();
@@ -410,6 +626,11 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   stats_.mainDrawCalls = main.drawCalls;
   stats_.mainTriangles = main.triangles;
   if (errorView) renderErrorView(objects, view, draws, framebuffer);
+  if (!firstFrameDrawn_) {
+    // The first frame is on screen: now build what the meshes were drawn without.
+    firstFrameDrawn_ = true;
+    startBuilds();
+  }
   return stats_;
 }
 

@@ -1,8 +1,17 @@
 // The demo's state, independent of platform: the scene, its meshes (kept on the CPU so a lost GL
 // context can be rebuilt), the camera, the clock, the frame planner, the renderer and the last
 // frame's stats.
+//
+// First frame first: a loaded mesh is drawn as it was parsed. Its chunks (the capture's culling
+// units) and, when a LOD setting is on, its coarser levels are built afterwards: natively on a
+// background thread started after the first frame and taken in at the start of a later frame
+// (waitForLevels() waits for them, for tests and benchmarks); in the page by a Web Worker, which
+// hands them in through setMeshChunks / addLodLevel / finishLevels (LevelBuilds::External).
+// Coarser levels are kept as index lists over level 0's vertices, and built only while a LOD
+// setting is on.
 #pragma once
 
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -17,6 +26,7 @@
 #include "core/frame_planner.h"
 #include "core/frustum.h"
 #include "core/mesh_data.h"
+#include "core/mesh_lod.h"
 #include "core/obj_loader.h"
 #include "core/scene.h"
 #include "core/skybox_faces.h"
@@ -30,16 +40,20 @@ namespace reflect {
 class Demo {
  public:
   explicit Demo(Scene scene);
+  ~Demo();
+  Demo(const Demo&) = delete;
+  Demo& operator=(const Demo&) = delete;
 
   // Loads the OBJ at `path` as the scene's mesh `name`. On failure returns the message (naming
   // the file) and keeps the mesh it had; on success returns "". What the loader let pass with a
   // warning is in lastWarnings().
   std::string loadMesh(const std::string& name, const std::string& path);
-  // The same for OBJ text already in memory (the page fetches files); `source` names it in
-  // messages.
+  // The same for OBJ text already in memory; `source` names it in messages.
   std::string loadMeshText(const std::string& name, const std::string& text,
                            const std::string& source);
-  // A mesh made in memory (generated scenes); levels of detail and chunks are built as for files.
+  // The same for a parse done elsewhere (the page streams files through an ObjStreamParser).
+  std::string setLoadedMesh(const std::string& name, Result<LoadedMesh> loaded);
+  // A mesh made in memory (generated scenes); chunks and levels of detail are built as for files.
   std::string setMeshData(const std::string& name, MeshData mesh);
   // Every scene mesh from `directory`, by file name. Returns "" or the first failure's message;
   // lastWarnings() holds the warnings of every file it loaded.
@@ -48,10 +62,53 @@ class Demo {
   // when the files were clean or the load failed), for the caller to show.
   const std::vector<std::string>& lastWarnings() const { return lastWarnings_; }
   bool hasAllMeshes() const;
-  // The next coarser level of mesh `name`, as indices into its level-0 vertices (the page
-  // simplifies with npm's meshoptimizer). Returns "" or a message.
-  std::string addLodLevel(const std::string& name, const std::vector<uint32_t>& indices);
+  // Mesh `name` as loaded (level 0; its triangles in chunk order once chunks are built), or null.
+  // Coarser levels are index lists: levelTriangles() gives their sizes.
   const MeshData* meshLevel(const std::string& name, int lod) const;
+  // Triangles of each level of mesh `name`, level 0 first (empty if there is no such mesh).
+  std::vector<size_t> levelTriangles(const std::string& name) const;
+  // Each level of mesh `name`, level 0 first: its triangles, chunks and the vertices its GPU copy
+  // holds (level 0: all of the mesh's; a coarser level: the ones it uses).
+  struct LevelInfo {
+    size_t triangles = 0;
+    size_t chunks = 0;
+    size_t vertices = 0;
+  };
+  std::vector<LevelInfo> levelInfo(const std::string& name) const;
+
+  // Who builds chunks and levels of detail: a thread of this demo (native), or the caller (the
+  // page's worker, through levelJobs and the three calls after it).
+  enum class LevelBuilds { Background, External };
+  void setLevelBuilds(LevelBuilds builds) { levelBuilds_ = builds; }
+  // Nothing left to build: every mesh chunked and, while a LOD setting is on, its levels built.
+  bool lodReady() const;
+  // Background: starts what is left and waits for it (it is taken in before this returns).
+  void waitForLevels();
+  // What is left to build, for an external builder: each mesh (with its revision, which the
+  // answers must carry) and whether its chunks, its coarser levels or both are wanted.
+  struct LevelJob {
+    std::string name;
+    uint32_t revision = 0;
+    bool chunks = false;
+    bool coarser = false;
+  };
+  std::vector<LevelJob> levelJobs() const;
+  // Mesh `name`'s triangles in chunk order (a reordering of its indices) and the chunks' triangle
+  // counts. Returns "" or why not (a stale revision, counts that do not add up, bad indices).
+  std::string setMeshChunks(const std::string& name, uint32_t revision,
+                            std::vector<uint32_t> indices,
+                            const std::vector<uint32_t>& chunkTriangles);
+  // The next coarser level of mesh `name`: indices into its level-0 vertices, in chunk order.
+  std::string addLodLevel(const std::string& name, uint32_t revision, std::vector<uint32_t> indices,
+                          const std::vector<uint32_t>& chunkTriangles);
+  // Every coarser level of mesh `name` has been given (there may be none).
+  std::string finishLevels(const std::string& name, uint32_t revision);
+
+  // Bytes of the meshes as the GPU holds them (every level's vertices and indices as uploaded),
+  // and as this demo keeps them on the CPU (level 0's arrays, the coarser levels' index lists and
+  // every chunk table, by capacity).
+  size_t meshGpuBytes() const;
+  size_t meshCpuBytes() const;
 
   // Adds an object (its mesh must be loaded first, e.g. with loadMeshText). Returns "" or why not.
   std::string addObject(const SceneObject& object);
@@ -112,8 +169,33 @@ class Demo {
   const SceneRenderer* renderer() const { return renderer_.get(); }
 
  private:
+  // A coarser level: its triangles over level 0's vertices, in chunk order.
+  struct CoarseLevel {
+    std::vector<uint32_t> indices;
+    std::vector<MeshChunk> chunks;
+    size_t vertices = 0;  // distinct vertices it uses: what its GPU copy holds
+  };
+  struct MeshEntry {
+    std::shared_ptr<MeshData> base;  // shared with a background build that reads it
+    std::vector<CoarseLevel> coarser;
+    bool chunked = false;
+    bool levelsBuilt = false;          // coarser levels made (possibly none: small meshes)
+    std::future<BuiltLevels> pending;  // a background build under way
+  };
+
   std::string adopt(const std::string& name, Result<MeshData> mesh);
   std::string adoptLoaded(const std::string& name, Result<LoadedMesh> loaded);
+  bool needsLevels() const;
+  // Starts a background build for every mesh with work left and none under way.
+  void startBuilds();
+  // Takes in the builds that are done (all of them, waiting, with `wait`).
+  void collectBuilds(bool wait);
+  // The mesh `name` at `revision`, or the reason it is not.
+  MeshEntry* entryAt(const std::string& name, uint32_t revision, std::string* problem);
+  // Uploads every level of `name` to the renderer (level 0 first: it drops the old levels).
+  // Mesh `name`'s tree for the exact mode, built from `mesh` on first need.
+  std::shared_ptr<const MeshBvh> bvhFor(const std::string& name, const MeshData& mesh);
+  void uploadLevels(const std::string& name, const MeshEntry& entry);
   std::vector<PlannedObject> plannedObjects(double seconds) const;
   // Everything besides the objects that the captures depend on, as values.
   CaptureContext captureContext() const;
@@ -128,8 +210,13 @@ class Demo {
                        const std::vector<DrawItem>& draws, unsigned framebuffer);
 
   Scene scene_;
-  std::map<std::string, std::vector<MeshData>> meshes_;  // levels of detail, 0 = as loaded
+  std::map<std::string, MeshEntry> meshes_;
   std::map<std::string, uint32_t> meshRevisions_;
+  // Builds of meshes since replaced: their results are dropped once they are done (a future of
+  // std::async would wait for its thread if it were destroyed before).
+  std::vector<std::future<BuiltLevels>> abandoned_;
+  LevelBuilds levelBuilds_ = LevelBuilds::Background;
+  bool firstFrameDrawn_ = false;
   std::vector<std::string> lastWarnings_;
   std::optional<CubeFaces> skybox_;
   LookCamera camera_;

@@ -21,7 +21,10 @@ nlohmann::json FrameStats::toJson() const {
                          {"width", width},
                          {"height", height},
                          {"time", timeSeconds},
-                         {"orbitDegrees", orbitDegrees}};
+                         {"orbitDegrees", orbitDegrees},
+                         {"lodReady", lodReady},
+                         {"meshBytes", meshBytes},
+                         {"meshCpuBytes", meshCpuBytes}};
   if (!error.empty()) json["error"] = error;
   if (errorView) {
     json["errorView"] = {{"psnrDb", errorPsnrDb},

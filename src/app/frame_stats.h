@@ -28,6 +28,10 @@ struct FrameStats {
   int height = 0;
   double timeSeconds = 0;
   double orbitDegrees = 0;
+  // Every mesh's chunks and (while a LOD setting is on) levels are built and in use.
+  bool lodReady = true;
+  size_t meshBytes = 0;     // the meshes as the GPU holds them (Demo::meshGpuBytes)
+  size_t meshCpuBytes = 0;  // and as the demo keeps them on the CPU (Demo::meshCpuBytes)
   std::string error;  // what went wrong this frame (the page shows it), or empty
   // The live error view (show error): this frame's reflectors against the exact mode's.
   bool errorView = false;

@@ -6,6 +6,7 @@
 
 #include "app/headless_frames.h"
 #include "bench/growth_bench.h"
+#include "bench/lod_sweep.h"
 #include "bench/policy_bench.h"
 #include "bench/sweep.h"
 
@@ -32,6 +33,10 @@ int benchFramesDefault(BenchMode mode) {
       return SweepOptions{}.frames;
     case BenchMode::Budget:
       return 30;
+    case BenchMode::LodSweep:
+      return LodSweepOptions{}.frames;
+    case BenchMode::ViewLodSweep:
+      return 1;
   }
   return 0;
 }
@@ -44,11 +49,26 @@ int benchWarmupDefault(BenchMode mode) {
     case BenchMode::Growth:
       return GrowthOptions{}.warmup;
     case BenchMode::Sweep:
+    case BenchMode::ViewLodSweep:
       return 0;
     case BenchMode::Budget:
       return 5;
+    case BenchMode::LodSweep:
+      return LodSweepOptions{}.warmup;
   }
   return 0;
+}
+
+std::string runLodSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {
+  LodSweepOptions sweep;
+  if (!o.times.empty()) sweep.times = o.times;
+  return runCaptureLodSweep(o, makeDemo, sweep);
+}
+
+std::string runViewLodSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {
+  LodSweepOptions sweep;
+  if (!o.times.empty()) sweep.viewTimes = o.times;
+  return runViewLodSweep(o, makeDemo, sweep);
 }
 
 std::string runSinglePolicy(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/demo.h"
 #include "core/frame_planner.h"
@@ -23,14 +24,16 @@ struct BenchCommandOptions {
   // Unset: each mode's own default (benchFramesDefault, benchWarmupDefault).
   std::optional<int> frames;
   std::optional<int> warmup;
-  int accuracyFrames = 60;  // the policy comparison: frames compared with every-frame
-  PlannerSettings planner;  // the single policy; the comparison's time-sliced, every-n, LODs
-  std::string csv;          // the sweep: CSV output ("" = none)
-  std::string svg;          // the sweep: SVG plot output ("" = none)
-  double budgetMs = 0.0;    // --budget: the frame budget "auto" picks within
+  int accuracyFrames = 60;    // the policy comparison: frames compared with every-frame
+  PlannerSettings planner;    // the single policy; the comparison's time-sliced, every-n, LODs
+  std::vector<double> times;  // the LOD sweeps: scene times measured (empty: their own)
+  std::string csv;            // the sweep: CSV output ("" = none)
+  std::string svg;            // the sweep: SVG plot output ("" = none)
+  double budgetMs = 0.0;      // --budget: the frame budget "auto" picks within
 };
 
-enum class BenchMode { PolicyComparison, SinglePolicy, Growth, Sweep, Budget };
+enum class BenchMode { PolicyComparison, SinglePolicy, Growth, Sweep, LodSweep, ViewLodSweep,
+                       Budget };
 
 // Timed frames (per policy, per setting, per cell) and warm-up frames when not given.
 int benchFramesDefault(BenchMode mode);
@@ -52,6 +55,12 @@ std::string runPolicyComparison(const BenchCommandOptions& options,
 std::string runSinglePolicy(const BenchCommandOptions& options, const BenchDemoFactory& makeDemo);
 // Every accuracy setting against the ray-traced reference: table, CSV, SVG.
 std::string runSweepCommand(const BenchCommandOptions& options, const BenchDemoFactory& makeDemo);
+// Capture LOD values against full detail (reflector vs the reference, capture triangles, frame
+// time), and view LOD values against the full-detail view (bench/lod_sweep.h).
+std::string runLodSweepCommand(const BenchCommandOptions& options,
+                               const BenchDemoFactory& makeDemo);
+std::string runViewLodSweepCommand(const BenchCommandOptions& options,
+                                   const BenchDemoFactory& makeDemo);
 // Frame time against reflectors and triangles, on scenes generated from `modelDirectory`.
 std::string runGrowthCommand(const BenchCommandOptions& options, const std::string& modelDirectory);
 

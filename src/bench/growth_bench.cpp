@@ -93,6 +93,7 @@ Result<std::string> runGrowthBench(const std::string& modelDirectory, const Grow
         if (error.empty()) error = demo.setMeshData("blob.obj", uvSphere(triangles / 4, "blob"));
         if (error.empty()) error = demo.initGraphics();
         if (!error.empty()) return Result<std::string>::failure(error);
+        demo.waitForLevels();
         auto r = benchFrames(demo, o.width, o.height, o.warmup, o.frames);
         if (!r) return Result<std::string>::failure(r.error());
         std::snprintf(line, sizeof line, " %.1f ms (%d probes, %.0f faces) |",

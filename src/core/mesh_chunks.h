@@ -7,13 +7,27 @@
 #include <vector>
 
 #include "core/mesh_data.h"
+#include "core/result.h"
 
 namespace reflect {
 
 inline constexpr size_t kChunkTriangles = 1024;
 
+// Reorders the triangles of `indices` (into `vertices`) by recursive median splits of triangle
+// centres along the longest axis, until each piece has at most `maxTriangles`; returns the
+// pieces' triangle counts in order (the chunks, without their bounds).
+std::vector<uint32_t> chunkOrder(const std::vector<Vertex>& vertices,
+                                 std::vector<uint32_t>& indices,
+                                 size_t maxTriangles = kChunkTriangles);
+
+// The chunks of `indices` from their consecutive triangle counts, each with the bounds of its
+// vertices. Fails when the counts do not add up to the triangles or an index is out of range.
+Result<std::vector<MeshChunk>> chunksFromCounts(const std::vector<Vertex>& vertices,
+                                                const std::vector<uint32_t>& indices,
+                                                const std::vector<uint32_t>& triangleCounts);
+
 // Reorders `mesh.indices` (the triangles, not the vertices) and fills `mesh.chunks`, each of at
-// most `maxTriangles`, by recursive median splits of triangle centres along the longest axis.
+// most `maxTriangles` (chunkOrder, then chunksFromCounts).
 void chunkMesh(MeshData& mesh, size_t maxTriangles = kChunkTriangles);
 
 // Appends `range` to `ranges`, merging it with the last one when they touch.

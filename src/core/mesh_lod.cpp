@@ -1,6 +1,9 @@
 #include "core/mesh_lod.h"
 
+#include <algorithm>
 #include <limits>
+
+#include "core/mesh_chunks.h"
 
 #if defined(REFLECT_HAVE_MESHOPTIMIZER)
 #include <meshoptimizer.h>
@@ -13,45 +16,76 @@ MeshData meshFromIndices(const MeshData& base, const std::vector<uint32_t>& indi
   MeshData out;
   out.name = base.name;
   std::vector<uint32_t> remap(base.vertices.size(), kUnused);
-  out.indices.reserve(indices.size());
-  for (uint32_t index : indices) {
-    if (index >= base.vertices.size()) continue;  // a bad index from outside: drop it
-    if (remap[index] == kUnused) {
-      remap[index] = static_cast<uint32_t>(out.vertices.size());
-      out.vertices.push_back(base.vertices[index]);
+  out.vertices.reserve(verticesUsed(base.vertices.size(), indices));
+  out.indices.reserve(indices.size() / 3 * 3);
+  for (size_t i = 0; i + 2 < indices.size(); i += 3) {
+    // A triangle with a bad index from outside is dropped whole.
+    if (indices[i] >= base.vertices.size() || indices[i + 1] >= base.vertices.size() ||
+        indices[i + 2] >= base.vertices.size()) {
+      continue;
     }
-    out.indices.push_back(remap[index]);
+    for (size_t k = 0; k < 3; ++k) {
+      const uint32_t index = indices[i + k];
+      if (remap[index] == kUnused) {
+        remap[index] = static_cast<uint32_t>(out.vertices.size());
+        out.vertices.push_back(base.vertices[index]);
+      }
+      out.indices.push_back(remap[index]);
+    }
   }
-  out.indices.resize(out.indices.size() / 3 * 3);
   out.bounds = computeBounds(out.vertices);
   return out;
 }
 
-std::vector<MeshData> buildLodLevels(const MeshData& base, const LodSettings& settings) {
-  std::vector<MeshData> levels;
+size_t verticesUsed(size_t vertexCount, const std::vector<uint32_t>& indices) {
+  std::vector<bool> used(vertexCount, false);
+  size_t count = 0;
+  for (uint32_t index : indices) {
+    if (index < vertexCount && !used[index]) {
+      used[index] = true;
+      ++count;
+    }
+  }
+  return count;
+}
+
+BuiltLevels buildLevels(const MeshData& base, bool chunkBase, bool coarser,
+                        const LodSettings& settings) {
+  BuiltLevels built;
+  const std::vector<uint32_t>* previous = &base.indices;
+  if (chunkBase) {
+    built.chunked = true;
+    built.base.indices = base.indices;
+    built.base.chunkTriangles = chunkOrder(base.vertices, built.base.indices);
+    previous = &built.base.indices;
+  }
+  if (!coarser) return built;
+  built.coarse = true;
 #if defined(REFLECT_HAVE_MESHOPTIMIZER)
-  const MeshData* previous = &base;
+  built.coarser.reserve(
+      static_cast<size_t>(std::max(settings.maxLevels, 1)));  // `previous` stays valid
   for (int level = 1; level < settings.maxLevels; ++level) {
-    if (previous->triangleCount() < settings.minTriangles) break;
+    if (previous->size() / 3 < settings.minTriangles) break;
     const size_t target =
-        static_cast<size_t>(static_cast<float>(previous->indices.size()) * settings.triangleRatio) /
-        3 * 3;
-    std::vector<uint32_t> indices(previous->indices.size());
-    const size_t count =
-        meshopt_simplify(indices.data(), previous->indices.data(), previous->indices.size(),
-                         &previous->vertices[0].position.x, previous->vertices.size(),
-                         sizeof(Vertex), target, settings.targetError);
+        static_cast<size_t>(static_cast<float>(previous->size()) * settings.triangleRatio) / 3 * 3;
+    LevelIndices next;
+    next.indices.resize(previous->size());
+    const size_t count = meshopt_simplify(next.indices.data(), previous->data(), previous->size(),
+                                          &base.vertices[0].position.x, base.vertices.size(),
+                                          sizeof(Vertex), target, settings.targetError, 0, nullptr);
     // Stop when the library could not reduce enough to be worth another draw path.
-    if (count == 0 || count > previous->indices.size() * 3 / 4) break;
-    indices.resize(count);
-    levels.push_back(meshFromIndices(*previous, indices));
-    previous = &levels.back();
+    if (count == 0 || count > previous->size() * 3 / 4) break;
+    next.indices.resize(count);
+    next.indices.shrink_to_fit();
+    next.chunkTriangles = chunkOrder(base.vertices, next.indices);
+    built.coarser.push_back(std::move(next));
+    previous = &built.coarser.back().indices;
   }
 #else
-  (void)base;
+  (void)previous;
   (void)settings;
 #endif
-  return levels;
+  return built;
 }
 
 }  // namespace reflect

@@ -1,7 +1,8 @@
-// Level-of-detail chains for capture passes: level 0 is the mesh itself, each next level has
-// about a quarter of the triangles. Simplification is meshoptimizer's (natively from Debian's
-// libmeshoptimizer; in the browser the page runs npm's build of the same library and hands the
-// index lists back through meshFromIndices).
+// Levels of detail: level 0 is the mesh itself, each next level has about a quarter of the
+// triangles of the one before. A coarser level is kept as a list of triangles over level 0's
+// vertices (no vertex copy); only the GPU gets a compact copy (meshFromIndices).
+// Simplification is meshoptimizer's (natively from Debian's libmeshoptimizer; in the browser a
+// worker runs npm's build of the same library and hands the index lists back).
 #pragma once
 
 #include <cstdint>
@@ -18,11 +19,28 @@ struct LodSettings {
   size_t minTriangles = 256;    // meshes this small get no coarser level
 };
 
-// A mesh made of `base`'s vertices that `indices` use (unused vertices dropped).
+// A mesh made of `base`'s vertices that `indices` use (unused vertices dropped), the triangles in
+// the same order.
 MeshData meshFromIndices(const MeshData& base, const std::vector<uint32_t>& indices);
+// How many distinct vertices `indices` use (what meshFromIndices would keep).
+size_t verticesUsed(size_t vertexCount, const std::vector<uint32_t>& indices);
 
-// Levels 1.. of `base`, each simplified from the previous; empty where the library is missing
-// (the web build) or the mesh is too small to gain.
-std::vector<MeshData> buildLodLevels(const MeshData& base, const LodSettings& settings = {});
+// A level's triangles (indices into the base mesh's vertices) in chunk order, with the chunks'
+// triangle counts (core/mesh_chunks.h).
+struct LevelIndices {
+  std::vector<uint32_t> indices;
+  std::vector<uint32_t> chunkTriangles;
+};
+
+// What a build makes of a base mesh: its own triangles in chunk order (when asked), and its
+// coarser levels (when asked; none where the library is missing or the mesh is too small to gain).
+struct BuiltLevels {
+  bool chunked = false;
+  LevelIndices base;
+  bool coarse = false;
+  std::vector<LevelIndices> coarser;
+};
+BuiltLevels buildLevels(const MeshData& base, bool chunkBase, bool coarser,
+                        const LodSettings& settings = {});
 
 }  // namespace reflect

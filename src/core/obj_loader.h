@@ -1,9 +1,9 @@
-// Wavefront OBJ to MeshData through tinyobjloader, hardened for what users bring: quads and
-// polygons (triangulated), several objects, missing .mtl files, CR CR LF line ends, files
-// without normals (computed), relative indices; faces that name normals or texture coordinates
-// the file does not define (computed normals; texture coordinates are not used), with a warning;
-// and rejected with a message naming the file: garbage, no geometry, vertex indices out of range,
-// non-finite numbers, sizes past the limits.
+// Wavefront OBJ to MeshData (core/obj_stream.h parses it, in pieces), hardened for what users
+// bring: quads and polygons (triangulated), several objects, missing .mtl files, CR CR LF line
+// ends, files without normals (computed), relative indices; faces that name normals or texture
+// coordinates the file does not define (computed normals; texture coordinates are not used), with
+// a warning; and rejected with a message naming the file: garbage, no geometry, vertex indices out
+// of range, non-finite numbers, sizes past the limits.
 #pragma once
 
 #include <string>
@@ -30,6 +30,8 @@ struct LoadedMesh {
 // `name` is used in every message (usually the path or URL the text came from).
 Result<LoadedMesh> parseObj(const std::string& text, const std::string& name,
                             const ObjLimits& limits = {});
+// Reads the file in pieces of kObjReadPiece bytes, each parsed as it is read.
 Result<LoadedMesh> loadObjFile(const std::string& path, const ObjLimits& limits = {});
+inline constexpr size_t kObjReadPiece = 1u << 20;
 
 }  // namespace reflect

@@ -26,6 +26,7 @@ std::unique_ptr<Demo> makeDemoWith(Scene scene,
   const std::string error = demo->initGraphics();
   EXPECT_EQ(error, "");
   if (!error.empty()) return nullptr;
+  demo->waitForLevels();  // chunks and levels in from the first frame: repeatable pictures
   return demo;
 }
 

@@ -44,9 +44,10 @@ std::string unwrapped(const std::string& help) {
 const std::string kFolder = std::filesystem::temp_directory_path().string();
 
 TEST(CliOptions, ParsesRender) {
-  const CliOptions o = mustParse({"render", "--size", "640x480", "--time", "2.5", "--out", "a.png",
-                                  "--assets", kFolder, "--reference", "exact.png", "--scene",
-                                  "skybox", "--cube", "128", "--yaw", "-30", "--pitch", "12.5"});
+  const CliOptions o = mustParse(
+      {"render",   "--size", "640x480",     "--time",    "2.5",     "--out",  "a.png",
+       "--assets", kFolder,  "--reference", "exact.png", "--scene", "skybox", "--cube",
+       "128",      "--yaw",  "-30",         "--pitch",   "12.5",    "--eye",  "1.5,-2,3e1"});
   EXPECT_EQ(o.command, "render");
   EXPECT_EQ(o.width, 640);
   EXPECT_EQ(o.height, 480);
@@ -58,6 +59,9 @@ TEST(CliOptions, ParsesRender) {
   EXPECT_EQ(o.cubeSize, 128);
   EXPECT_EQ(o.yawDeg, -30.0f);
   EXPECT_EQ(o.pitchDeg, 12.5f);
+  ASSERT_TRUE(o.eye.has_value());
+  EXPECT_EQ(*o.eye, glm::vec3(1.5f, -2.0f, 30.0f));
+  EXPECT_FALSE(mustParse({"render"}).eye.has_value());  // the scene's own
 }
 
 TEST(CliOptions, DefaultsAreTheDocumentedOnes) {
@@ -133,6 +137,8 @@ TEST(CliOptions, ParsesBenchAndItsModes) {
 
   EXPECT_EQ(mustParse({"bench", "--policy", "every-frame"}).benchMode(), BenchMode::SinglePolicy);
   EXPECT_EQ(mustParse({"bench", "--growth"}).benchMode(), BenchMode::Growth);
+  EXPECT_EQ(mustParse({"bench", "--lod-sweep"}).benchMode(), BenchMode::LodSweep);
+  EXPECT_EQ(mustParse({"bench", "--view-lod-sweep"}).benchMode(), BenchMode::ViewLodSweep);
   o = mustParse({"bench", "--sweep", "--csv", "s.csv", "--svg", "s.svg"});
   EXPECT_EQ(o.benchMode(), BenchMode::Sweep);
   EXPECT_EQ(o.csv, "s.csv");
@@ -225,7 +231,14 @@ TEST(CliOptions, ErrorsSayWhatIsExpected) {
   EXPECT_EQ(errorOf({"render", "--assets", "/no/such/folder"}),
             "--assets /no/such/folder: not a folder");
   EXPECT_EQ(errorOf({"bench", "--growth", "--sweep"}),
-            "bench: --growth and --sweep are separate modes; give one of them");
+            "bench: --growth, --sweep, --lod-sweep and --view-lod-sweep are separate modes; give "
+            "one of them");
+  EXPECT_EQ(errorOf({"bench", "--lod-sweep", "--view-lod-sweep"}),
+            "bench: --growth, --sweep, --lod-sweep and --view-lod-sweep are separate modes; give "
+            "one of them");
+  EXPECT_EQ(errorOf({"render", "--eye", "1,2"}), "--eye: 1,2 is not three numbers X,Y,Z");
+  EXPECT_EQ(errorOf({"render", "--eye", "1,2,x"}), "--eye: 1,2,x is not three numbers X,Y,Z");
+  EXPECT_EQ(errorOf({"render", "--eye", "1,2,3,4"}), "--eye: 1,2,3,4 is not three numbers X,Y,Z");
   EXPECT_EQ(errorOf({"bench", "--csv", "a.csv"}),
             "bench: --csv is the sweep's output; add --sweep");
 }

@@ -309,10 +309,19 @@ TEST(FramePlanner, CoarserLevelsForObjectsSmallInTheFace) {
   EXPECT_EQ(drawOf(kNZ, 2).lod, 1);
   EXPECT_EQ(drawOf(kPZ, 3).lod, 2);
   EXPECT_EQ(drawOf(kPZ, 3).triangles, 250u);
-  // LOD off: full detail everywhere.
+  // LOD off (captureLod 0, full detail as a setting): full detail everywhere.
   FramePlanner off;
-  const FramePlan full = off.plan({mirrorAt({0, 0, 0}), withLevels(boxAt({0, 0, 40}))}, {}, {});
+  PlannerSettings lodOff;
+  lodOff.captureLod = 0.0f;
+  const FramePlan full = off.plan({mirrorAt({0, 0, 0}), withLevels(boxAt({0, 0, 40}))}, {}, lodOff);
   EXPECT_EQ(full.probes[0].faces[kPZ].draws.at(0).lod, 0);
+  // On by default (the rule `reflect bench --lod-sweep` chose); view LOD off by default.
+  FramePlanner byDefault;
+  const FramePlan coarse =
+      byDefault.plan({mirrorAt({0, 0, 0}), withLevels(boxAt({0, 0, 40}))}, {}, {});
+  EXPECT_EQ(coarse.probes[0].faces[kPZ].draws.at(0).lod, 2);
+  EXPECT_GT(PlannerSettings{}.captureLod, 0.0f);
+  EXPECT_EQ(PlannerSettings{}.viewLod, 0.0f);
 }
 
 TEST(FramePlanner, ViewLodPicksLevelsByTheObjectsSizeInTheView) {

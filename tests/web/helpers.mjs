@@ -27,11 +27,14 @@ export function collectErrors(page) {
   return errors;
 }
 
-// Opens the page with `query` and waits for demo.ready to resolve.
+// Opens the page with `query` and waits for demo.ready to resolve (the first frame is drawn), then
+// for the levels of detail, which the page builds after it (demo.lodReady()): every picture a test
+// takes afterwards is of the scene as it stays.
 export async function openDemo(page, query = '?paused') {
   await page.goto(query);
   await page.waitForFunction(() => window.demo !== undefined);
   await page.evaluate(() => window.demo.ready);
+  await page.evaluate(() => window.demo.lodReady());
 }
 
 // Resolves once the page's job queue (scene loads, model changes, the bench) is empty.
@@ -62,7 +65,8 @@ export async function readyOutcome(page) {
 // task (preserveDrawingBuffer is false, so the pixels are only valid until the task ends).
 // Returns { width, height, data: RGBA Uint8Array, stats }.
 export async function renderAndRead(page, t) {
-  const result = await page.evaluate((time) => {
+  const result = await page.evaluate(async (time) => {
+    await window.demo.lodReady();  // the scene as it stays, not its first frames
     if (time !== undefined && time !== null) window.demo.setTime(time);
     const stats = window.demo.frame(0);
     const canvas = document.getElementById('canvas');

@@ -360,6 +360,24 @@ void defineScene(Command& c, CliOptions& o) {
           degreesInto("--yaw", &o.yawDeg));
   c.value("--pitch", "DEG", "camera pitch in degrees, clamped to +/-89 (default 0)",
           "a number of degrees", kOptions, degreesInto("--pitch", &o.pitchDeg));
+  c.value("--eye", "X,Y,Z", "camera position (default: the scene's camera eye)",
+          "three numbers X,Y,Z", kOptions, [&o](const std::string& text) {
+            glm::vec3 eye(0.0f);
+            size_t start = 0;
+            for (int k = 0; k < 3; ++k) {
+              const size_t comma = text.find(',', start);
+              if ((k < 2) != (comma != std::string::npos)) {
+                return "--eye: " + text + " is not three numbers X,Y,Z";
+              }
+              const json value =
+                  numberJson(text.substr(start, k < 2 ? comma - start : std::string::npos));
+              if (value.is_null()) return "--eye: " + text + " is not three numbers X,Y,Z";
+              eye[k] = value.get<float>();
+              start = comma + 1;
+            }
+            o.eye = eye;
+            return std::string();
+          });
 }
 
 void defineSettings(Command& c, CliOptions& o) {
@@ -413,6 +431,21 @@ void defineBench(Command& c, CliOptions& o) {
            o.growth = on == "true";
            return std::string();
          });
+  c.flag("--lod-sweep",
+         "mode: each captureLod value against full detail: the reflector against the ray-traced "
+         "reference at t = 0..5 s, capture triangles and frame ms (the values interleaved); "
+         "prints the coarsest value within 0.1 dB and +1 point of pixels off by >32 levels",
+         kOptions, [&o](const std::string& on) {
+           o.lodSweep = on == "true";
+           return std::string();
+         });
+  c.flag("--view-lod-sweep",
+         "mode: each viewLod value against the full-detail view, the camera aimed at the "
+         "heaviest figure from several distances: PSNR and pixels off by >32 levels",
+         kOptions, [&o](const std::string& on) {
+           o.viewLodSweep = on == "true";
+           return std::string();
+         });
   c.flag("--sweep",
          "mode: every accuracy setting (capture point, distance-corrected lookup, face size, "
          "depth bits, filtering, RGBA16F, precision): frame ms and error against the ray-traced "
@@ -440,6 +473,24 @@ void defineBench(Command& c, CliOptions& o) {
           "frames each policy is compared with every-frame (0..100000; default " +
               std::to_string(o.accuracyFrames) + ")",
           accuracyFrames.expected(), kOptions, wholeNumberInto(accuracyFrames, &o.accuracyFrames));
+  c.value("--times", "T1,T2,...",
+          "LOD sweeps: the scene times measured, in seconds (default 0,1,2,3,4,5; the view "
+          "sweep 0,3)",
+          "numbers of seconds T1,T2,...", kOptions, [&o](const std::string& text) {
+            std::vector<double> times;
+            size_t start = 0;
+            for (;;) {
+              const size_t comma = text.find(',', start);
+              const json value = numberJson(text.substr(start, comma - start));
+              if (value.is_null())
+                return "--times: " + text + " is not numbers of seconds T1,T2,...";
+              times.push_back(value.get<double>());
+              if (comma == std::string::npos) break;
+              start = comma + 1;
+            }
+            o.times = times;
+            return std::string();
+          });
   c.value("--csv", "FILE", "sweep: write the rows as CSV (name, ms, psnr_db, rmse, p95, ...)",
           "a file name", kOptions, textInto(&o.csv));
   c.value("--svg", "FILE", "sweep: write a plot of error against time with the Pareto front",
@@ -474,6 +525,8 @@ bool isCommand(const std::string& name) {
 BenchMode CliOptions::benchMode() const {
   if (budgetSet) return BenchMode::Budget;
   if (sweep) return BenchMode::Sweep;
+  if (lodSweep) return BenchMode::LodSweep;
+  if (viewLodSweep) return BenchMode::ViewLodSweep;
   if (growth) return BenchMode::Growth;
   return policySet ? BenchMode::SinglePolicy : BenchMode::PolicyComparison;
 }
@@ -489,6 +542,7 @@ BenchCommandOptions CliOptions::benchOptions() const {
   b.warmup = warmup;
   b.accuracyFrames = accuracyFrames;
   b.planner = planner;
+  b.times = times;
   b.csv = csv;
   b.svg = svg;
   b.budgetMs = view.budget;
@@ -547,8 +601,10 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
         "bench: --budget is a mode of its own; give it without --sweep or --growth");
   }
   if (command == "bench") {
-    if (o.growth && o.sweep) {
-      return Out::failure("bench: --growth and --sweep are separate modes; give one of them");
+    if (int(o.growth) + int(o.sweep) + int(o.lodSweep) + int(o.viewLodSweep) > 1) {
+      return Out::failure(
+          "bench: --growth, --sweep, --lod-sweep and --view-lod-sweep are separate modes; give "
+          "one of them");
     }
     for (const char* output : {"--csv", "--svg"}) {
       if (definition->given(output) && !o.sweep) {

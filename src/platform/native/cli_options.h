@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "bench/bench_commands.h"
 #include "core/accuracy_settings.h"
 #include "core/frame_planner.h"
@@ -31,6 +33,7 @@ struct CliOptions {
   std::optional<int> cubeSize;    // otherwise the scene's capture.faceSize
   float yawDeg = 0.0f;
   float pitchDeg = 0.0f;
+  std::optional<glm::vec3> eye;  // otherwise the scene's camera eye
   PlannerSettings planner;
   AccuracySettings accuracy;
   bool policySet = false;     // bench: time just this policy instead of comparing them all
@@ -39,6 +42,9 @@ struct CliOptions {
   int accuracyFrames = 60;    // bench: frames compared with every-frame
   bool growth = false;        // bench: frame time against reflectors and triangles
   bool sweep = false;         // bench: accuracy settings against the ray-traced reference
+  bool lodSweep = false;      // bench: capture LOD values against full detail
+  bool viewLodSweep = false;  // bench: view LOD values against the full-detail view
+  std::vector<double> times;  // LOD sweeps: the scene times measured (empty: the sweep's own)
   std::string csv;            // sweep: CSV output
   std::string svg;            // sweep: SVG plot output
   ViewSettings view;          // bench: the budget (--budget)

@@ -94,22 +94,29 @@ std::string loadSceneModels(Demo& demo, const std::string& userDirectory,
       warnings->insert(warnings->end(), demo.lastWarnings().begin(), demo.lastWarnings().end());
     }
   };
-  std::string error = demo.loadMeshesFrom(builtInModelDirectory());
-  if (!error.empty()) return error;
-  keepWarnings();
-  if (!userDirectory.empty()) {
-    if (!std::filesystem::is_directory(userDirectory)) return userDirectory + ": not a folder";
-    for (const std::string& name : demo.scene().meshNames()) {
-      const std::string path = userDirectory + "/" + name;
-      if (!std::filesystem::exists(path)) {
-        std::fprintf(stderr, "reflect: %s not found, using the built-in %s\n", path.c_str(),
-                     name.c_str());
-        continue;
+  if (!userDirectory.empty() && !std::filesystem::is_directory(userDirectory)) {
+    return userDirectory + ": not a folder";
+  }
+  // The user's file where there is one (a built-in model it would replace is not parsed at all),
+  // the built-in one elsewhere.
+  for (const std::string& name : demo.scene().meshNames()) {
+    std::string path = builtInModelDirectory() + "/" + name;
+    if (!userDirectory.empty()) {
+      const std::string user = userDirectory + "/" + name;
+      if (std::filesystem::exists(user)) {
+        path = user;
+      } else {
+        const std::string notice = user + " not found, using the built-in " + name;
+        if (warnings) {
+          warnings->push_back(notice);  // the caller prints each once
+        } else {
+          std::fprintf(stderr, "reflect: %s\n", notice.c_str());
+        }
       }
-      error = demo.loadMesh(name, path);
-      if (!error.empty()) return error;
-      keepWarnings();
     }
+    const std::string error = demo.loadMesh(name, path);
+    if (!error.empty()) return error;
+    keepWarnings();
   }
   return loadSkybox(demo);
 }

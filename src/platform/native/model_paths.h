@@ -28,9 +28,9 @@ std::string checkSceneName(const std::string& nameOrPath);
 // path. An unknown name fails with checkSceneName's message.
 Result<Scene> loadNamedScene(const std::string& nameOrPath);
 
-// Loads every scene mesh from the built-in folder, then, if `userDirectory` is not empty, each
-// one that exists there by the same file name; then the scene's skybox images (paths relative to
-// the assets folder). Returns "" or the first error (naming the file). The loader's warnings
+// Loads every scene mesh: from `userDirectory` (when not empty) where it has a file of that name,
+// from the built-in folder otherwise; then the scene's skybox images (paths relative to the
+// assets folder). Returns "" or the first error (naming the file). The loader's warnings
 // (each naming its file) are added to `warnings` when it is given.
 std::string loadSceneModels(Demo& demo, const std::string& userDirectory,
                             std::vector<std::string>* warnings = nullptr);

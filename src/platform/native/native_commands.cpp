@@ -1,5 +1,6 @@
 #include "platform/native/native_commands.h"
 
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <set>
@@ -10,7 +11,9 @@
 #include "bench/accuracy.h"
 #include "bench/bench_commands.h"
 #include "bench/budget_bench.h"
+#include "bench/process_memory.h"
 #include "core/image.h"
+#include "gfx/offscreen_target.h"
 #include "platform/native/model_paths.h"
 
 namespace reflect {
@@ -31,9 +34,10 @@ class WarningPrinter {
   std::set<std::string> printed_;
 };
 
-// The demo the command line describes, its GL resources made in the current context.
+// The demo the command line describes, its GL resources made in the current context; with
+// `waitForLevels`, its chunks and levels built too.
 Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, const DemoVariant& variant,
-                                       WarningPrinter& warnings) {
+                                       WarningPrinter& warnings, bool waitForLevels = true) {
   using Out = Result<std::unique_ptr<Demo>>;
   Result<Scene> loaded = loadNamedScene(o.scene);
   if (!loaded) return Out::failure(loaded.error());
@@ -50,13 +54,48 @@ Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, const DemoVariant& v
   const std::string accuracyError =
       demo->setAccuracySettings(variant.defaultAccuracy ? AccuracySettings{} : o.accuracy);
   if (!accuracyError.empty()) return Out::failure(accuracyError);
+  if (o.eye) demo->camera().setEye(*o.eye);
   demo->camera().setAngles(o.yawDeg, o.pitchDeg);
   std::vector<std::string> loadWarnings;
   std::string error = loadSceneModels(*demo, o.assets, &loadWarnings);
   warnings.print(loadWarnings);
   if (error.empty()) error = demo->initGraphics();
   if (!error.empty()) return Out::failure(error);
+  // Renders and benchmarks start with every chunk and level built, so what they print does not
+  // depend on when a background build happened to finish.
+  if (waitForLevels) demo->waitForLevels();
   return Out(std::move(demo));
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// How soon the scene is on screen: one demo made as the page makes it (first frame first, its
+// chunks and levels built in the background after it), and this process's memory then.
+std::string printLoad(const CliOptions& o, WarningPrinter& warnings) {
+  const auto start = std::chrono::steady_clock::now();
+  auto demo = makeDemo(o, {}, warnings, false);
+  if (!demo) return demo.error();
+  const double loaded = millisecondsSince(start);
+  Result<OffscreenTarget> target = OffscreenTarget::create(o.width, o.height);
+  if (!target) return target.error();
+  demo.value()->frame(0.0, target.value().framebuffer(), o.width, o.height, true);
+  const double firstFrame = millisecondsSince(start);
+  const bool readyAtFirstFrame = demo.value()->lodReady();
+  demo.value()->waitForLevels();
+  const double ready = millisecondsSince(start);
+  std::printf(
+      "load: models parsed and GL resources made in %.0f ms; first frame (%dx%d) drawn %.0f ms "
+      "after the start%s; chunks and levels ready %.0f ms after the start (built in the "
+      "background after the first frame)\n",
+      loaded, o.width, o.height, firstFrame, readyAtFirstFrame ? " (levels already ready)" : "",
+      ready);
+  std::printf("memory after load: %s; meshes %.1f MB as drawn (GPU), %.1f MB kept on the CPU\n",
+              describe(processMemory()).c_str(), demo.value()->meshGpuBytes() / 1048576.0,
+              demo.value()->meshCpuBytes() / 1048576.0);
+  return {};
 }
 
 // The reference of the frame (--reference), and its error.
@@ -115,11 +154,19 @@ std::string runBenchCommand(const CliOptions& o) {
     return makeDemo(o, variant, warnings);
   };
   const BenchCommandOptions options = o.benchOptions();
+  if (o.benchMode() != BenchMode::Growth) {
+    std::string error = printLoad(o, warnings);
+    if (!error.empty()) return error;
+  }
   switch (o.benchMode()) {
     case BenchMode::Sweep:
       return runSweepCommand(options, factory);
     case BenchMode::Budget:
       return runBudgetCommand(options, factory);
+    case BenchMode::LodSweep:
+      return runLodSweepCommand(options, factory);
+    case BenchMode::ViewLodSweep:
+      return runViewLodSweepCommand(options, factory);
     case BenchMode::Growth:
       return runGrowthCommand(options, builtInModelDirectory());
     case BenchMode::SinglePolicy:

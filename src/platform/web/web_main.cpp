@@ -3,6 +3,7 @@
 // camera's moves are LookCamera's). Scene loading is in web_scenes.cpp, the settings in
 // web_settings.cpp.
 #include <emscripten/emscripten.h>
+#include <emscripten/heap.h>
 #include <emscripten/html5.h>
 
 #include <string>
@@ -85,7 +86,10 @@ EMSCRIPTEN_KEEPALIVE const char* rf_frame(const char* request) {
   // would crop the picture.
   int width = 0, height = 0;
   emscripten_webgl_get_drawing_buffer_size(state().context, &width, &height);
-  return reply(state().demo->frame(dt, 0, width, height, wait).toJson());
+  json stats = state().demo->frame(dt, 0, width, height, wait).toJson();
+  // The wasm memory now (it grows and never shrinks: what a load's peak left behind).
+  stats["heapBytes"] = emscripten_get_heap_size();
+  return reply(stats);
 }
 
 // The animation clock: {"seconds": t} sets it; returns {"seconds": now}.

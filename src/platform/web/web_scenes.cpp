@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/mesh_chunks.h"
 #include "core/mesh_lod.h"
 #include "core/scene_file.h"
 #include "core/settings_schema.h"
@@ -55,6 +57,42 @@ const reflect::MeshData* requestedMesh(const json& request) {
   return state().demo->meshLevel(request["name"].get<std::string>(), 0);
 }
 
+// The demo a mesh request names: the pending scene's ("pending": true) or the current one's.
+reflect::Demo* demoFor(bool pending) {
+  return pending ? state().pending.demo.get() : state().demo.get();
+}
+
+// The request's name, revision and chunk sizes, and `count` indices at `indices`.
+struct LevelRequest {
+  std::string name;
+  uint32_t revision = 0;
+  std::vector<uint32_t> chunkTriangles;
+  std::vector<uint32_t> indices;
+};
+
+reflect::Result<LevelRequest> levelRequest(const char* request, const char* function,
+                                           const uint32_t* indices, int count) {
+  using Out = reflect::Result<LevelRequest>;
+  auto r = parseRequest(request, function);
+  if (!r) return Out::failure(r.error());
+  std::string error;
+  const JsonReader in(r.value(), "", &error);
+  in.onlyKeys({"name", "revision", "chunkTriangles"});
+  LevelRequest out;
+  out.name = in["name"].string("");
+  out.revision = static_cast<uint32_t>(in["revision"].integer(0, 0, 1 << 30));
+  if (r.value().contains("chunkTriangles") && r.value()["chunkTriangles"].is_array()) {
+    for (const json& n : r.value()["chunkTriangles"]) {
+      if (!n.is_number_unsigned())
+        return Out::failure(std::string(function) + ": bad chunkTriangles");
+      out.chunkTriangles.push_back(n.get<uint32_t>());
+    }
+  }
+  if (!error.empty()) return Out::failure(std::string(function) + ": " + error);
+  if (indices && count > 0) out.indices.assign(indices, indices + count);
+  return out;
+}
+
 }  // namespace
 
 extern "C" {
@@ -77,6 +115,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_begin_scene(const char* request, const uint8
   scene.value().name = name.substr(0, name.rfind(".json"));
   auto& pending = state().pending;
   pending.demo = std::make_unique<reflect::Demo>(scene.take());
+  // The page's worker builds chunks and levels of detail (web/lod.js), after the first frame.
+  pending.demo->setLevelBuilds(reflect::Demo::LevelBuilds::External);
   const size_t images = skyboxFiles(pending.demo->scene()).size();
   pending.skyboxImages.assign(images, reflect::RgbaImage{});
   pending.skyboxReceived.assign(images, false);
@@ -93,10 +133,11 @@ EMSCRIPTEN_KEEPALIVE const char* rf_pending_files() {
       {{"meshes", scene.meshNames()}, {"skybox", skyboxFiles(scene)}, {"title", scene.title}});
 }
 
-// OBJ text (`bytes`) for mesh "name" of the pending scene, or of the current one when "pending"
-// is false (to replace a model in place or add one); "source" names the file in messages.
-// {} or {"error"} (the mesh it had is kept), or {"warnings": [...]} when the file loaded with
-// something the loader let pass (Demo::lastWarnings: each names the file and the first line).
+// OBJ text (`bytes`, whole) for mesh "name" of the pending scene, or of the current one when
+// "pending" is false (to replace a model in place or add one); "source" names the file in
+// messages. {} or {"error"} (the mesh it had is kept), or {"warnings": [...]} when the file loaded
+// with something the loader let pass (Demo::lastWarnings: each names the file and the first
+// line). Large files go through rf_mesh_stream_* instead.
 EMSCRIPTEN_KEEPALIVE const char* rf_load_mesh(const char* request, const uint8_t* bytes,
                                               int length) {
   auto r = parseRequest(request, "rf_load_mesh");
@@ -109,10 +150,72 @@ EMSCRIPTEN_KEEPALIVE const char* rf_load_mesh(const char* request, const uint8_t
   const bool pending = in["pending"].boolean(false);
   if (error.empty() && name.empty()) in["name"].fail("missing");
   if (!error.empty()) return replyError("rf_load_mesh: " + error);
-  reflect::Demo* demo = pending ? state().pending.demo.get() : state().demo.get();
+  reflect::Demo* demo = demoFor(pending);
   if (!demo) return replyError("no scene to load a model into");
   error = demo->loadMeshText(name, bytesText(bytes, length), source);
   if (!error.empty()) return replyError(error);
+  if (demo->lastWarnings().empty()) return replyDone();
+  return reply({{"warnings", demo->lastWarnings()}});
+}
+
+// Starts streaming an OBJ file into mesh "name" ("source" names it in messages; "pending" as for
+// rf_load_mesh). {"stream": id} or {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* rf_mesh_stream_begin(const char* request) {
+  auto r = parseRequest(request, "rf_mesh_stream_begin");
+  if (!r) return replyError(r.error());
+  std::string error;
+  const JsonReader in(r.value(), "", &error);
+  in.onlyKeys({"name", "source", "pending"});
+  const std::string name = in["name"].string("");
+  const std::string source = in["source"].string(name);
+  const bool pending = in["pending"].boolean(false);
+  if (error.empty() && name.empty()) in["name"].fail("missing");
+  if (!error.empty()) return replyError("rf_mesh_stream_begin: " + error);
+  if (!demoFor(pending)) return replyError("no scene to load a model into");
+  const int id = state().nextStream++;
+  state().streams.emplace(
+      id, reflect::web::MeshStream{name, pending, reflect::ObjStreamParser(source)});
+  return reply({{"stream", id}});
+}
+
+// The next piece of stream {"stream": id}: `bytes`, cut anywhere. {} or {"error"} (the file is
+// broken: the stream is closed, the mesh it had kept).
+EMSCRIPTEN_KEEPALIVE const char* rf_mesh_stream_feed(const char* request, const uint8_t* bytes,
+                                                     int length) {
+  auto r = parseRequest(request, "rf_mesh_stream_feed");
+  if (!r) return replyError(r.error());
+  std::string error;
+  const int id = JsonReader(r.value(), "", &error)["stream"].integer(0, 0, 1 << 30);
+  if (!error.empty()) return replyError("rf_mesh_stream_feed: " + error);
+  auto it = state().streams.find(id);
+  if (it == state().streams.end()) return replyError("no such model stream");
+  const std::string_view piece(reinterpret_cast<const char*>(bytes),
+                               bytes && length > 0 ? static_cast<size_t>(length) : 0);
+  if (it->second.parser.feed(piece)) return replyDone();
+  error = it->second.parser.error();
+  state().streams.erase(it);
+  return replyError(error);
+}
+
+// The end of stream {"stream": id} (or {"stream": id, "cancel": true} to drop it): the mesh
+// replaces the one of its name. {} or {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* rf_mesh_stream_end(const char* request) {
+  auto r = parseRequest(request, "rf_mesh_stream_end");
+  if (!r) return replyError(r.error());
+  std::string error;
+  const JsonReader in(r.value(), "", &error);
+  const int id = in["stream"].integer(0, 0, 1 << 30);
+  const bool cancel = in["cancel"].boolean(false);
+  if (!error.empty()) return replyError("rf_mesh_stream_end: " + error);
+  auto it = state().streams.find(id);
+  if (it == state().streams.end()) return cancel ? replyDone() : replyError("no such model stream");
+  reflect::web::MeshStream stream = std::move(it->second);
+  state().streams.erase(it);
+  if (cancel) return replyDone();
+  reflect::Demo* demo = demoFor(stream.pending);
+  if (!demo) return replyError("no scene to load a model into");
+  const std::string loadError = demo->setLoadedMesh(stream.name, stream.parser.finish());
+  if (!loadError.empty()) return replyError(loadError);
   if (demo->lastWarnings().empty()) return replyDone();
   return reply({{"warnings", demo->lastWarnings()}});
 }
@@ -207,21 +310,65 @@ EMSCRIPTEN_KEEPALIVE const char* rf_lod_settings_json() {
   return reply({{"maxLevels", s.maxLevels},
                 {"triangleRatio", s.triangleRatio},
                 {"targetError", s.targetError},
-                {"minTriangles", s.minTriangles}});
+                {"minTriangles", s.minTriangles},
+                {"chunkTriangles", reflect::kChunkTriangles}});
 }
 
-// The next level of detail of mesh {"name"}: `count` indices into its level-0 vertices.
+// What is left to build for the page's worker (web/lod.js): [{"name", "revision", "chunks":
+// bool, "coarser": bool}]. Coarser levels are asked for only while a LOD setting is on.
+EMSCRIPTEN_KEEPALIVE const char* rf_level_jobs() {
+  json jobs = json::array();
+  if (state().demo) {
+    for (const reflect::Demo::LevelJob& job : state().demo->levelJobs()) {
+      jobs.push_back({{"name", job.name},
+                      {"revision", job.revision},
+                      {"chunks", job.chunks},
+                      {"coarser", job.coarser}});
+    }
+  }
+  return reply(jobs);
+}
+
+// Mesh {"name", "revision"}'s triangles in chunk order: `count` indices (a reordering of its
+// own) and {"chunkTriangles": [...]} the chunks' triangle counts. {} or {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* rf_set_mesh_chunks(const char* request, const uint32_t* indices,
+                                                    int count) {
+  if (!state().demo) return replyError("no scene loaded");
+  auto r = levelRequest(request, "rf_set_mesh_chunks", indices, count);
+  if (!r) return replyError(r.error());
+  LevelRequest& q = r.value();
+  return replyError(
+      state().demo->setMeshChunks(q.name, q.revision, std::move(q.indices), q.chunkTriangles));
+}
+
+// The next coarser level of mesh {"name", "revision"}: `count` indices into its level-0
+// vertices, in chunk order, {"chunkTriangles": [...]}. {} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* rf_add_lod(const char* request, const uint32_t* indices,
                                             int count) {
-  auto r = parseRequest(request, "rf_add_lod");
-  if (!r) return replyError(r.error());
   if (!state().demo) return replyError("no scene loaded");
-  std::string error;
-  const std::string name = JsonReader(r.value(), "", &error)["name"].string("");
-  if (!error.empty()) return replyError("rf_add_lod: " + error);
-  std::vector<uint32_t> list;
-  if (indices && count > 0) list.assign(indices, indices + count);
-  return replyError(state().demo->addLodLevel(name, list));
+  auto r = levelRequest(request, "rf_add_lod", indices, count);
+  if (!r) return replyError(r.error());
+  LevelRequest& q = r.value();
+  return replyError(
+      state().demo->addLodLevel(q.name, q.revision, std::move(q.indices), q.chunkTriangles));
+}
+
+// Every coarser level of mesh {"name", "revision"} has been given. {} or {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* rf_finish_levels(const char* request) {
+  if (!state().demo) return replyError("no scene loaded");
+  auto r = levelRequest(request, "rf_finish_levels", nullptr, 0);
+  if (!r) return replyError(r.error());
+  return replyError(state().demo->finishLevels(r.value().name, r.value().revision));
+}
+
+// Triangles of each level of mesh {"name"}, level 0 first: {"levels": [..]} ({} if none).
+EMSCRIPTEN_KEEPALIVE const char* rf_level_triangles(const char* request) {
+  auto r = parseRequest(request, "rf_level_triangles");
+  if (!r) return replyError(r.error());
+  if (!state().demo || !r.value().contains("name") || !r.value()["name"].is_string()) {
+    return reply(json::object());
+  }
+  return reply({{"levels", state().demo->levelTriangles(r.value()["name"].get<std::string>())}});
 }
 
 // Adds an object to the current scene: the request is an entry of a scene file's "objects" whose

@@ -10,6 +10,7 @@
 
 #include <emscripten/html5.h>
 
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -18,6 +19,7 @@
 #include "app/demo.h"
 #include "core/image.h"
 #include "core/json_reader.h"
+#include "core/obj_stream.h"
 #include "core/result.h"
 #include "core/settings_schema.h"
 
@@ -29,9 +31,19 @@ struct PendingScene {
   std::vector<bool> skyboxReceived;
 };
 
+// An OBJ file being streamed in (rf_mesh_stream_*): the page feeds each piece of the download as
+// it arrives, so the text is never whole in wasm memory.
+struct MeshStream {
+  std::string name;      // the mesh it becomes
+  bool pending = false;  // of the scene being loaded (else of the current one)
+  ObjStreamParser parser;
+};
+
 struct WebState {
   std::unique_ptr<Demo> demo;  // what the page shows
   PendingScene pending;        // a scene being loaded; replaces `demo` only once it is complete
+  std::map<int, MeshStream> streams;
+  int nextStream = 1;
   EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = 0;
   std::string reply;  // storage for the JSON handed back to JavaScript
   ViewSettings view;  // show error, auto and its budget (showError is also the demo's)
