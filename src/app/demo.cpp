@@ -250,8 +250,9 @@ std::string Demo::addLodLevel(const std::string& name, uint32_t revision,
   level.indices = std::move(indices);
   level.chunks = chunks.take();
   for (SceneRenderer* r : {renderer_.get(), exactRenderer_.get()}) {
-    if (r) r->setMesh(name, static_cast<int>(entry->coarser.size() + 1),
-                      meshFromIndices(base, level.indices));
+    if (r)
+      r->setMesh(name, static_cast<int>(entry->coarser.size() + 1),
+                 meshFromIndices(base, level.indices));
   }
   entry->coarser.push_back(std::move(level));
   return {};
@@ -416,7 +417,8 @@ std::string Demo::setUpExact() {
     Result<ExactTracer> tracer = ExactTracer::create();
     if (!tracer) return tracer.error();
     exactTracer_ = std::make_unique<ExactTracer>(tracer.take());
-    for (const auto& [name, entry] : meshes_) exactTracer_->setMesh(name, bvhFor(name, *entry.base));
+    for (const auto& [name, entry] : meshes_)
+      exactTracer_->setMesh(name, bvhFor(name, *entry.base));
     std::string error = exactTracer_->setSkybox(skyboxFaces());
     if (!error.empty()) return error;
   }

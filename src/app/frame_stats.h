@@ -32,7 +32,7 @@ struct FrameStats {
   bool lodReady = true;
   size_t meshBytes = 0;     // the meshes as the GPU holds them (Demo::meshGpuBytes)
   size_t meshCpuBytes = 0;  // and as the demo keeps them on the CPU (Demo::meshCpuBytes)
-  std::string error;  // what went wrong this frame (the page shows it), or empty
+  std::string error;        // what went wrong this frame (the page shows it), or empty
   // The live error view (show error): this frame's reflectors against the exact mode's.
   bool errorView = false;
   double errorPsnrDb = 0;        // reflector PSNR (99, the cap, when identical)

@@ -32,8 +32,15 @@ struct BenchCommandOptions {
   double budgetMs = 0.0;      // --budget: the frame budget "auto" picks within
 };
 
-enum class BenchMode { PolicyComparison, SinglePolicy, Growth, Sweep, LodSweep, ViewLodSweep,
-                       Budget };
+enum class BenchMode {
+  PolicyComparison,
+  SinglePolicy,
+  Growth,
+  Sweep,
+  LodSweep,
+  ViewLodSweep,
+  Budget
+};
 
 // Timed frames (per policy, per setting, per cell) and warm-up frames when not given.
 int benchFramesDefault(BenchMode mode);

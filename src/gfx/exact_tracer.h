@@ -27,7 +27,8 @@ inline constexpr GLint kExactNormalsUnit = kExactNodesUnit + 2;
 inline constexpr GLint kExactSceneUnit = kExactNodesUnit + 3;
 inline constexpr GLint kExactSkyUnit = kExactNodesUnit + 4;
 // WebGL2 and GL ES 3.0 promise 16 units to a fragment shader.
-static_assert(kExactSkyUnit < 16, "the exact mode's samplers must fit the 16 units ES 3.0 promises");
+static_assert(kExactSkyUnit < 16,
+              "the exact mode's samplers must fit the 16 units ES 3.0 promises");
 
 class ExactTracer {
  public:

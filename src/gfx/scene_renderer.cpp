@@ -54,34 +54,35 @@ float uniformScale(const glm::mat4& model) {
 // The reflectors' program with the search SEARCH (environment.frag) and its uniforms.
 Result<SceneRenderer::EnvironmentProgram> SceneRenderer::buildEnvironment(
     int search, bool mediump, const std::string& precision) {
-  const std::string lookup = precision + "#define SEARCH " + std::to_string(search) +
-                             "\n#define DISTANCE_ITERATIONS 2\n";
-  Result<ShaderProgram> built = ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
+  const std::string lookup =
+      precision + "#define SEARCH " + std::to_string(search) + "\n#define DISTANCE_ITERATIONS 2\n";
+  Result<ShaderProgram> built =
+      ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
   if (!built) return Result<EnvironmentProgram>::failure(built.error());
   const ShaderProgram& e = built.value();
   EnvironmentProgram env{ShaderProgram{},
-                        CaptureUniforms::of(e),
-                        e.uniform("u_viewProjection"),
-                        e.uniform("u_model"),
-                        e.uniform("u_normalMatrix"),
-                        e.uniform("u_colour"),
-                        e.uniform("u_viewPosition"),
-                        e.uniform("u_reflectionWeight"),
-                        e.uniform("u_baseWeight"),
-                        e.uniform("u_refracts"),
-                        e.uniform("u_eta"),
-                        e.uniform("u_fresnelF0"),
-                        e.uniform("u_fresnel"),
-                        e.optionalUniform("u_twoSurfaces"),
-                        e.optionalUniform("u_glassSphere"),
-                        e.optionalUniform("u_probeCentre"),
-                        e.optionalUniform("u_distanceUnit"),
-                        e.optionalUniform("u_search"),
-                        e.uniform("u_outputDirection"),
-                        e.optionalUniform("u_layers"),
-                        e.optionalUniform("u_faceSize"),
-                        e.optionalUniform("u_topLevel"),
-                        e.optionalUniform("u_pyramidTile")};
+                         CaptureUniforms::of(e),
+                         e.uniform("u_viewProjection"),
+                         e.uniform("u_model"),
+                         e.uniform("u_normalMatrix"),
+                         e.uniform("u_colour"),
+                         e.uniform("u_viewPosition"),
+                         e.uniform("u_reflectionWeight"),
+                         e.uniform("u_baseWeight"),
+                         e.uniform("u_refracts"),
+                         e.uniform("u_eta"),
+                         e.uniform("u_fresnelF0"),
+                         e.uniform("u_fresnel"),
+                         e.optionalUniform("u_twoSurfaces"),
+                         e.optionalUniform("u_glassSphere"),
+                         e.optionalUniform("u_probeCentre"),
+                         e.optionalUniform("u_distanceUnit"),
+                         e.optionalUniform("u_search"),
+                         e.uniform("u_outputDirection"),
+                         e.optionalUniform("u_layers"),
+                         e.optionalUniform("u_faceSize"),
+                         e.optionalUniform("u_topLevel"),
+                         e.optionalUniform("u_pyramidTile")};
   glUseProgram(e.id());
   glUniform1i(e.optionalUniform("u_environment"), kEnvironmentUnit);
   glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
@@ -102,7 +103,8 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   if (!environment) return Result<SceneRenderer>::failure(environment.error());
   // Reflectors that need no search (a skybox, a probe whose surroundings are all far) are drawn
   // by a program without one: a software rasteriser pays for a branch not taken.
-  const bool searches = accuracy.search == Search::Linear || accuracy.search == Search::Hierarchical;
+  const bool searches =
+      accuracy.search == Search::Linear || accuracy.search == Search::Hierarchical;
   Result<EnvironmentProgram> plainEnvironment =
       searches ? buildEnvironment(static_cast<int>(Search::Plain), mediump, precision)
                : Result<EnvironmentProgram>(EnvironmentProgram{});
