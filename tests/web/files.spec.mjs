@@ -17,7 +17,10 @@ const MODELS = fileURLToPath(new URL('../../assets/models/', import.meta.url));
 const real = (name) => readFileSync(MODELS + name, 'utf8');
 const CUBE = real('cube.obj');  // 12 triangles
 
-const triangles = (page) => page.evaluate(() => window.demo.frame(0).triangles);
+// The triangles the main view draws: what the scene holds (every object is in view, at full
+// detail). Not the capture's: with the default when-changed policy a paused frame captures only
+// when something changed, so a frame's total depends on what came before it.
+const triangles = (page) => page.evaluate(() => window.demo.frame(0).mainTriangles);
 
 // Drops files on the canvas the way a browser does: a drop event carrying a DataTransfer.
 async function drop(page, files) {
