@@ -40,6 +40,18 @@ export function screenshot(session, canvas) {
   }, 'image/png'));
 }
 
+// Everything a link carries (url_state.js buildQuery).
+function linkState(session) {
+  const accuracy = session.bridge.accuracy();
+  return {
+    scene: session.scene.name, cube: session.cubeSize, faceSize: session.faceSize(),
+    planner: session.bridge.plannerState(), paused: session.paused, time: session.bridge.time(),
+    camera: session.bridge.camera(), home: session.homeCamera, assets: session.assets,
+    acc: session.modes.linkName(accuracy, session.defaultAccuracy), accuracy,
+    materials: session.changedMaterials(), view: session.bridge.view(),
+  };
+}
+
 // The address bar follows the session: on every change it shows the link to what is on screen.
 // Changes in quick succession (a drag) are written at most every 100 ms, the last one always
 // (browsers refuse floods of history changes).
@@ -51,7 +63,7 @@ export class AddressBar {
     session.onChange(() => this.changed());
   }
 
-  query() { return buildQuery(this.session.linkState(), this.session.schema); }
+  query() { return buildQuery(linkState(this.session), this.session.schema); }
 
   sync() {
     clearTimeout(this.timer);

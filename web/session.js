@@ -6,9 +6,9 @@
 // of detail are built. Levels are built after each first frame, off the main thread (lod.js), and
 // never hold a job: a scene switch cancels the build under way.
 import { AccuracyModes } from './accuracy.js';
-import { LevelBuilder } from './lod.js';
 import { showMessage } from './messages.js';
 import { loadScene, readFileMesh, sceneUrl } from './scene_loader.js';
+import { SessionLevels } from './session_levels.js';
 
 // A model's loader warning (it loaded, with something let pass): an info message.
 const warnInfo = (text) => showMessage(text, 'info');
@@ -27,9 +27,7 @@ export class Session {
     this.figures = [];
     this.overrides = new Map();  // mesh name -> { file, source }: the user's replacement models
     this.defaultAccuracy = Object.fromEntries(schema.accuracy.map((i) => [i.name, i.default]));
-    this.lodLevels = {};
-    this.levels = new LevelBuilder(bridge);
-    this.levelsDone = Promise.resolve({});
+    this.levelState = new SessionLevels(bridge, () => this.changed('models'));
     this.lastStats = {};
     this.firstFrameStats = null;  // the stats of the first frame after the last scene load
     this.listeners = [];
@@ -60,27 +58,12 @@ export class Session {
   }
 
   // Builds what the C++ side still lacks (chunks; levels while a LOD setting is on), in the
-  // background; the promise resolves when that build is done.
-  startLevels() {
-    this.levelsDone = this.levels.build().then((built) => {
-      if (built && Object.keys(built).length) {
-        this.lodLevels = { ...this.lodLevels, ...built };
-        this.changed('models');
-      }
-      return built;
-    });
-    return this.levelsDone;
-  }
-
+  // background (session_levels.js); resolves when that build is done.
+  startLevels() { return this.levelState.start(); }
   // Resolves (to { mesh: [triangles a level] }) once nothing is left to build.
-  async lodReady() {
-    for (let attempt = 0; attempt < 8; ++attempt) {
-      await this.levelsDone;
-      if (!this.bridge.levelJobs().length) break;
-      if (!this.levels.running) this.startLevels();
-    }
-    return this.lodLevels;
-  }
+  lodReady() { return this.levelState.ready(); }
+  get lodLevels() { return this.levelState.lodLevels; }
+  get levels() { return this.levelState.builder; }
 
   faceSize() { return this.bridge.scene().cubeFaceSize || this.cubeSize; }
   frame(dt, waitForGpu = false) {
@@ -132,7 +115,7 @@ export class Session {
     } else {
       this.figures = [];
     }
-    this.lodLevels = {};
+    this.levelState.lodLevels = {};
     // First frame first: the scene is drawn as parsed; its chunks and levels come after.
     this.firstFrameStats = this.frame(0);
     this.changed('scene');
@@ -264,15 +247,4 @@ export class Session {
     this.changed('time');
   }
 
-  // Everything a link carries (url_state.js buildQuery).
-  linkState() {
-    const accuracy = this.bridge.accuracy();
-    return {
-      scene: this.scene.name, cube: this.cubeSize, faceSize: this.faceSize(),
-      planner: this.bridge.plannerState(), paused: this.paused, time: this.bridge.time(),
-      camera: this.bridge.camera(), home: this.homeCamera, assets: this.assets,
-      acc: this.modes.linkName(accuracy, this.defaultAccuracy), accuracy,
-      materials: this.changedMaterials(), view: this.bridge.view(),
-    };
-  }
 }
