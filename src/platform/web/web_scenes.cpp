@@ -93,6 +93,29 @@ reflect::Result<LevelRequest> levelRequest(const char* request, const char* func
   return out;
 }
 
+// Which mesh a model load goes to: {"name", "source" (names the file in messages), "pending"
+// (the scene being loaded, else the current one)}. Sets `error` (prefixed with `call`) when bad.
+struct MeshTarget {
+  std::string name, source;
+  bool pending = false;
+};
+MeshTarget meshTarget(const json& request, const char* call, std::string* error) {
+  const JsonReader in(request, "", error);
+  in.onlyKeys({"name", "source", "pending"});
+  MeshTarget target{in["name"].string(""), "", in["pending"].boolean(false)};
+  target.source = in["source"].string(target.name);
+  if (error->empty() && target.name.empty()) in["name"].fail("missing");
+  if (!error->empty()) *error = std::string(call) + ": " + *error;
+  return target;
+}
+
+// A model load's reply: {"error"}, {} or {"warnings": [...]} (what the loader let pass).
+const char* replyLoaded(const reflect::Demo& demo, const std::string& error) {
+  if (!error.empty()) return replyError(error);
+  if (demo.lastWarnings().empty()) return replyDone();
+  return reply({{"warnings", demo.lastWarnings()}});
+}
+
 }  // namespace
 
 extern "C" {
@@ -143,19 +166,12 @@ EMSCRIPTEN_KEEPALIVE const char* rf_load_mesh(const char* request, const uint8_t
   auto r = parseRequest(request, "rf_load_mesh");
   if (!r) return replyError(r.error());
   std::string error;
-  const JsonReader in(r.value(), "", &error);
-  in.onlyKeys({"name", "source", "pending"});
-  const std::string name = in["name"].string("");
-  const std::string source = in["source"].string(name);
-  const bool pending = in["pending"].boolean(false);
-  if (error.empty() && name.empty()) in["name"].fail("missing");
-  if (!error.empty()) return replyError("rf_load_mesh: " + error);
-  reflect::Demo* demo = demoFor(pending);
-  if (!demo) return replyError("no scene to load a model into");
-  error = demo->loadMeshText(name, bytesText(bytes, length), source);
+  const MeshTarget target = meshTarget(r.value(), "rf_load_mesh", &error);
   if (!error.empty()) return replyError(error);
-  if (demo->lastWarnings().empty()) return replyDone();
-  return reply({{"warnings", demo->lastWarnings()}});
+  reflect::Demo* demo = demoFor(target.pending);
+  if (!demo) return replyError("no scene to load a model into");
+  return replyLoaded(*demo,
+                     demo->loadMeshText(target.name, bytesText(bytes, length), target.source));
 }
 
 // Starts streaming an OBJ file into mesh "name" ("source" names it in messages; "pending" as for
@@ -164,17 +180,12 @@ EMSCRIPTEN_KEEPALIVE const char* rf_mesh_stream_begin(const char* request) {
   auto r = parseRequest(request, "rf_mesh_stream_begin");
   if (!r) return replyError(r.error());
   std::string error;
-  const JsonReader in(r.value(), "", &error);
-  in.onlyKeys({"name", "source", "pending"});
-  const std::string name = in["name"].string("");
-  const std::string source = in["source"].string(name);
-  const bool pending = in["pending"].boolean(false);
-  if (error.empty() && name.empty()) in["name"].fail("missing");
-  if (!error.empty()) return replyError("rf_mesh_stream_begin: " + error);
-  if (!demoFor(pending)) return replyError("no scene to load a model into");
+  const MeshTarget target = meshTarget(r.value(), "rf_mesh_stream_begin", &error);
+  if (!error.empty()) return replyError(error);
+  if (!demoFor(target.pending)) return replyError("no scene to load a model into");
   const int id = state().nextStream++;
-  state().streams.emplace(
-      id, reflect::web::MeshStream{name, pending, reflect::ObjStreamParser(source)});
+  state().streams.emplace(id, reflect::web::MeshStream{target.name, target.pending,
+                                                       reflect::ObjStreamParser(target.source)});
   return reply({{"stream", id}});
 }
 
@@ -214,10 +225,7 @@ EMSCRIPTEN_KEEPALIVE const char* rf_mesh_stream_end(const char* request) {
   if (cancel) return replyDone();
   reflect::Demo* demo = demoFor(stream.pending);
   if (!demo) return replyError("no scene to load a model into");
-  const std::string loadError = demo->setLoadedMesh(stream.name, stream.parser.finish());
-  if (!loadError.empty()) return replyError(loadError);
-  if (demo->lastWarnings().empty()) return replyDone();
-  return reply({{"warnings", demo->lastWarnings()}});
+  return replyLoaded(*demo, demo->setLoadedMesh(stream.name, stream.parser.finish()));
 }
 
 // Skybox image "index" (in the order of rf_pending_files) as PNG/JPEG `bytes`; "source" names it.
