@@ -116,8 +116,13 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     // The first chain: the nearest surfaces' codes (min over the cell) and how far back their
     // objects reach (max). The second (two layers): what lies behind them, from its nearest to
     // its far end. (The capture wrote each far end with the thickness its pass cannot see.)
+    // Each stored range is widened by a code either side: a surface square to the face (the
+    // floor below the probe) spans no depth across a texel, and its codes round to one value
+    // or the next from texel to texel; a ray crossing it where the code steps down would be in
+    // front of one texel's surface and behind the next's, and slip through (single wrong
+    // pixels in the mirror's image of the floor, 2-3 a frame in the default scene).
     vec2 first = vec2(cellCodes(u_pyramid, cell, f, level)) * kCode;
-    float eFront = first.x, eBack = first.y;
+    float eFront = first.x - kCode, eBack = first.y + kCode;
     vec2 behind = vec2(1.0);
     if (u_layers == 2) behind = vec2(cellCodes(u_pyramid2, cell, f, level)) * kCode;
     // In front of every surface in the cell, or behind every object there and in front of

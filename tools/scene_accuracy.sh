@@ -1,42 +1,30 @@
 #!/usr/bin/env bash
-# Every shipped scene's reflectors against the exact (Embree) reference, the course's lookup
-# beside the default: PSNR, pixels off by more than 32 levels, at held-out times (the constants
-# were tuned at t = 0..7 s in whole seconds on the default scene). Prints a Markdown table.
-#   tools/scene_accuracy.sh [SIZE] [TIMES...]      (default 400x400, t = 0.5 2.5 4.5 6.5)
+# Every shipped scene's reflectors against the exact (Embree) reference, the course's setting
+# beside the default: frame time (the two interleaved frame by frame, every-frame capture),
+# reflector PSNR and pixels off by more than 32 levels, at held-out times (the constants were
+# tuned at t = 0..7 s in whole seconds on the default scene). A Markdown table from
+# `reflect bench --sweep --only original,default` per scene.
+#   tools/scene_accuracy.sh [SIZE] [TIMES]   (default 400x400 and 0.5,2.5,4.5,6.5; SCENES="a b")
 set -euo pipefail
 cd "$(dirname "$0")/.."
 reflect=build/native/reflect
 size="${1:-400x400}"
-shift || true
-times=("${@:-0.5 2.5 4.5 6.5}")
-read -r -a times <<<"${times[*]}"
+times="${2:-0.5,2.5,4.5,6.5}"
 scenes=${SCENES:-}
 [ -n "$scenes" ] || scenes=$("$reflect" render --help | sed -n 's/.*a shipped scene (\([^)]*\)).*/\1/p' | tr -d ',')
-[ -n "$scenes" ] || scenes="ex12-2 ex12-1 ex12-2-fresnel glass-sphere shared-probe skybox skybox-grid two-mirrors"
-declare -A settings=(
-  [course]="--capture-at-origin --search plain --glass-surfaces 1"
-  [default]=""
-)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-echo "| scene | setting | mean PSNR dB | worst PSNR dB | pixels > 32 levels per frame (mean; worst) |"
-echo "|---|---|---|---|---|"
+[ -n "$scenes" ] || { echo "no scene list in 'reflect render --help'" >&2; exit 1; }
+echo "| scene | setting | frame ms (median) | ratio | mean PSNR dB | worst PSNR dB | pixels > 32 levels per frame (mean; worst) |"
+echo "|---|---|---|---|---|---|---|"
 for scene in $scenes; do
-  for name in course default; do
-    psnrs=() counts=()
-    for t in "${times[@]}"; do
-      # shellcheck disable=SC2086  # the settings are words on purpose
-      line=$("$reflect" render --scene "$scene" --size "$size" --time "$t" ${settings[$name]} \
-        --out "$tmp/f.png" --reference "$tmp/r.png" | grep 'reflector: PSNR')
-      psnrs+=("$(sed -n 's/.*PSNR \([0-9.infa-]*\) dB.*/\1/p' <<<"$line")")
-      counts+=("$(sed -n 's/.*more than 32 levels \([0-9]*\).*/\1/p' <<<"$line")")
-    done
-    python3 - "$scene" "$name" "${psnrs[*]}" "${counts[*]}" <<'PY'
-import sys
-scene, name, p, c = sys.argv[1:5]
-p = [float(x) for x in p.split()]
-c = [int(x) for x in c.split()]
-print(f"| {scene} | {name} | {sum(p)/len(p):.2f} | {min(p):.2f} | {sum(c)/len(c):.1f}; {max(c)} |")
-PY
-  done
+  "$reflect" bench --sweep --only original,default --scene "$scene" --size "$size" \
+    --times "$times" --frames 20 |
+    awk -F'|' -v scene="$scene" '
+      # Sweep rows: | name | setting | face | ms (p10-p90) | CPU | PSNR (worst) | >32 (worst) | ...
+      $2 ~ /^ (original|default) $/ {
+        name = $2; gsub(/ /, "", name)
+        split($5, ms, " "); split($7, psnr, "[ ()]+"); split($8, vis, "[ ()]+")
+        if (name == "original") { base = ms[1]; label = "course" } else label = "default"
+        printf "| %s | %s | %s | %.2fx | %s | %s | %s; %s |\n", scene, label, ms[1], ms[1] / base,
+               psnr[2], psnr[3], vis[2], vis[3]
+      }'
 done

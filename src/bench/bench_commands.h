@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "app/demo.h"
 #include "core/frame_planner.h"
 #include "core/result.h"
@@ -24,12 +26,14 @@ struct BenchCommandOptions {
   // Unset: each mode's own default (benchFramesDefault, benchWarmupDefault).
   std::optional<int> frames;
   std::optional<int> warmup;
-  int accuracyFrames = 60;    // the policy comparison: frames compared with every-frame
-  PlannerSettings planner;    // the single policy; the comparison's time-sliced, every-n, LODs
-  std::vector<double> times;  // the LOD sweeps: scene times measured (empty: their own)
-  std::string csv;            // the sweep: CSV output ("" = none)
-  std::string svg;            // the sweep: SVG plot output ("" = none)
-  double budgetMs = 0.0;      // --budget: the frame budget "auto" picks within
+  int accuracyFrames = 60;        // the policy comparison: frames compared with every-frame
+  PlannerSettings planner;        // the single policy; the comparison's time-sliced, every-n, LODs
+  std::vector<double> times;      // the sweeps: scene times measured (empty: their own)
+  std::vector<std::string> only;  // the sweep: just these settings ("" = all)
+  std::optional<glm::ivec2> sweepSize;  // the sweep: the frame size, if not its own
+  std::string csv;                      // the sweep: CSV output ("" = none)
+  std::string svg;                      // the sweep: SVG plot output ("" = none)
+  double budgetMs = 0.0;                // --budget: the frame budget "auto" picks within
 };
 
 enum class BenchMode {

@@ -138,7 +138,7 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     const double n = static_cast<double>(o.heldOutTimes.size());
     row.rmse = std::sqrt(heldOutMse);
     row.psnrDb = psnrFromRmse(row.rmse);
-    row.tunedPsnrDb = psnrFromRmse(std::sqrt(tunedMse));
+    row.tunedPsnrDb = o.tunedTimes.empty() ? std::nan("") : psnrFromRmse(std::sqrt(tunedMse));
     row.offReflectorPsnrDb = psnrFromRmse(std::sqrt(offMse / n));
     row.p95 = p95 / n;
     row.meanAngularErrorDeg = angle / n;
@@ -163,13 +163,15 @@ std::string sweepTable(const std::vector<SweepRow>& rows) {
       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   char line[640];
   for (const SweepRow& r : rows) {
+    char tuned[32] = "-";  // not measured
+    if (!std::isnan(r.tunedPsnrDb)) std::snprintf(tuned, sizeof tuned, "%.2f", r.tunedPsnrDb);
     std::snprintf(line, sizeof line,
                   "| %s | %s | %d | %.2f (%.2f-%.2f) | %.2f | %.2f (%.2f) | %.1f (%.0f) | %.2f | "
-                  "%.1f | %.0f | %.3f | %.1f | %.2f | %s |\n",
+                  "%.1f | %.0f | %.3f | %.1f | %s | %s |\n",
                   r.setting.name.c_str(), r.setting.accuracy.describe().c_str(), r.setting.faceSize,
                   r.medianMs, r.p10Ms, r.p90Ms, r.cpuMs, r.psnrDb, r.worstPsnrDb, r.visiblePerFrame,
                   r.worstVisible, r.rmse, r.p95, r.maxError, r.meanAngularErrorDeg,
-                  r.offReflectorPsnrDb, r.tunedPsnrDb, r.pareto ? "yes" : "");
+                  r.offReflectorPsnrDb, tuned, r.pareto ? "yes" : "");
     out += line;
   }
   return out;

@@ -349,6 +349,7 @@ void defineScene(Command& c, CliOptions& o) {
             }
             o.width = w.get<int>();
             o.height = h.get<int>();
+            o.sizeSet = true;
             return std::string();
           });
   const SettingInfo cube = wholeNumber("cube", 1, Demo::kMaxCubeFaceSize);
@@ -474,8 +475,9 @@ void defineBench(Command& c, CliOptions& o) {
               std::to_string(o.accuracyFrames) + ")",
           accuracyFrames.expected(), kOptions, wholeNumberInto(accuracyFrames, &o.accuracyFrames));
   c.value("--times", "T1,T2,...",
-          "LOD sweeps: the scene times measured, in seconds (default 0,1,2,3,4,5; the view "
-          "sweep 0,3)",
+          "the sweeps: the scene times measured, in seconds (default 0,1,2,3,4,5; the view "
+          "sweep 0,3; the accuracy sweep reports these instead of its held-out times and skips "
+          "its tuning times)",
           "numbers of seconds T1,T2,...", kOptions, [&o](const std::string& text) {
             std::vector<double> times;
             size_t start = 0;
@@ -489,6 +491,22 @@ void defineBench(Command& c, CliOptions& o) {
               start = comma + 1;
             }
             o.times = times;
+            return std::string();
+          });
+  c.value("--only", "NAME,...",
+          "sweep: measure only these of its settings, by the names of its rows (e.g. "
+          "original,default: the course's and the default, interleaved)",
+          "names of sweep settings", kOptions, [&o](const std::string& text) {
+            std::vector<std::string> names;
+            size_t start = 0;
+            for (;;) {
+              const size_t comma = text.find(',', start);
+              names.push_back(text.substr(start, comma - start));
+              if (names.back().empty()) return "--only: " + text + " has an empty name";
+              if (comma == std::string::npos) break;
+              start = comma + 1;
+            }
+            o.only = names;
             return std::string();
           });
   c.value("--csv", "FILE", "sweep: write the rows as CSV (name, ms, psnr_db, rmse, p95, ...)",
@@ -543,6 +561,8 @@ BenchCommandOptions CliOptions::benchOptions() const {
   b.accuracyFrames = accuracyFrames;
   b.planner = planner;
   b.times = times;
+  b.only = only;
+  if (sizeSet) b.sweepSize = {width, height};
   b.csv = csv;
   b.svg = svg;
   b.budgetMs = view.budget;

@@ -24,6 +24,7 @@ struct CliOptions {
   std::string helpTopic;  // help: "" (every command), "render" or "bench"
   int width = 800;
   int height = 800;
+  bool sizeSet = false;           // --size given (the sweep otherwise renders at its own size)
   double time = 0.0;              // render
   std::string out = "frame.png";  // render
   std::string referenceOut;       // render: also write the ray-traced reference of the frame
@@ -36,19 +37,20 @@ struct CliOptions {
   std::optional<glm::vec3> eye;  // otherwise the scene's camera eye
   PlannerSettings planner;
   AccuracySettings accuracy;
-  bool policySet = false;     // bench: time just this policy instead of comparing them all
-  std::optional<int> frames;  // bench: otherwise the mode's default
-  std::optional<int> warmup;  // bench: otherwise the mode's default
-  int accuracyFrames = 60;    // bench: frames compared with every-frame
-  bool growth = false;        // bench: frame time against reflectors and triangles
-  bool sweep = false;         // bench: accuracy settings against the ray-traced reference
-  bool lodSweep = false;      // bench: capture LOD values against full detail
-  bool viewLodSweep = false;  // bench: view LOD values against the full-detail view
-  std::vector<double> times;  // LOD sweeps: the scene times measured (empty: the sweep's own)
-  std::string csv;            // sweep: CSV output
-  std::string svg;            // sweep: SVG plot output
-  ViewSettings view;          // bench: the budget (--budget)
-  bool budgetSet = false;     // bench: pick the most accurate search within view.budget ms
+  bool policySet = false;         // bench: time just this policy instead of comparing them all
+  std::optional<int> frames;      // bench: otherwise the mode's default
+  std::optional<int> warmup;      // bench: otherwise the mode's default
+  int accuracyFrames = 60;        // bench: frames compared with every-frame
+  bool growth = false;            // bench: frame time against reflectors and triangles
+  bool sweep = false;             // bench: accuracy settings against the ray-traced reference
+  bool lodSweep = false;          // bench: capture LOD values against full detail
+  bool viewLodSweep = false;      // bench: view LOD values against the full-detail view
+  std::vector<double> times;      // the sweeps: the scene times measured (empty: their own)
+  std::vector<std::string> only;  // sweep: just these settings, by name
+  std::string csv;                // sweep: CSV output
+  std::string svg;                // sweep: SVG plot output
+  ViewSettings view;              // bench: the budget (--budget)
+  bool budgetSet = false;         // bench: pick the most accurate search within view.budget ms
 
   // bench: which mode the options select, and the options it takes.
   BenchMode benchMode() const;
