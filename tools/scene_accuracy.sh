@@ -11,8 +11,7 @@ reflect=build/native/reflect
 size="${1:-400x400}"
 times="${2:-0.5,2.5,4.5,6.5}"
 scenes=${SCENES:-}
-[ -n "$scenes" ] || scenes=$("$reflect" render --help | sed -n 's/.*a shipped scene (\([^)]*\)).*/\1/p' | tr -d ',')
-[ -n "$scenes" ] || { echo "no scene list in 'reflect render --help'" >&2; exit 1; }
+[ -n "$scenes" ] || scenes=$(cd assets/scenes && ls -- *.json | sed 's/\.json$//')
 echo "| scene | setting | frame ms (median) | ratio | mean PSNR dB | worst PSNR dB | pixels > 32 levels per frame (mean; worst) |"
 echo "|---|---|---|---|---|---|---|"
 for scene in $scenes; do

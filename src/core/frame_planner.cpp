@@ -103,6 +103,7 @@ void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
                    const CaptureContext& context) {
   const bool sky = context.skyboxContent != 0;
   float reach = 0.0f;
+  bool searched = false;  // a member is a mirror or glass
   // Without a sky the clear background is stored at the far plane, at least `far` away.
   float nearest = sky ? INFINITY : context.far;
   bool occlusion = false;
@@ -112,6 +113,7 @@ void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
     const Bounds world = transformBounds(o.localBounds, o.model);
     if (contains(probe.members, static_cast<int>(i))) {
       reach = std::max(reach, farthestInBox(probe.centre, world));
+      searched |= o.look.material == Material::Mirror || o.look.material == Material::Glass;
       continue;
     }
     bool seen = false;
@@ -127,7 +129,7 @@ void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
   for (int count : visible) occlusion |= count >= 2 || (sky && count >= 1);
   const bool searches = context.accuracy.search != Search::Plain;
   probe.plainLookupSuffices =
-      searches && plainLookupWithinHalfTexel(reach, nearest, context.faceSize);
+      searches && (!searched || plainLookupWithinHalfTexel(reach, nearest, context.faceSize));
   probe.layers = context.accuracy.search == Search::Hierarchical && context.accuracy.layers >= 2 &&
                          occlusion && !probe.plainLookupSuffices
                      ? 2
@@ -316,14 +318,15 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       memoryIt->reflector = reflector;
     }
     ProbeMemory& memory = *memoryIt;
-    // The probe moved, a capture option changed or it stores another number of layers: no
-    // face is valid any more.
+    // The probe moved, a capture option changed or it stores other layers or none: no face is
+    // valid any more.
     if (probe.centre != memory.centre || !(context == memory.context) ||
-        probe.layers != memory.layers) {
+        probe.layers != memory.layers || probe.plainLookupSuffices != memory.plainLookupSuffices) {
       for (FaceMemory& f : memory.faces) f.captured = false;
       memory.centre = probe.centre;
       memory.context = context;
       memory.layers = probe.layers;
+      memory.plainLookupSuffices = probe.plainLookupSuffices;
     }
 
     std::array<std::vector<DrawItem>, 6> draws;

@@ -106,7 +106,9 @@ struct ProbePlan : ProbeLayout {
   // hide something else from it (two objects in one face, or one in front of the sky).
   int layers = 1;
   // Everything the probe sees is so far, compared with how far its reflectors reach from its
-  // centre, that the plain lookup is within half a texel (plainLookupWithinHalfTexel): no search.
+  // centre, that the plain lookup is within half a texel (plainLookupWithinHalfTexel), or none of
+  // its reflectors is a mirror or glass (a cube-textured object looks its cube up by its own
+  // rule): no search, and no depths stored for one.
   bool plainLookupSuffices = false;
 };
 
@@ -166,6 +168,7 @@ class FramePlanner {
     int reflector = -1;
     glm::vec3 centre{0.0f};
     int layers = 1;
+    bool plainLookupSuffices = false;  // (the capture then stores no depths)
     CaptureContext context;
     std::array<FaceMemory, 6> faces;
     int sliceCursor = 0;

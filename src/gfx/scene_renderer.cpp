@@ -400,9 +400,14 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
   const float clear[3] = {scene.clearColour.r, scene.clearColour.g, scene.clearColour.b};
   for (const ProbePlan& probe : plan.probes) {
     if (probe.faces.empty()) continue;
-    const CaptureFormat format{
-        scene.capture.faceSize,  accuracy_.halfFloat, accuracy_.depthBits, accuracy_.mipmaps, chain,
-        chain ? probe.layers : 1};
+    // Depths only for a probe whose reflectors search them.
+    const bool depths = chain && !probe.plainLookupSuffices;
+    const CaptureFormat format{scene.capture.faceSize,
+                               accuracy_.halfFloat,
+                               accuracy_.depthBits,
+                               accuracy_.mipmaps,
+                               depths,
+                               depths ? probe.layers : 1};
     auto target = probes_.find(probe.reflector);
     if (target == probes_.end() || !(target->second.format() == format)) {
       Result<CubeCaptureTarget> created = CubeCaptureTarget::create(format);
