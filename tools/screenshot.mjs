@@ -89,8 +89,9 @@ async function main() {
       await page.waitForFunction(() => window.demo !== undefined);
       await page.evaluate(() => window.demo.ready);
       if (panelOpen !== null) await page.evaluate((open) => window.demo.panel()?.open(open), panelOpen);
-      // Let the stats line fill in (it shows after a couple of display frames).
-      await page.waitForFunction(() => /fps/.test(document.getElementById('stats').textContent), null,
+      // Let the stats line fill in (it shows after a couple of display frames; a paused page draws
+      // on demand and says "idle" once it has drawn).
+      await page.waitForFunction(() => /fps|idle/.test(document.getElementById('stats').textContent), null,
                                  { timeout: 10_000 });
       await page.waitForTimeout(500);
       const errors = await page.locator('#messages .message.error').allTextContents();
