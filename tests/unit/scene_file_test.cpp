@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "core/json_reader.h"
 #include "core/scene_file.h"
 
 namespace reflect {
