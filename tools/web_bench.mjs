@@ -428,6 +428,13 @@ async function heavyBench(options) {
       ['reflect wasm memory, heavy (MB)', (x) => x.heavy.reflectHeap / 1048576],
       ['other wasm memory, heavy (MB)', (x) => x.heavy.otherWasm / 1048576],
       ['meshes as drawn, heavy (MB; demo.stats().meshBytes)', (x) => (x.heavy.stats.meshBytes ?? NaN) / 1048576],
+      ['reflect wasm memory over meshes as drawn, heavy (x)', (x) => x.heavy.reflectHeap / (x.heavy.stats.meshBytes ?? NaN)],
+      // What the heap is made of (builds whose stats have them): malloc's bytes in use after the
+      // frames, what malloc has taken from the heap in all, and the most stack ever used.
+      ['malloc in use, default scene (MB)', (x) => (x.light.stats.mallocInUseBytes ?? NaN) / 1048576],
+      ['malloc in use, heavy (MB)', (x) => (x.heavy.stats.mallocInUseBytes ?? NaN) / 1048576],
+      ['malloc arena, heavy (MB)', (x) => (x.heavy.stats.mallocArenaBytes ?? NaN) / 1048576],
+      ['stack high water, heavy (kB)', (x) => (x.heavy.stats.stackHighWaterBytes ?? NaN) / 1024],
     ];
     const width = Math.max(...rows.map(([label]) => label.length)) + 2;
     console.log(''.padEnd(width) + sites.map((s) => s.name.padStart(14)).join(''));

@@ -8,106 +8,41 @@
 //
 // The rules are the native build's (src/core/mesh_lod.cpp, src/core/mesh_chunks.cpp): level k
 // from level k-1 with target = indexCount * triangleRatio (a multiple of 3), stop below
-// minTriangles or when the result is not below 3/4 of its input; chunks by recursive median splits
-// of triangle centres along the longest axis, at most chunkTriangles each.
+// minTriangles or when the result is not below 3/4 of its input; chunks of at most chunkTriangles
+// (chunk_order.js).
 //
 // This module is loaded by the page and by the worker: it imports nothing of the page.
+import { chunkOrder } from './chunk_order.js';
 
-// The index arrays of levels 1.. for one mesh (pure: no wasm of ours involved).
-export function simplifyLevels(MeshoptSimplifier, positions, indices, settings, vertexFloats = 6) {
+// Levels 1.. of one mesh, each in chunk order ({ indices, counts }), each simplified from the one
+// before it in chunk order, as natively (mesh_lod.cpp reorders a level before simplifying the
+// next): meshoptimizer's result depends on its input's order, so with any other order the page's
+// levels differ from native's (docs/heavy.md, round 2). Pure: no wasm of ours involved.
+function simplifyLevels(MeshoptSimplifier, positions, indices, settings, vertexFloats) {
   const levels = [];
   let previous = indices;
   for (let level = 1; level < settings.maxLevels; ++level) {
     if (previous.length / 3 < settings.minTriangles) break;
-    const target = Math.floor((previous.length * settings.triangleRatio) / 3) * 3;
+    const f = Math.fround;  // float, as natively
+    const target = Math.floor(f(f(previous.length) * f(settings.triangleRatio)) / 3) * 3;
     const [result] = MeshoptSimplifier.simplify(previous, positions, vertexFloats, target,
                                                 settings.targetError, ['Sparse']);
     if (result.length === 0 || result.length > (previous.length * 3) / 4) break;
-    levels.push(result);
-    previous = result;
+    const chunked = chunkOrder(positions, vertexFloats, result, settings.chunkTriangles);
+    levels.push(chunked);
+    previous = chunked.indices;
   }
   return levels;
 }
 
-// Rearranges order[begin..end) so that order[middle] has the key it would have sorted, smaller
-// keys before it and larger after (std::nth_element).
-function nthElement(order, keys, begin, end, middle) {
-  let lo = begin, hi = end - 1;
-  while (hi > lo) {
-    // Median of three as the pivot.
-    const a = keys[order[lo]], b = keys[order[(lo + hi) >> 1]], c = keys[order[hi]];
-    const pivot = a < b ? (b < c ? b : (a < c ? c : a)) : (a < c ? a : (b < c ? c : b));
-    let i = lo, j = hi;
-    while (i <= j) {
-      while (keys[order[i]] < pivot) ++i;
-      while (keys[order[j]] > pivot) --j;
-      if (i <= j) {
-        const t = order[i];
-        order[i] = order[j];
-        order[j] = t;
-        ++i;
-        --j;
-      }
-    }
-    if (middle <= j) hi = j;
-    else if (middle >= i) lo = i;
-    else return;
-  }
-}
-
-// `indices` (triangles over `positions`, `stride` floats a vertex) reordered into chunks of at
-// most `maxTriangles` nearby triangles: { indices: Uint32Array, counts: [triangles a chunk] }.
-export function chunkOrder(positions, stride, indices, maxTriangles) {
-  const triangles = indices.length / 3;
-  const centres = [new Float32Array(triangles), new Float32Array(triangles), new Float32Array(triangles)];
-  for (let t = 0; t < triangles; ++t) {
-    for (let axis = 0; axis < 3; ++axis) {
-      centres[axis][t] = (positions[indices[t * 3] * stride + axis] + positions[indices[t * 3 + 1] * stride + axis] +
-                          positions[indices[t * 3 + 2] * stride + axis]) / 3;
-    }
-  }
-  const order = new Uint32Array(triangles);
-  for (let t = 0; t < triangles; ++t) order[t] = t;
-  const counts = [];
-  const split = (begin, end) => {
-    if (end - begin <= maxTriangles) {
-      if (end > begin) counts.push(end - begin);
-      return;
-    }
-    const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
-    for (let i = begin; i < end; ++i) {
-      for (let axis = 0; axis < 3; ++axis) {
-        const v = centres[axis][order[i]];
-        if (v < min[axis]) min[axis] = v;
-        if (v > max[axis]) max[axis] = v;
-      }
-    }
-    const extent = [max[0] - min[0], max[1] - min[1], max[2] - min[2]];
-    const axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : (extent[1] >= extent[2] ? 1 : 2);
-    const middle = begin + Math.floor((end - begin) / 2);
-    nthElement(order, centres[axis], begin, end, middle);
-    split(begin, middle);
-    split(middle, end);
-  };
-  split(0, triangles);
-  const reordered = new Uint32Array(indices.length);
-  for (let t = 0; t < triangles; ++t) {
-    const from = order[t] * 3;
-    reordered[t * 3] = indices[from];
-    reordered[t * 3 + 1] = indices[from + 1];
-    reordered[t * 3 + 2] = indices[from + 2];
-  }
-  return { indices: reordered, counts };
-}
-
 // What the worker does with one job (lod_worker.js calls it): { chunks: { indices, counts } or
-// null, levels: [{ indices, counts }] or null }.
+// null, levels: [{ indices, counts }] or null }. Level 1 comes from level 0 in chunk order.
 export function buildJob(MeshoptSimplifier, { positions, vertexFloats, indices, chunks, coarser, settings }) {
+  const base = chunks ? chunkOrder(positions, vertexFloats, indices, settings.chunkTriangles) : null;
   const levels = coarser
-    ? simplifyLevels(MeshoptSimplifier, positions, indices, settings, vertexFloats)
-      .map((level) => chunkOrder(positions, vertexFloats, level, settings.chunkTriangles))
+    ? simplifyLevels(MeshoptSimplifier, positions, base ? base.indices : indices, settings, vertexFloats)
     : null;
-  return { chunks: chunks ? chunkOrder(positions, vertexFloats, indices, settings.chunkTriangles) : null, levels };
+  return { chunks: base, levels };
 }
 
 const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
@@ -121,6 +56,20 @@ export class LevelBuilder {
     this.running = null;  // the build under way (a promise), or null
     this.longestHandOffMs = 0;  // the longest main-thread task that handed a piece in
     this.events = [];  // 'start', 'done' with times (performance.now()), for tests and tools
+    this.gate = null;  // while held: a promise the built pieces wait on
+    this.waiting = 0;  // the worker's answers waiting at the gate
+  }
+
+  // A test hook (demo.holdLevels): while held, the worker's answers wait before they are handed
+  // in, so a test acts in the state "first frame drawn, levels not in" without racing the worker.
+  hold(on) {
+    if (on && !this.gate) {
+      let open;
+      this.gate = { promise: new Promise((resolve) => { open = resolve; }), open };
+    } else if (!on) {
+      this.gate?.open();
+      this.gate = null;
+    }
   }
 
   // Stops the build under way (its results are dropped) and ends its worker.
@@ -193,6 +142,10 @@ export class LevelBuilder {
     for (const item of work) {
       if (!item) continue;
       const result = await item.answer;
+      while (this.gate) {
+        ++this.waiting;
+        await this.gate.promise.finally(() => { --this.waiting; });
+      }
       since = performance.now();  // a new task
       if (generation !== this.generation) return null;
       const { job, triangles } = item;

@@ -42,6 +42,10 @@ export function testApi(page) {
     // 'done', at performance.now()) with the first frame's time.
     firstFrameStats: () => session.firstFrameStats,
     levelEvents: () => [...session.levels.events],
+    // holdLevels(true): built levels wait before they are handed in, until holdLevels(false)
+    // (lod.js); levelsWaiting(): how many answers of the worker wait so.
+    holdLevels: (on = true) => session.levels.hold(on),
+    levelsWaiting: () => session.levels.waiting,
     // The longest main-thread task that handed a built piece in (ms).
     longestLevelHandOffMs: () => session.levels.longestHandOffMs,
     readPixels: () => page.readPixels(),

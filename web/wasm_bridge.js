@@ -7,7 +7,8 @@
 /* global createReflectModule */
 
 export async function createBridge(canvas) {
-  const Module = await createReflectModule({ canvas });
+  // index.html starts the module early, for this canvas; made here otherwise.
+  const Module = await (window.reflectModule || createReflectModule({ canvas }));
   const text = ['string'];
   const withData = ['string', 'number', 'number'];
   const exports = {

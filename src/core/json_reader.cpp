@@ -10,10 +10,21 @@ const nlohmann::json& nullJson() {
   return null;
 }
 
-// Collects nothing; only notices the first syntax error and where it is.
+// Collects nothing; only notices the first syntax error and where it is, and nesting deeper
+// than kMaxJsonDepth.
 class ErrorCatcher : public nlohmann::json_sax<nlohmann::json> {
  public:
   std::string error;
+  int depth = 0;
+  bool enter() {
+    if (++depth <= kMaxJsonDepth) return true;
+    error = "arrays and objects nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
+    return false;
+  }
+  bool leave() {
+    --depth;
+    return true;
+  }
   bool null() override { return true; }
   bool boolean(bool) override { return true; }
   bool number_integer(number_integer_t) override { return true; }
@@ -21,11 +32,11 @@ class ErrorCatcher : public nlohmann::json_sax<nlohmann::json> {
   bool number_float(number_float_t, const string_t&) override { return true; }
   bool string(string_t&) override { return true; }
   bool binary(binary_t&) override { return true; }
-  bool start_object(std::size_t) override { return true; }
+  bool start_object(std::size_t) override { return enter(); }
   bool key(string_t&) override { return true; }
-  bool end_object() override { return true; }
-  bool start_array(std::size_t) override { return true; }
-  bool end_array() override { return true; }
+  bool end_object() override { return leave(); }
+  bool start_array(std::size_t) override { return enter(); }
+  bool end_array() override { return leave(); }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
     error = e.what();
     // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> from "line".

@@ -15,6 +15,12 @@
 
 namespace reflect {
 
+// How deep arrays and objects may nest in any JSON the code reads (scene files, the page's
+// requests; the deepest real one is a scene file's, at 4). Reading, writing (dump) and walking
+// a document recurse once a level, so this bounds the stack they use: the web build's stack is
+// small (CMakeLists.txt), and a deeper file would overflow it instead of being refused.
+inline constexpr int kMaxJsonDepth = 64;
+
 // Parses JSON text; an error carries nlohmann's line and column.
 Result<nlohmann::json> parseJson(const std::string& text, const std::string& source);
 

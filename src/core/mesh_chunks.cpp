@@ -15,6 +15,11 @@ struct Splitter {
 
   void split(size_t begin, size_t end) {
     if (end - begin <= maxTriangles) {
+      // A chunk keeps its triangles in the mesh's order: with the total order below, the whole
+      // reordering is canonical, the same as the page's worker makes it (web/lod.js), and so
+      // are the levels meshoptimizer simplifies from it (its result depends on the input order).
+      std::sort(order.begin() + static_cast<std::ptrdiff_t>(begin),
+                order.begin() + static_cast<std::ptrdiff_t>(end));
       counts.push_back(static_cast<uint32_t>(end - begin));
       return;
     }
@@ -29,8 +34,12 @@ struct Splitter {
     const size_t middle = begin + (end - begin) / 2;
     std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
                      order.begin() + static_cast<std::ptrdiff_t>(middle),
-                     order.begin() + static_cast<std::ptrdiff_t>(end),
-                     [&](uint32_t a, uint32_t b) { return centres[a][axis] < centres[b][axis]; });
+                     order.begin() + static_cast<std::ptrdiff_t>(end), [&](uint32_t a, uint32_t b) {
+                       // Ties broken by the triangle's number: which triangles fall below the
+                       // median does not depend on nth_element's implementation.
+                       const float ka = centres[a][axis], kb = centres[b][axis];
+                       return ka < kb || (ka == kb && a < b);
+                     });
     split(begin, middle);
     split(middle, end);
   }

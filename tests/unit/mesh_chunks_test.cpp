@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "core/mesh_chunks.h"
+#include "core/mesh_lod.h"
+#include "core/obj_loader.h"
 
 namespace reflect {
 namespace {
@@ -64,6 +66,33 @@ TEST(MeshChunks, SmallMeshIsOneChunkAndRangesMerge) {
   ASSERT_EQ(ranges.size(), 2u);
   EXPECT_EQ(ranges[0].count, 9u);
   EXPECT_EQ(ranges[1].first, 12u);
+}
+
+// The chunk order is canonical (a total order for the splits, the mesh's order within a chunk),
+// so the page's worker (web/chunk_order.js) chunks the same way and meshoptimizer simplifies the
+// same input. tests/web/files.spec.mjs expects the same level 1 for the shipped mario in the page
+// (level 2 differs there: npm's meshoptimizer is a later version than Debian's 0.18).
+TEST(MeshChunks, ShippedMarioLevelsAreThePagesLevels) {
+  Result<LoadedMesh> loaded = loadObjFile(std::string(MODEL_DIR) + "/mario.obj");
+  ASSERT_TRUE(loaded) << loaded.error();
+  const BuiltLevels built = buildLevels(loaded.value().mesh, true, true);
+  std::vector<size_t> triangles{built.base.indices.size() / 3};
+  for (const LevelIndices& level : built.coarser) triangles.push_back(level.indices.size() / 3);
+  EXPECT_EQ(triangles, (std::vector<size_t>{7258, 1814, 563}));
+}
+
+TEST(MeshChunks, TiedCentresSplitByTriangleNumber) {
+  // Eight triangles with one centre: the splits and the chunks keep them in the mesh's order.
+  const std::vector<Vertex> vertices{
+      {{0, 0, 0}, {0, 0, 1}}, {{1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 0, 1}}};
+  std::vector<uint32_t> indices;
+  for (int t = 0; t < 8; ++t) {
+    const uint32_t first = static_cast<uint32_t>(t % 3);  // each a rotation of the same corners
+    for (uint32_t k = 0; k < 3; ++k) indices.push_back((first + k) % 3);
+  }
+  const std::vector<uint32_t> before = indices;
+  EXPECT_EQ(chunkOrder(vertices, indices, 2), (std::vector<uint32_t>{2, 2, 2, 2}));
+  EXPECT_EQ(indices, before);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "core/json_reader.h"
 #include "core/scene_file.h"
 
 namespace reflect {
@@ -93,6 +94,16 @@ TEST(SceneFile, ErrorsNameTheFileAndTheKeyPath) {
                 .rfind("x.json: not valid JSON: line 2, column 12", 0),
             0u);
   EXPECT_EQ(errorOf("[]"), "x.json: top level: expected an object");
+  // Nesting is bounded (the web build's stack is small); the limit itself is still read.
+  const auto nested = [](int depth) {
+    return R"({"objects": [{"mesh": "a.obj"}], "title": )" + std::string(depth - 1, '[') +
+           std::string(depth - 1, ']') + "}";
+  };
+  EXPECT_EQ(errorOf(nested(kMaxJsonDepth)), "x.json: title: expected a string");
+  EXPECT_EQ(errorOf(nested(kMaxJsonDepth + 1)),
+            "x.json: not valid JSON: arrays and objects nested deeper than 64 levels");
+  EXPECT_EQ(errorOf(nested(100000)),
+            "x.json: not valid JSON: arrays and objects nested deeper than 64 levels");
   EXPECT_EQ(errorOf("{}"), "x.json: objects: missing (expected an array)");
   EXPECT_EQ(errorOf(R"({"objects": []})"), "x.json: objects: a scene needs at least one object");
   EXPECT_EQ(errorOf(R"({"objects": [{"mesh": "a.obj"}], "colour": 1})"),

@@ -237,3 +237,22 @@ test('a scene file at a URL with odd characters loads, and its errors and link n
   expect(await other.evaluate(() => window.demo.scene().name)).toBe(`マリオ "1" ${'x'.repeat(1000)} ü`);
   await other.close();
 });
+
+test('a scene file nested far deeper than any real one is refused, and the page keeps drawing', async ({ page }) => {
+  // 200,000 levels: walking it a level a call would overflow the wasm stack (256 kB, CMakeLists.txt)
+  // many times over; the reader refuses it past 64 levels instead (kMaxJsonDepth).
+  const depth = 200_000;
+  const body = `{"objects": [{"mesh": "mario.obj"}], "title": ${'['.repeat(depth)}${']'.repeat(depth)}}`;
+  await page.route((u) => u.pathname.endsWith('/deep.json'),
+                   (route) => route.fulfill({ status: 200, contentType: 'application/json', body }));
+  await openDemo(page, '?paused');
+  const error = await page.evaluate(() => window.demo.loadScene('deep.json').then(() => '', (e) => e.message));
+  expect(error).toContain('nested deeper than 64 levels');
+  expect(await page.evaluate(() => window.demo.scene().name)).toBe('ex12-2');
+  const stats = await page.evaluate(() => window.demo.frame(0));
+  expect(stats.mainTriangles).toBeGreaterThan(0);
+  // The most stack ever used, from the start of the page through the loads, is a small part of it.
+  expect(stats.stackBytes).toBe(256 * 1024);
+  expect(stats.stackHighWaterBytes).toBeGreaterThan(0);
+  expect(stats.stackHighWaterBytes).toBeLessThan(stats.stackBytes / 4);
+});

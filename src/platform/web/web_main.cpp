@@ -5,7 +5,11 @@
 #include <emscripten/emscripten.h>
 #include <emscripten/heap.h>
 #include <emscripten/html5.h>
+#include <emscripten/stack.h>
+#include <malloc.h>
 
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "gfx/gl.h"
@@ -20,6 +24,24 @@ using reflect::web::replyError;
 using reflect::web::state;
 
 constexpr const char* kCanvas = "#canvas";
+
+// The stack's high-water mark, for choosing its size (CMakeLists.txt): rf_create fills the free
+// stack with a pattern, and each frame's stats say how much of it was ever overwritten.
+constexpr unsigned char kStackPaint = 0xA5;
+
+void paintFreeStack() {
+  const uintptr_t end = emscripten_stack_get_end();  // the stack grows down to here
+  constexpr uintptr_t kMargin = 4096;  // this call's frame and memset's stay unpainted
+  const uintptr_t below = emscripten_stack_get_current() - kMargin;
+  if (below > end) std::memset(reinterpret_cast<void*>(end), kStackPaint, below - end);
+}
+
+size_t stackHighWater() {
+  const uintptr_t end = emscripten_stack_get_end(), base = emscripten_stack_get_base();
+  uintptr_t p = end;
+  while (p < base && *reinterpret_cast<const unsigned char*>(p) == kStackPaint) ++p;
+  return base - p;
+}
 
 std::string makeContextCurrent() {
   EmscriptenWebGLContextAttributes attributes;
@@ -63,6 +85,7 @@ extern "C" {
 
 // Creates the WebGL2 context. {} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* rf_create() {
+  paintFreeStack();
   std::string error = makeContextCurrent();
   if (!error.empty()) return replyError(error);
   emscripten_set_webglcontextlost_callback(kCanvas, nullptr, EM_FALSE, onContextLost);
@@ -89,6 +112,13 @@ EMSCRIPTEN_KEEPALIVE const char* rf_frame(const char* request) {
   json stats = state().demo->frame(dt, 0, width, height, wait).toJson();
   // The wasm memory now (it grows and never shrinks: what a load's peak left behind).
   stats["heapBytes"] = emscripten_get_heap_size();
+  // What malloc holds now (in use, and taken from the heap in all), and the most stack ever used:
+  // what the heap is made of beside the free space a load's peak left.
+  const struct mallinfo m = mallinfo();
+  stats["mallocInUseBytes"] = m.uordblks;
+  stats["mallocArenaBytes"] = m.arena;
+  stats["stackBytes"] = emscripten_stack_get_base() - emscripten_stack_get_end();
+  stats["stackHighWaterBytes"] = stackHighWater();
   return reply(stats);
 }
 
