@@ -68,6 +68,12 @@ class GlassInteriorMaps {
   // The mesh `name` was replaced: its map no longer fits it.
   void forget(const std::string& name) { maps_.erase(name); }
   const std::string& lastError() const { return error_; }
+  // Maps made (for tests: a scene makes only those it needs).
+  size_t count() const {
+    size_t made = 0;
+    for (const auto& [name, map] : maps_) made += map ? 1 : 0;
+    return made;
+  }
   void abandon();
 
  private:

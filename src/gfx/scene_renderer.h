@@ -72,6 +72,8 @@ class SceneRenderer {
   GLuint probeTexture(int owner) const;
   // Its depth chain (0 without one), for tests.
   const CubeCaptureTarget* probeTarget(int owner) const;
+  // Glass interior maps made so far (one per non-sphere glass mesh in use), for tests.
+  size_t glassInteriorMaps() const { return glassInteriors_.count(); }
   // After a lost context: drop every GL name without deleting (the context took them).
   void abandon();
   // The exact mode's scene (search: exact), bound with the environment program; not owned.
