@@ -22,7 +22,8 @@ uniform int u_refracts;       // 0 mirror, 1 glass
 uniform float u_eta;          // n1 / n2 for refract(): air to the material
 uniform float u_fresnelF0;    // ((n - 1) / (n + 1))^2
 uniform int u_fresnel;        // 0 fixed mix, 1 Schlick
-uniform int u_twoSurfaces;    // glass: 1 refracts in and out of u_glassSphere, 0 at entry only
+uniform int u_twoSurfaces;    // glass: 1 refracts in and out (of u_glassSphere, or with
+                              // GLASS_EXIT 1 its interior map: glass_exit.glsl), 0 at entry only
 uniform vec4 u_glassSphere;   // world centre and radius of the glass object, for its exit
 uniform samplerCube u_environment;
 uniform samplerCube u_environment2;  // the probe's second layer (depth_search.glsl, 2 layers)
@@ -35,6 +36,7 @@ uniform int u_outputDirection; // 1: write the looked-up direction instead (for 
 #include "linear_search.glsl"
 #include "depth_search.glsl"
 #include "exact_trace.glsl"
+#include "glass_exit.glsl"
 
 #if SEARCH == 2
 // The colour a probe stored around `p` (relative to its centre) in `layer`: the four nearest
@@ -131,7 +133,11 @@ void main() {
     vec3 refracted = reflected;
     if (!total) {
       vec3 origin = v_worldPosition;
+#if GLASS_EXIT == 1
+      if (u_twoSurfaces == 1) leaveGlassMesh(origin, T);
+#else
       if (u_twoSurfaces == 1) leaveGlassSphere(origin, T);
+#endif
       refracted = environmentAlong(origin, T, measured);
     }
     colour = u_fresnel == 1 ? mix(refracted, reflected, total ? 1.0 : schlick)

@@ -23,6 +23,10 @@ float sphereRadiusOf(const MeshData& mesh) {
     const float r = glm::length(v.position - centre);
     lo = std::min(lo, r);
     hi = std::max(hi, r);
+    // A cube's corners lie on a sphere too: a sphere's normals also point away from its centre
+    // (within 8 degrees), a flat face's do not.
+    const float n = glm::length(v.normal);
+    if (!(n > 0.0f) || glm::dot(v.normal, v.position - centre) < 0.99f * n * r) return 0.0f;
   }
   if (!(lo > 0.0f) || hi > lo * 1.005f) return 0.0f;
   return 0.5f * (lo + hi);

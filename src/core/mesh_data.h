@@ -47,8 +47,8 @@ struct MeshData {
 
 Bounds computeBounds(const std::vector<Vertex>& vertices);
 
-// The radius of the sphere about bounds.centre() that every vertex lies on, within 0.5%; 0 when
-// they do not (or the mesh is empty).
+// The radius of the sphere about bounds.centre() that every vertex lies on, within 0.5%, with its
+// normal pointing away from the centre; 0 when they do not (or the mesh is empty).
 float sphereRadiusOf(const MeshData& mesh);
 
 }  // namespace reflect

@@ -1,5 +1,6 @@
 #include "gfx/mesh_buffer.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -14,6 +15,9 @@ MeshBuffer::MeshBuffer(const MeshData& mesh)
       indexCount_(static_cast<GLsizei>(mesh.indices.size())),
       bounds_(mesh.bounds),
       sphereRadius_(mesh.sphereRadius) {
+  for (const Vertex& v : mesh.vertices) {
+    boundingRadius_ = std::max(boundingRadius_, glm::length(v.position - bounds_.centre()));
+  }
   glBindVertexArray(vao_.id());
   glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),

@@ -19,6 +19,8 @@ class MeshBuffer {
   size_t triangleCount() const { return static_cast<size_t>(indexCount_) / 3; }
   const Bounds& bounds() const { return bounds_; }
   float sphereRadius() const { return sphereRadius_; }
+  // The farthest vertex from the bounds' centre (a glass interior map's reach).
+  float boundingRadius() const { return boundingRadius_; }
   void abandon();
 
  private:
@@ -28,6 +30,7 @@ class MeshBuffer {
   GLsizei indexCount_ = 0;
   Bounds bounds_;
   float sphereRadius_ = 0.0f;
+  float boundingRadius_ = 0.0f;
 };
 
 }  // namespace reflect

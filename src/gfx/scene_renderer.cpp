@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -53,9 +54,10 @@ float uniformScale(const glm::mat4& model) {
 
 // The reflectors' program with the search SEARCH (environment.frag) and its uniforms.
 Result<SceneRenderer::EnvironmentProgram> SceneRenderer::buildEnvironment(
-    int search, bool mediump, const std::string& precision) {
-  const std::string lookup =
-      precision + "#define SEARCH " + std::to_string(search) + "\n#define DISTANCE_ITERATIONS 2\n";
+    int search, bool mediump, const std::string& precision, bool glassExit) {
+  const std::string lookup = precision + "#define SEARCH " + std::to_string(search) +
+                             "\n#define DISTANCE_ITERATIONS 2\n#define GLASS_EXIT " +
+                             (glassExit ? "1" : "0") + "\n";
   Result<ShaderProgram> built =
       ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
   if (!built) return Result<EnvironmentProgram>::failure(built.error());
@@ -82,13 +84,15 @@ Result<SceneRenderer::EnvironmentProgram> SceneRenderer::buildEnvironment(
                          e.optionalUniform("u_layers"),
                          e.optionalUniform("u_faceSize"),
                          e.optionalUniform("u_topLevel"),
-                         e.optionalUniform("u_pyramidTile")};
+                         e.optionalUniform("u_pyramidTile"),
+                         GlassExitUniforms{}};
   glUseProgram(e.id());
   glUniform1i(e.optionalUniform("u_environment"), kEnvironmentUnit);
   glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
   glUniform1i(e.optionalUniform("u_pyramid"), kPyramidUnit);
   glUniform1i(e.optionalUniform("u_pyramid2"), kPyramid2Unit);
   if (search == static_cast<int>(Search::Hierarchical)) setFaceFrames(e);
+  if (glassExit) env.glassExit = GlassExitUniforms::of(e);
   env.program = built.take();
   return env;
 }
@@ -186,7 +190,10 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
 
 void SceneRenderer::setMesh(const std::string& name, int lod, const MeshData& mesh) {
   std::vector<MeshBuffer>& levels = meshes_[name];
-  if (lod == 0) levels.clear();
+  if (lod == 0) {
+    levels.clear();
+    glassInteriors_.forget(name);
+  }
   if (lod != static_cast<int>(levels.size())) return;  // levels arrive in order, 0 first
   levels.emplace_back(mesh);
 }
@@ -232,7 +239,9 @@ void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& v
       glUniform1f(phong_.shininess, scene.light.shininess);
       break;
     case ProgramKind::Environment:
-    case ProgramKind::PlainEnvironment: {
+    case ProgramKind::PlainEnvironment:
+    case ProgramKind::GlassEnvironment:
+    case ProgramKind::PlainGlassEnvironment: {
       const EnvironmentProgram& env = activeEnvironment();
       glUseProgram(env.program.id());
       env.capture.set(pass);
@@ -258,7 +267,59 @@ bool SceneRenderer::searchesFor(const Scene& scene, const FramePlan& plan, int i
 }
 
 const SceneRenderer::EnvironmentProgram& SceneRenderer::activeEnvironment() const {
-  return current_ == ProgramKind::PlainEnvironment ? plainEnvironment_ : environment_;
+  switch (current_) {
+    case ProgramKind::PlainEnvironment:
+      return plainEnvironment_;
+    case ProgramKind::GlassEnvironment:
+      return glassEnvironment_;
+    case ProgramKind::PlainGlassEnvironment:
+      return plainGlassEnvironment_;
+    default:
+      return environment_;
+  }
+}
+
+void SceneRenderer::prepareGlassExits(const Scene& scene, double seconds) {
+  if (accuracy_.glassSurfaces != 2 || accuracy_.search == Search::Exact || glassExitFailed_) {
+    return;
+  }
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& object = scene.objects[i];
+    if (object.material != Material::Glass) continue;
+    const MeshBuffer* full = mesh(object.mesh, 0);
+    if (!full || full->sphereRadius() * uniformScale(scene.modelMatrix(object, seconds)) > 0.0f) {
+      continue;  // no mesh yet, or a sphere: its exit has a closed form
+    }
+    if (!glassInteriors_.mapFor(object.mesh, *full)) continue;
+    if (glassEnvironment_.program.id()) continue;
+    const bool mediump = accuracy_.mediump;
+    const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
+    Result<EnvironmentProgram> built =
+        buildEnvironment(static_cast<int>(accuracy_.search), mediump, precision, true);
+    const bool searches = plainEnvironment_.program.id() != 0;
+    Result<EnvironmentProgram> plain =
+        searches ? buildEnvironment(static_cast<int>(Search::Plain), mediump, precision, true)
+                 : Result<EnvironmentProgram>(EnvironmentProgram{});
+    if (!built || !plain) {
+      std::fprintf(stderr, "glass exit: %s\n", (built ? plain : built).error().c_str());
+      glassExitFailed_ = true;  // do not try again every frame
+      return;
+    }
+    glassEnvironment_ = built.take();
+    plainGlassEnvironment_ = plain.take();
+  }
+}
+
+const GlassInteriorMap* SceneRenderer::glassExitOf(const Scene& scene, int index,
+                                                   double seconds) const {
+  if (!glassEnvironment_.program.id()) return nullptr;
+  const SceneObject& object = scene.objects[static_cast<size_t>(index)];
+  if (object.material != Material::Glass) return nullptr;
+  const MeshBuffer* full = mesh(object.mesh, 0);
+  if (!full || full->sphereRadius() * uniformScale(scene.modelMatrix(object, seconds)) > 0.0f) {
+    return nullptr;
+  }
+  return glassInteriors_.find(object.mesh);
 }
 
 void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, int index) {
@@ -320,7 +381,9 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
       glUniform1f(phong_.capture.extent, extent);
       break;
     case ProgramKind::Environment:
-    case ProgramKind::PlainEnvironment: {
+    case ProgramKind::PlainEnvironment:
+    case ProgramKind::GlassEnvironment:
+    case ProgramKind::PlainGlassEnvironment: {
       const EnvironmentProgram& env = activeEnvironment();
       setObjectMatrices(env.model, env.normalMatrix, model);
       glUniform3fv(env.colour, 1, glm::value_ptr(object.colour));
@@ -332,10 +395,14 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
       glUniform1f(env.eta, 1.0f / n);
       glUniform1f(env.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
       glUniform1i(env.fresnel, object.fresnel ? 1 : 0);
-      // Glass leaves through its far side where the mesh is a sphere (uniformly scaled).
+      // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in
+      // closed form, otherwise through its interior map, with the GLASS_EXIT programs.
       const MeshBuffer* full = mesh(object.mesh, 0);
       const float radius = full ? full->sphereRadius() * uniformScale(model) : 0.0f;
-      const bool twoSurfaces = accuracy_.glassSurfaces == 2 && radius > 0.0f;
+      const GlassInteriorMap* interior =
+          env.glassExit.map >= 0 ? glassExitOf(scene, item.object, seconds) : nullptr;
+      if (interior) env.glassExit.set(*interior, model);
+      const bool twoSurfaces = accuracy_.glassSurfaces == 2 && (radius > 0.0f || interior);
       glUniform1i(env.twoSurfaces, twoSurfaces ? 1 : 0);
       const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
       glUniform4f(env.glassSphere, centre.x, centre.y, centre.z, radius);
@@ -362,7 +429,8 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
   PassCounts counts;
   // One program switch per material kind present: Phong first, then the environment users.
   for (ProgramKind kind : {ProgramKind::Phong, ProgramKind::PlainEnvironment,
-                           ProgramKind::Environment, ProgramKind::CubeTextured}) {
+                           ProgramKind::Environment, ProgramKind::PlainGlassEnvironment,
+                           ProgramKind::GlassEnvironment, ProgramKind::CubeTextured}) {
     bool inUse = false;
     for (const DrawItem& d : draws) {
       const Material m = scene.objects[static_cast<size_t>(d.object)].material;
@@ -372,9 +440,12 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
       // -0.2 dB, +1 pixel off by more than 32 levels a frame; tools/scene_accuracy.sh).
       const bool plain = plainEnvironment_.program.id() &&
                          (pass.layer != 0 || !searchesFor(scene, plan, d.object));
+      const bool exits = glassExitOf(scene, d.object, seconds) != nullptr;
       const ProgramKind wanted = m == Material::Phong          ? ProgramKind::Phong
                                  : m == Material::CubeTextured ? ProgramKind::CubeTextured
+                                 : plain && exits              ? ProgramKind::PlainGlassEnvironment
                                  : plain                       ? ProgramKind::PlainEnvironment
+                                 : exits                       ? ProgramKind::GlassEnvironment
                                                                : ProgramKind::Environment;
       if (wanted != kind) continue;
       if (!inUse) {
@@ -391,6 +462,7 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
 
 Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, const FramePlan& plan,
                                           const glm::vec3& lightingEye) {
+  prepareGlassExits(scene, seconds);
   PassCounts counts;
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
@@ -479,6 +551,7 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Fra
                                    const ViewParams& camera, const std::vector<DrawItem>& draws,
                                    unsigned framebuffer, int width, int height,
                                    bool outputDirections) {
+  prepareGlassExits(scene, seconds);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
@@ -500,6 +573,9 @@ void SceneRenderer::abandon() {
   phong_.program.abandon();
   environment_.program.abandon();
   plainEnvironment_.program.abandon();
+  glassEnvironment_.program.abandon();
+  plainGlassEnvironment_.program.abandon();
+  glassInteriors_.abandon();
   cubeTextured_.program.abandon();
   pyramid_.first.abandon();
   pyramid_.reduce.abandon();

@@ -19,6 +19,7 @@
 #include "core/skybox_faces.h"
 #include "gfx/capture_state.h"
 #include "gfx/cube_capture_target.h"
+#include "gfx/glass_interior_map.h"
 #include "gfx/mesh_buffer.h"
 #include "gfx/shader_program.h"
 #include "gfx/skybox_pass.h"
@@ -71,6 +72,8 @@ class SceneRenderer {
   GLuint probeTexture(int owner) const;
   // Its depth chain (0 without one), for tests.
   const CubeCaptureTarget* probeTarget(int owner) const;
+  // Glass interior maps made so far (one per non-sphere glass mesh in use), for tests.
+  size_t glassInteriorMaps() const { return glassInteriors_.count(); }
   // After a lost context: drop every GL name without deleting (the context took them).
   void abandon();
   // The exact mode's scene (search: exact), bound with the environment program; not owned.
@@ -89,6 +92,7 @@ class SceneRenderer {
     GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
         refracts, eta, fresnelF0, fresnel, twoSurfaces, glassSphere, probeCentre, distanceUnit,
         search, outputDirection, layers, faceSize, topLevel, pyramidTile;
+    GlassExitUniforms glassExit;  // only with GLASS_EXIT 1
   };
   struct CubeTexturedProgram {
     ShaderProgram program;
@@ -99,7 +103,16 @@ class SceneRenderer {
     ShaderProgram first, reduce;
     PyramidPrograms uses;
   };
-  enum class ProgramKind { Phong, PlainEnvironment, Environment, CubeTextured };
+  // The Glass kinds are the environment programs built with GLASS_EXIT 1, for glass meshes that
+  // are not spheres (glass_exit.glsl).
+  enum class ProgramKind {
+    Phong,
+    PlainEnvironment,
+    Environment,
+    PlainGlassEnvironment,
+    GlassEnvironment,
+    CubeTextured
+  };
 
   SceneRenderer() = default;
   // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
@@ -120,12 +133,25 @@ class SceneRenderer {
   // The environment program in use: the configured search's, or the one without a search.
   const EnvironmentProgram& activeEnvironment() const;
   static Result<EnvironmentProgram> buildEnvironment(int search, bool mediump,
-                                                     const std::string& precision);
+                                                     const std::string& precision,
+                                                     bool glassExit = false);
+  // Makes the interior maps of the scene's glass meshes that are not spheres, and the programs
+  // that use them, the first time they are needed (glassSurfaces 2, a search that is no exact
+  // trace). A failure leaves those objects at one surface.
+  void prepareGlassExits(const Scene& scene, double seconds);
+  // Object `index`'s interior map when it leaves through one (nullptr: a sphere, no glass, one
+  // surface, or no map).
+  const GlassInteriorMap* glassExitOf(const Scene& scene, int index, double seconds) const;
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;
   EnvironmentProgram environment_;
   EnvironmentProgram plainEnvironment_;  // SEARCH 0, only when the configured search searches
+  // The same two with GLASS_EXIT 1, built with the first glass mesh's interior map.
+  EnvironmentProgram glassEnvironment_;
+  EnvironmentProgram plainGlassEnvironment_;
+  GlassInteriorMaps glassInteriors_;
+  bool glassExitFailed_ = false;  // the GLASS_EXIT programs did not build: one surface
   CubeTexturedProgram cubeTextured_;
   PyramidProgramSet pyramid_;
   std::unique_ptr<SkyboxPass> skybox_;

@@ -50,6 +50,14 @@ TEST(ObjLoader, ProjectSphereIsTheCourseIcosphere) {
   expectUnitNormals(sphere);
 }
 
+// Glass leaves a sphere in closed form and anything else through its interior map: the cube's
+// corners lie on a sphere too, but its flat faces' normals do not point away from the centre.
+TEST(ObjLoader, TheSphereIsASphereAndTheCubeIsNot) {
+  const MeshData sphere = mustLoad(kModels + "sphere.obj");
+  EXPECT_GT(sphereRadiusOf(sphere), 0.0f);
+  EXPECT_EQ(sphereRadiusOf(mustLoad(kModels + "cube.obj")), 0.0f);
+}
+
 TEST(ObjLoader, ProjectFiguresHaveTheCourseExtents) {
   MeshData mario = mustLoad(kModels + "mario.obj");
   EXPECT_NEAR(mario.bounds.min.x, -42.9f, 0.05f);
