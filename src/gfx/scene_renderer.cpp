@@ -50,6 +50,12 @@ float uniformScale(const glm::mat4& model) {
   return hi <= lo * 1.001f ? hi : 0.0f;
 }
 
+// The world radius of a glass object whose mesh is a sphere, placed by `model` (uniformly
+// scaled): its far side has a closed form. 0 for any other mesh (or none yet).
+float sphereRadiusIn(const MeshBuffer* full, const glm::mat4& model) {
+  return full ? full->sphereRadius() * uniformScale(model) : 0.0f;
+}
+
 }  // namespace
 
 // The reflectors' program with the search SEARCH (environment.frag) and its uniforms.
@@ -287,7 +293,7 @@ void SceneRenderer::prepareGlassExits(const Scene& scene, double seconds) {
     const SceneObject& object = scene.objects[i];
     if (object.material != Material::Glass) continue;
     const MeshBuffer* full = mesh(object.mesh, 0);
-    if (!full || full->sphereRadius() * uniformScale(scene.modelMatrix(object, seconds)) > 0.0f) {
+    if (!full || sphereRadiusIn(full, scene.modelMatrix(object, seconds)) > 0.0f) {
       continue;  // no mesh yet, or a sphere: its exit has a closed form
     }
     if (!glassInteriors_.mapFor(object.mesh, *full)) continue;
@@ -310,15 +316,11 @@ void SceneRenderer::prepareGlassExits(const Scene& scene, double seconds) {
   }
 }
 
-const GlassInteriorMap* SceneRenderer::glassExitOf(const Scene& scene, int index,
-                                                   double seconds) const {
-  if (!glassEnvironment_.program.id()) return nullptr;
-  const SceneObject& object = scene.objects[static_cast<size_t>(index)];
-  if (object.material != Material::Glass) return nullptr;
+const GlassInteriorMap* SceneRenderer::glassExitOf(const SceneObject& object,
+                                                   const glm::mat4& model) const {
+  if (!glassEnvironment_.program.id() || object.material != Material::Glass) return nullptr;
   const MeshBuffer* full = mesh(object.mesh, 0);
-  if (!full || full->sphereRadius() * uniformScale(scene.modelMatrix(object, seconds)) > 0.0f) {
-    return nullptr;
-  }
+  if (!full || sphereRadiusIn(full, model) > 0.0f) return nullptr;
   return glassInteriors_.find(object.mesh);
 }
 
@@ -398,9 +400,9 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
       // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in
       // closed form, otherwise through its interior map, with the GLASS_EXIT programs.
       const MeshBuffer* full = mesh(object.mesh, 0);
-      const float radius = full ? full->sphereRadius() * uniformScale(model) : 0.0f;
+      const float radius = sphereRadiusIn(full, model);
       const GlassInteriorMap* interior =
-          env.glassExit.map >= 0 ? glassExitOf(scene, item.object, seconds) : nullptr;
+          env.glassExit.map >= 0 ? glassExitOf(object, model) : nullptr;
       if (interior) env.glassExit.set(*interior, model);
       const bool twoSurfaces = accuracy_.glassSurfaces == 2 && (radius > 0.0f || interior);
       glUniform1i(env.twoSurfaces, twoSurfaces ? 1 : 0);
@@ -433,14 +435,16 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
                            ProgramKind::GlassEnvironment, ProgramKind::CubeTextured}) {
     bool inUse = false;
     for (const DrawItem& d : draws) {
-      const Material m = scene.objects[static_cast<size_t>(d.object)].material;
+      const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
+      const Material m = object.material;
       // A mirror seen in another probe's capture looks its own cube up plainly: that view is a
       // second bounce, seen small and from the previous frame, and a search in every texel of
       // it cost more than the rest of the frame (two-mirrors: 8.2x -> 3.7x the course's frame,
       // -0.2 dB, +1 pixel off by more than 32 levels a frame; tools/scene_accuracy.sh).
       const bool plain = plainEnvironment_.program.id() &&
                          (pass.layer != 0 || !searchesFor(scene, plan, d.object));
-      const bool exits = glassExitOf(scene, d.object, seconds) != nullptr;
+      const bool exits = m == Material::Glass &&
+                         glassExitOf(object, scene.modelMatrix(object, seconds)) != nullptr;
       const ProgramKind wanted = m == Material::Phong          ? ProgramKind::Phong
                                  : m == Material::CubeTextured ? ProgramKind::CubeTextured
                                  : plain && exits              ? ProgramKind::PlainGlassEnvironment

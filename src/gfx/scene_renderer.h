@@ -139,9 +139,9 @@ class SceneRenderer {
   // that use them, the first time they are needed (glassSurfaces 2, a search that is no exact
   // trace). A failure leaves those objects at one surface.
   void prepareGlassExits(const Scene& scene, double seconds);
-  // Object `index`'s interior map when it leaves through one (nullptr: a sphere, no glass, one
+  // The interior map `object`, placed by `model`, leaves through (nullptr: a sphere, no glass, one
   // surface, or no map).
-  const GlassInteriorMap* glassExitOf(const Scene& scene, int index, double seconds) const;
+  const GlassInteriorMap* glassExitOf(const SceneObject& object, const glm::mat4& model) const;
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
   PhongProgram phong_;
