@@ -12,7 +12,7 @@ export function testApi(page) {
     // One complete frame (dt seconds on), timed end to end; its stats.
     frame: (dt = 0) => session.frame(dt, true),
     // The last frame's stats, with the display rate.
-    stats: () => ({ ...session.lastStats, fps: page.fps() }),
+    stats: () => ({ ...session.lastStats, ...bridge.memory(), fps: page.fps() }),
     setTime: (t) => session.setTime(t),
     pause: (on = true) => session.setPaused(on),
     paused: () => session.paused,

@@ -18,7 +18,7 @@ export async function createBridge(canvas) {
     rf_pending_skybox_image: withData, rf_commit_scene: text, rf_scene_json: [], rf_mesh_arrays: text,
     rf_lod_settings_json: [], rf_level_jobs: [], rf_set_mesh_chunks: withData, rf_add_lod: withData,
     rf_finish_levels: text, rf_level_triangles: text, rf_add_object: text, rf_mesh_bounds_json: text,
-    rf_planner_json: [], rf_set_planner: text, rf_accuracy_json: [], rf_set_accuracy: text,
+    rf_planner_json: [], rf_memory_json: [], rf_set_planner: text, rf_accuracy_json: [], rf_set_accuracy: text,
     rf_accuracy_from_description: text, rf_objects_json: [], rf_set_material: text,
     rf_view_json: [], rf_set_view: text, rf_budget_candidates: [], rf_pick_accuracy: text,
   };
@@ -165,6 +165,8 @@ export async function createBridge(canvas) {
     levelTriangles: (name) => call('rf_level_triangles', { name }).levels || null,
     // The wasm memory's size in bytes (it grows, and never shrinks).
     heapBytes: () => Module.HEAPU8.length,
+    // What that memory is made of: malloc's use, the stack's size and high water (rf_memory_json).
+    memory: () => call('rf_memory_json'),
     // { min: [x, y, z], max } of mesh `name`, or null.
     meshBounds: (name) => {
       const bounds = call('rf_mesh_bounds_json', { name });

@@ -112,14 +112,20 @@ EMSCRIPTEN_KEEPALIVE const char* rf_frame(const char* request) {
   json stats = state().demo->frame(dt, 0, width, height, wait).toJson();
   // The wasm memory now (it grows and never shrinks: what a load's peak left behind).
   stats["heapBytes"] = emscripten_get_heap_size();
-  // What malloc holds now (in use, and taken from the heap in all), and the most stack ever used:
-  // what the heap is made of beside the free space a load's peak left.
-  const struct mallinfo m = mallinfo();
-  stats["mallocInUseBytes"] = m.uordblks;
-  stats["mallocArenaBytes"] = m.arena;
-  stats["stackBytes"] = emscripten_stack_get_base() - emscripten_stack_get_end();
-  stats["stackHighWaterBytes"] = stackHighWater();
   return reply(stats);
+}
+
+// What the heap is made of, on request (demo.stats() asks; a frame does not: mallinfo walks
+// malloc's chunks and the high-water mark scans the stack): {heapBytes, mallocInUseBytes (in use),
+// mallocArenaBytes (taken from the heap in all), stackBytes, stackHighWaterBytes (the most
+// stack ever used)}. Beside the first two, the rest is free space a load's peak left.
+EMSCRIPTEN_KEEPALIVE const char* rf_memory_json() {
+  const struct mallinfo m = mallinfo();
+  return reply({{"heapBytes", emscripten_get_heap_size()},
+                {"mallocInUseBytes", m.uordblks},
+                {"mallocArenaBytes", m.arena},
+                {"stackBytes", emscripten_stack_get_base() - emscripten_stack_get_end()},
+                {"stackHighWaterBytes", stackHighWater()}});
 }
 
 // The animation clock: {"seconds": t} sets it; returns {"seconds": now}.
