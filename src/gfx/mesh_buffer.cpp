@@ -1,6 +1,7 @@
 #include "gfx/mesh_buffer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -17,6 +18,16 @@ MeshBuffer::MeshBuffer(const MeshData& mesh)
       sphereRadius_(mesh.sphereRadius) {
   for (const Vertex& v : mesh.vertices) {
     boundingRadius_ = std::max(boundingRadius_, glm::length(v.position - bounds_.centre()));
+  }
+  if (!mesh.vertices.empty() && glm::length(mesh.vertices[0].normal) > 0.0f) {
+    flatPoint_ = mesh.vertices[0].position;
+    flatNormal_ = glm::normalize(mesh.vertices[0].normal);
+    // Planar within a millionth of the mesh's size, one normal within about 0.1 degree.
+    const float tolerance = 1e-6f * std::max(boundingRadius_, 1e-20f);
+    flat_ = std::all_of(mesh.vertices.begin(), mesh.vertices.end(), [&](const Vertex& v) {
+      return std::abs(glm::dot(v.position - flatPoint_, flatNormal_)) <= tolerance &&
+             glm::dot(v.normal, flatNormal_) >= 0.999999f * glm::length(v.normal);
+    });
   }
   glBindVertexArray(vao_.id());
   glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());

@@ -21,6 +21,12 @@ class MeshBuffer {
   float sphereRadius() const { return sphereRadius_; }
   // The farthest vertex from the bounds' centre (a glass interior map's reach).
   float boundingRadius() const { return boundingRadius_; }
+  // When every vertex lies in one plane and carries that plane's normal (a ground quad): true,
+  // with a point of it and the normal, in the mesh's space. Such a mesh faces one way from any
+  // point, so a capture pass that keeps only surfaces facing away from the probe can skip it.
+  bool flat() const { return flat_; }
+  const glm::vec3& flatPoint() const { return flatPoint_; }
+  const glm::vec3& flatNormal() const { return flatNormal_; }
   void abandon();
 
  private:
@@ -31,6 +37,9 @@ class MeshBuffer {
   Bounds bounds_;
   float sphereRadius_ = 0.0f;
   float boundingRadius_ = 0.0f;
+  bool flat_ = false;
+  glm::vec3 flatPoint_{0.0f};
+  glm::vec3 flatNormal_{0.0f};
 };
 
 }  // namespace reflect

@@ -21,6 +21,18 @@ void setObjectMatrices(GLint model, GLint normalMatrix, const glm::mat4& m) {
   glUniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normal));
 }
 
+// Whether any surface of a mesh drawn with `model` may face away from `centre` (the fragment
+// test capture_output.glsl's pass 3 keeps). A flat mesh faces one way from every point: when
+// `centre` is clearly on its front side, pass 3 discards all of it, and need not draw it (the
+// ground quad covered half of four faces and all of a fifth there, every fragment discarded).
+bool mayFaceAway(const MeshBuffer* mesh, const glm::mat4& model, const glm::vec3& centre) {
+  if (!mesh || !mesh->flat()) return true;
+  const glm::vec3 normal = normalMatrixOf(glm::mat3(model)) * mesh->flatNormal();
+  const glm::vec3 offset = glm::vec3(model * glm::vec4(mesh->flatPoint(), 1.0f)) - centre;
+  // A margin for the interpolated normal's rounding: a probe (nearly) in the plane draws it.
+  return glm::dot(normal, offset) > -1e-4f * glm::length(normal) * glm::length(offset);
+}
+
 void bindTexture(GLint unit, GLenum target, GLuint texture) {
   glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
   glBindTexture(target, texture);
@@ -512,6 +524,17 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
         t.bindBackPass(face.face);
         CubeCaptureTarget::endBackPass();
       }
+      // Pass 3 keeps only surfaces facing away from the probe: it skips what cannot have any.
+      std::vector<DrawItem> backDraws;
+      if (face.layers == 2) {
+        for (const DrawItem& d : face.draws) {
+          const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
+          if (mayFaceAway(mesh(object.mesh, d.lod), scene.modelMatrix(object, seconds),
+                          probe.centre)) {
+            backDraws.push_back(d);
+          }
+        }
+      }
       for (int layer : passes) {
         if (layer == 3) {
           t.bindBackPass(face.face);
@@ -531,8 +554,8 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
                                 face.face, guessDepth};
         // Other mirrors in view use their cube as it was before this frame's capture of them
         // (one bounce); they are seen from the probe centre.
-        counts += drawItems(scene, seconds, plan, face.draws, projection * view, lightingEye,
-                            probe.centre, pass, false);
+        counts += drawItems(scene, seconds, plan, layer == 3 ? backDraws : face.draws,
+                            projection * view, lightingEye, probe.centre, pass, false);
         if (skybox_ && layer != 3) skybox_->draw(projection, view, pass);
         if (layer == 3) CubeCaptureTarget::endBackPass();
       }
