@@ -152,22 +152,44 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
     const int baseTile = 1 << topLevel_;
     for (int layer = 0; layer < format_.layers; ++layer) {
       const GLuint pyramid = pyramid_[static_cast<size_t>(layer)].id();
-      // Level 0, all faces in one draw, from the faces' own layers (and the backs).
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, 0);
-      glViewport(0, 0, 6 * baseTile, baseTile);
-      glUseProgram(programs.first);
       const bool backs = layer == 0 && format_.layers == 2;
-      glUniform1i(programs.useBacks, backs ? 1 : 0);
-      glUniform1i(programs.faceSize, format_.faceSize);
-      glUniform1i(programs.tile, baseTile);
-      glActiveTexture(GL_TEXTURE0);  // u_faces
-      glBindTexture(GL_TEXTURE_2D_ARRAY, faceDepths_[static_cast<size_t>(layer)].id());
-      glActiveTexture(GL_TEXTURE1);  // u_backs
-      glBindTexture(GL_TEXTURE_2D_ARRAY, backs ? backs_.id() : 0);
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      const GLuint faces = faceDepths_[static_cast<size_t>(layer)].id();
+      if (layer == 1 && format_.faceSize == baseTile) {
+        // The second layer's level 0 is its faces' codes as they are (no backs to merge), and
+        // without a margin when the face size is a power of two: copied face by face, which
+        // llvmpipe does as a memory copy, where the draw ran a fragment for every texel
+        // (the default's CPU time per frame 3.89 -> 3.63x the course's, four alternating runs;
+        // pixels identical). Not the first layer of a one-layer probe: copied, it cost more
+        // (2.3 -> 2.7x the course's frame), as the copy waits for the faces' drawing to end,
+        // where the draw queued behind it; by the second layer the first's pyramid has waited
+        // for them already.
+        const int n = format_.faceSize;
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+        glReadBuffer(GL_COLOR_ATTACHMENT1);
+        for (int face = 0; face < 6; ++face) {
+          glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, faces, 0, face);
+          glBlitFramebuffer(0, 0, n, n, face * n, 0, (face + 1) * n, n, GL_COLOR_BUFFER_BIT,
+                            GL_NEAREST);
+        }
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glBindFramebuffer(GL_FRAMEBUFFER, pyramidFramebuffer_.id());
+      } else {
+        // Level 0, all faces in one draw, from the faces' own layers (and the backs).
+        glViewport(0, 0, 6 * baseTile, baseTile);
+        glUseProgram(programs.first);
+        glUniform1i(programs.useBacks, backs ? 1 : 0);
+        glUniform1i(programs.faceSize, format_.faceSize);
+        glUniform1i(programs.tile, baseTile);
+        glActiveTexture(GL_TEXTURE0);  // u_faces
+        glBindTexture(GL_TEXTURE_2D_ARRAY, faces);
+        glActiveTexture(GL_TEXTURE1);  // u_backs
+        glBindTexture(GL_TEXTURE_2D_ARRAY, backs ? backs_.id() : 0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      }
       // Levels 1..top, each from the one below, which is the only level the draw may read: the
       // one written is outside the sampled range, so this is no feedback loop (WebGL checks).
       glUseProgram(programs.reduce);
