@@ -28,10 +28,9 @@ precision highp float;
 precision highp int;
 #include "depth_encoding.glsl"
 
-// The first layer's depth pyramid (faces side by side, a mip per level:
-// src/gfx/cube_capture_target.h), and the second layer's (u_layers == 2).
+// The depth pyramid (faces side by side, a mip per level: src/gfx/cube_capture_target.h): the
+// first layer's codes in R and G, the second's in B and A (u_layers == 2).
 uniform highp usampler2D u_pyramid;
-uniform highp usampler2D u_pyramid2;
 uniform int u_layers;       // 1 or 2
 uniform int u_faceSize;     // texels along a face edge at level 0
 uniform int u_topLevel;     // the last level: one cell a face
@@ -50,9 +49,9 @@ int faceOf(vec3 p) {
   return p.z >= 0.0 ? 4 : 5;
 }
 
-// The (near, far) codes of a cell of face f at `level`.
-uvec2 cellCodes(highp usampler2D pyramid, ivec2 cell, int f, int level) {
-  return texelFetch(pyramid, ivec2(f * (u_pyramidTile >> level) + cell.x, cell.y), level).rg;
+// The (near, far) codes of a cell of face f at `level`: the first layer's, then the second's.
+uvec4 cellCodes(ivec2 cell, int f, int level) {
+  return texelFetch(u_pyramid, ivec2(f * (u_pyramidTile >> level) + cell.x, cell.y), level);
 }
 
 struct SearchResult {
@@ -121,10 +120,10 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     // or the next from texel to texel; a ray crossing it where the code steps down would be in
     // front of one texel's surface and behind the next's, and slip through (single wrong
     // pixels in the mirror's image of the floor, 2-3 a frame in the default scene).
-    vec2 first = vec2(cellCodes(u_pyramid, cell, f, level)) * kCode;
+    uvec4 codes = cellCodes(cell, f, level);
+    vec2 first = vec2(codes.xy) * kCode;
     float eFront = first.x - kCode, eBack = first.y + kCode;
-    vec2 behind = vec2(1.0);
-    if (u_layers == 2) behind = vec2(cellCodes(u_pyramid2, cell, f, level)) * kCode;
+    vec2 behind = u_layers == 2 ? vec2(codes.zw) * kCode : vec2(1.0);
     // In front of every surface in the cell, or behind every object there and in front of
     // everything behind them: nothing in the cell can be met.
     bool free = eFar < eFront;

@@ -57,7 +57,8 @@ vec3 surfaceColour(vec3 p, int layer) {
   for (int j = 0; j < 2; ++j) {
     for (int i = 0; i < 2; ++i) {
       ivec2 t = clamp(first + ivec2(i, j), ivec2(0), ivec2(u_faceSize - 1));
-      uint code = layer == 2 ? cellCodes(u_pyramid2, t, f, 0).r : cellCodes(u_pyramid, t, f, 0).r;
+      uvec4 codes = cellCodes(t, f, 0);
+      uint code = layer == 2 ? codes.b : codes.r;
       float weight = (i == 0 ? 1.0 - w.x : w.x) * (j == 0 ? 1.0 - w.y : w.y);
       if (abs(decodeDepth(code) - z) > kThickness * z) weight = 0.0;
       vec2 centre = (vec2(t) + 0.5) / n * 2.0 - 1.0;

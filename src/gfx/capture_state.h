@@ -12,9 +12,8 @@ namespace reflect {
 // Texture units, fixed per sampler across programs (two samplers of different types may not
 // share a unit in one program).
 inline constexpr GLint kEnvironmentUnit = 0;   // samplerCube: a probe's (first layer) colours
-inline constexpr GLint kPyramidUnit = 1;       // usampler2D: its depth pyramid
+inline constexpr GLint kPyramidUnit = 1;       // usampler2D: its depth pyramid (both layers)
 inline constexpr GLint kEnvironment2Unit = 2;  // samplerCube: its second layer's colours
-inline constexpr GLint kPyramid2Unit = 3;      // usampler2D: the second layer's pyramid
 inline constexpr GLint kPeelDepthsUnit = 4;    // usampler2DArray: the layer a peel draws behind
 inline constexpr GLint kPeelBacksUnit = 5;     // usampler2DArray: the backs it also peels behind
 

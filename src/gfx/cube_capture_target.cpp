@@ -43,12 +43,13 @@ TextureHandle createFaceArray(GLenum format, int size) {
   return texture;
 }
 
-// Levels 0..top: the six faces' tiles side by side, P texels square at its base.
-TextureHandle createPyramid(int top) {
+// Levels 0..top: the six faces' tiles side by side, P texels square at its base; (near, far) for
+// each layer.
+TextureHandle createPyramid(int top, int layers) {
   TextureHandle texture(genTexture());
   const int tile = 1 << top;
   glBindTexture(GL_TEXTURE_2D, texture.id());
-  glTexStorage2D(GL_TEXTURE_2D, top + 1, GL_RG16UI, 6 * tile, tile);
+  glTexStorage2D(GL_TEXTURE_2D, top + 1, layers == 2 ? GL_RGBA16UI : GL_RG16UI, 6 * tile, tile);
   setIntegerFiltering(GL_TEXTURE_2D);
   glBindTexture(GL_TEXTURE_2D, 0);
   return texture;
@@ -69,11 +70,9 @@ Result<CubeCaptureTarget> CubeCaptureTarget::create(const CaptureFormat& format)
   for (int layer = 0; layer < t.format_.layers; ++layer) {
     const size_t l = static_cast<size_t>(layer);
     t.colour_[l] = createColourCube(t.format_, size);
-    if (format.depthChain) {
-      t.faceDepths_[l] = createFaceArray(GL_RG16UI, size);
-      t.pyramid_[l] = createPyramid(t.topLevel_);
-    }
+    if (format.depthChain) t.faceDepths_[l] = createFaceArray(GL_RG16UI, size);
   }
+  if (format.depthChain) t.pyramid_ = createPyramid(t.topLevel_, t.format_.layers);
   if (t.format_.layers == 2) t.backs_ = createFaceArray(GL_R16UI, size);
 
   t.depth_ = RenderbufferHandle(genRenderbuffer());
@@ -150,61 +149,41 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
   if (format_.depthChain) {
     glBindFramebuffer(GL_FRAMEBUFFER, pyramidFramebuffer_.id());
     const int baseTile = 1 << topLevel_;
-    for (int layer = 0; layer < format_.layers; ++layer) {
-      const GLuint pyramid = pyramid_[static_cast<size_t>(layer)].id();
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, 0);
-      const bool backs = layer == 0 && format_.layers == 2;
-      const GLuint faces = faceDepths_[static_cast<size_t>(layer)].id();
-      if (layer == 1 && format_.faceSize == baseTile) {
-        // The second layer's level 0 is its faces' codes as they are (no backs to merge), and
-        // without a margin when the face size is a power of two: copied face by face, which
-        // llvmpipe does as a memory copy, where the draw ran a fragment for every texel
-        // (the default's CPU time per frame 3.89 -> 3.63x the course's, four alternating runs;
-        // pixels identical). Not the first layer of a one-layer probe: copied, it cost more
-        // (2.3 -> 2.7x the course's frame), as the copy waits for the faces' drawing to end,
-        // where the draw queued behind it; by the second layer the first's pyramid has waited
-        // for them already.
-        const int n = format_.faceSize;
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
-        glReadBuffer(GL_COLOR_ATTACHMENT1);
-        for (int face = 0; face < 6; ++face) {
-          glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, faces, 0, face);
-          glBlitFramebuffer(0, 0, n, n, face * n, 0, (face + 1) * n, n, GL_COLOR_BUFFER_BIT,
-                            GL_NEAREST);
-        }
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glBindFramebuffer(GL_FRAMEBUFFER, pyramidFramebuffer_.id());
-      } else {
-        // Level 0, all faces in one draw, from the faces' own layers (and the backs).
-        glViewport(0, 0, 6 * baseTile, baseTile);
-        glUseProgram(programs.first);
-        glUniform1i(programs.useBacks, backs ? 1 : 0);
-        glUniform1i(programs.faceSize, format_.faceSize);
-        glUniform1i(programs.tile, baseTile);
-        glActiveTexture(GL_TEXTURE0);  // u_faces
-        glBindTexture(GL_TEXTURE_2D_ARRAY, faces);
-        glActiveTexture(GL_TEXTURE1);  // u_backs
-        glBindTexture(GL_TEXTURE_2D_ARRAY, backs ? backs_.id() : 0);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-      }
-      // Levels 1..top, each from the one below, which is the only level the draw may read: the
-      // one written is outside the sampled range, so this is no feedback loop (WebGL checks).
-      glUseProgram(programs.reduce);
-      glBindTexture(GL_TEXTURE_2D, pyramid);
-      for (int mip = 1; mip <= topLevel_; ++mip) {
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, mip - 1);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mip - 1);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, mip);
-        glViewport(0, 0, 6 * (baseTile >> mip), baseTile >> mip);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-      }
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, topLevel_);
-      glBindTexture(GL_TEXTURE_2D, 0);
+    const bool two = format_.layers == 2;
+    const GLuint pyramid = pyramid_.id();
+    // Level 0, all faces (and both layers) in one draw, from the faces' own layers and the backs.
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, 0);
+    glViewport(0, 0, 6 * baseTile, baseTile);
+    glUseProgram(programs.first);
+    glUniform1i(programs.layers, format_.layers);
+    glUniform1i(programs.faceSize, format_.faceSize);
+    glUniform1i(programs.tile, baseTile);
+    glActiveTexture(GL_TEXTURE0);  // u_faces
+    glBindTexture(GL_TEXTURE_2D_ARRAY, faceDepths_[0].id());
+    glActiveTexture(GL_TEXTURE1);  // u_backs
+    glBindTexture(GL_TEXTURE_2D_ARRAY, two ? backs_.id() : 0);
+    glActiveTexture(GL_TEXTURE2);  // u_faces2
+    glBindTexture(GL_TEXTURE_2D_ARRAY, two ? faceDepths_[1].id() : 0);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    // Levels 1..top, each from the one below, which is the only level the draw may read: the
+    // one written is outside the sampled range, so this is no feedback loop (WebGL checks).
+    glUseProgram(programs.reduce);
+    glBindTexture(GL_TEXTURE_2D, pyramid);
+    for (int mip = 1; mip <= topLevel_; ++mip) {
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, mip - 1);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mip - 1);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, mip);
+      glViewport(0, 0, 6 * (baseTile >> mip), baseTile >> mip);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
     }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, topLevel_);
+    glBindTexture(GL_TEXTURE_2D, 0);
   }
   if (format_.mipmaps) {
     for (int layer = 0; layer < format_.layers; ++layer) {
@@ -218,7 +197,7 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
 void CubeCaptureTarget::abandon() {
   for (TextureHandle& t : colour_) t.abandon();
   for (TextureHandle& t : faceDepths_) t.abandon();
-  for (TextureHandle& t : pyramid_) t.abandon();
+  pyramid_.abandon();
   backs_.abandon();
   depth_.abandon();
   framebuffer_.abandon();

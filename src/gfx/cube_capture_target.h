@@ -2,14 +2,17 @@
 // hierarchical search, the faces' depth codes and their min/max pyramid; one framebuffer and one
 // depth renderbuffer shared by the six faces (they are drawn in turn).
 //
-// Depths (shaders/depth_encoding.glsl) live in two textures per layer, both RG16UI, read with
-// texelFetch only (GLSL ES 3.00 has no texelFetch on cube samplers):
-//  - the faces: a 2D array, one layer per cube face in GL face order, N x N: each texel's (near,
-//    far) codes as the capture wrote them (a capture renders into it beside the colour face);
-//  - the pyramid: one 2D texture with the six faces side by side and a mip per level, level 0 a
-//    copy of the faces. With P the face size rounded up to a power of two, level L's tile is
-//    P / 2^L texels square, so every tile halves exactly and one draw builds a level for all six
-//    faces: one draw per level, not six. The search reads this texture alone.
+// Depths (shaders/depth_encoding.glsl) live in integer textures read with texelFetch only (GLSL
+// ES 3.00 has no texelFetch on cube samplers):
+//  - the faces, per layer: a 2D array (RG16UI), one layer per cube face in GL face order, N x N:
+//    each texel's (near, far) codes as the capture wrote them (a capture renders into it beside
+//    the colour face);
+//  - the pyramid, for both layers: one 2D texture with the six faces side by side and a mip per
+//    level, level 0 a copy of the faces: RG16UI, or with two layers RGBA16UI, the second layer's
+//    codes in B and A (one chain of draws builds both, one fetch reads both). With P the face
+//    size rounded up to a power of two, level L's tile is P / 2^L texels square, so every tile
+//    halves exactly and one draw builds a level for all six faces: one draw per level, not six.
+//    The search reads this texture alone.
 // A level-L cell covers the 2^L x 2^L level-0 texels at its index times 2^L (clipped to N); each
 // holds the min of their near codes and the max of their far codes (and of the backs found).
 #pragma once
@@ -36,7 +39,7 @@ struct CaptureFormat {
 // and where their uniforms are.
 struct PyramidPrograms {
   GLuint first = 0;
-  GLint useBacks = -1, faceSize = -1, tile = -1;
+  GLint layers = -1, faceSize = -1, tile = -1;
   GLuint reduce = 0;
 };
 
@@ -57,14 +60,14 @@ class CubeCaptureTarget {
   // fragment; endBackPass() restores the depth test.
   void bindBackPass(int face) const;
   static void endBackPass();
-  // After the faces are drawn: rebuilds every layer's pyramid from its level 0 (and, for the
-  // first layer, the backs), then the colour mip chain when the format asks for one. Leaves the
-  // depth test off.
+  // After the faces are drawn: rebuilds the pyramid from the layers' faces (and, for the first
+  // layer, the backs), then the colour mip chain when the format asks for one. Leaves the depth
+  // test off.
   void finish(const PyramidPrograms& programs) const;
 
   GLuint texture(int layer = 0) const { return colour_[static_cast<size_t>(layer)].id(); }
   GLuint faceDepths(int layer = 0) const { return faceDepths_[static_cast<size_t>(layer)].id(); }
-  GLuint pyramid(int layer = 0) const { return pyramid_[static_cast<size_t>(layer)].id(); }
+  GLuint pyramid() const { return pyramid_.id(); }
   GLuint backs() const { return backs_.id(); }
   int faceSize() const { return format_.faceSize; }
   // The last level: one cell a face (log2 of the face size rounded up to a power of two).
@@ -75,7 +78,7 @@ class CubeCaptureTarget {
  private:
   std::array<TextureHandle, 2> colour_;
   std::array<TextureHandle, 2> faceDepths_;
-  std::array<TextureHandle, 2> pyramid_;
+  TextureHandle pyramid_;
   TextureHandle backs_;  // R16UI 2D array, level 0 only (two layers only)
   RenderbufferHandle depth_;
   FramebufferHandle framebuffer_;

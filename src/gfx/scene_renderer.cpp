@@ -108,7 +108,6 @@ Result<SceneRenderer::EnvironmentProgram> SceneRenderer::buildEnvironment(
   glUniform1i(e.optionalUniform("u_environment"), kEnvironmentUnit);
   glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
   glUniform1i(e.optionalUniform("u_pyramid"), kPyramidUnit);
-  glUniform1i(e.optionalUniform("u_pyramid2"), kPyramid2Unit);
   if (search == static_cast<int>(Search::Hierarchical)) setFaceFrames(e);
   if (glassExit) env.glassExit = GlassExitUniforms::of(e);
   env.program = built.take();
@@ -171,9 +170,10 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   glUseProgram(pf.id());
   glUniform1i(pf.uniform("u_faces"), 0);
   glUniform1i(pf.uniform("u_backs"), 1);
+  glUniform1i(pf.uniform("u_faces2"), 2);
   glUseProgram(reduce.value().id());
   glUniform1i(reduce.value().uniform("u_source"), 0);
-  r.pyramid_.uses = PyramidPrograms{pf.id(), pf.uniform("u_useBacks"), pf.uniform("u_faceSize"),
+  r.pyramid_.uses = PyramidPrograms{pf.id(), pf.uniform("u_layers"), pf.uniform("u_faceSize"),
                                     pf.uniform("u_tile"), reduce.value().id()};
   r.pyramid_.first = pyramidFirst.take();
   r.pyramid_.reduce = reduce.take();
@@ -194,9 +194,7 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   for (GLint unit : {kPeelDepthsUnit, kPeelBacksUnit}) {
     bindTexture(unit, GL_TEXTURE_2D_ARRAY, r.emptyDepths_.id());
   }
-  for (GLint unit : {kPyramidUnit, kPyramid2Unit}) {
-    bindTexture(unit, GL_TEXTURE_2D, r.emptyPyramid_.id());
-  }
+  bindTexture(kPyramidUnit, GL_TEXTURE_2D, r.emptyPyramid_.id());
   glActiveTexture(GL_TEXTURE0);
   r.emptyVertexArray_ = VertexArrayHandle(genVertexArray());
   r.accuracy_ = accuracy;
@@ -339,7 +337,7 @@ const GlassInteriorMap* SceneRenderer::glassExitOf(const SceneObject& object,
 void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, int index) {
   const SceneObject& object = scene.objects[static_cast<size_t>(index)];
   GLuint colour = 0, colour2 = 0;
-  GLuint pyramid = emptyPyramid_.id(), pyramid2 = emptyPyramid_.id();
+  GLuint pyramid = emptyPyramid_.id();
   int layers = 1, faceSize = 1, topLevel = 0;
   glm::vec3 centre(0.0f);
   if (object.environment == Environment::Skybox) {
@@ -353,8 +351,7 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
       layers = t.format().layers;
       colour2 = layers == 2 ? t.texture(1) : colour;
       if (t.format().depthChain) {
-        pyramid = t.pyramid(0);
-        if (layers == 2) pyramid2 = t.pyramid(1);
+        pyramid = t.pyramid();
       }
       faceSize = t.faceSize();
       topLevel = t.topLevel();
@@ -367,7 +364,6 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, colour);
   bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, colour2 ? colour2 : colour);
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
-  bindTexture(kPyramid2Unit, GL_TEXTURE_2D, pyramid2);
   glActiveTexture(GL_TEXTURE0);
   const EnvironmentProgram& env = activeEnvironment();
   glUniform3fv(env.probeCentre, 1, glm::value_ptr(centre));

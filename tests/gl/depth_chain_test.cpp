@@ -16,9 +16,10 @@
 namespace reflect {
 namespace {
 
-// An integer texture image, read as (R, G) per texel, rows from the bottom.
+// An integer texture image, read as (R, G) per texel, or (B, A) with `second`, rows from the
+// bottom.
 std::vector<glm::uvec2> readCodes(GLuint texture, bool array, int layer, int level, int width,
-                                  int height) {
+                                  int height, bool second = false) {
   FramebufferHandle fb(genFramebuffer());
   glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
   if (array) {
@@ -30,7 +31,8 @@ std::vector<glm::uvec2> readCodes(GLuint texture, bool array, int layer, int lev
   glReadPixels(0, 0, width, height, GL_RGBA_INTEGER, GL_UNSIGNED_INT, rgba.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   std::vector<glm::uvec2> out;
-  for (size_t i = 0; i < rgba.size(); i += 4) out.push_back({rgba[i], rgba[i + 1]});
+  const size_t c = second ? 2 : 0;
+  for (size_t i = 0; i < rgba.size(); i += 4) out.push_back({rgba[i + c], rgba[i + c + 1]});
   return out;
 }
 
@@ -40,7 +42,7 @@ void checkPyramid(const CubeCaptureTarget& probe, int layer) {
   for (int level = 0; level <= top; ++level) {
     const int t = tile >> level, span = 1 << level;
     const std::vector<glm::uvec2> pyramid =
-        readCodes(probe.pyramid(layer), false, 0, level, 6 * t, t);
+        readCodes(probe.pyramid(), false, 0, level, 6 * t, t, layer == 1);
     for (int face = 0; face < 6; ++face) {
       const std::vector<glm::uvec2> base = readCodes(probe.faceDepths(layer), true, face, 0, n, n);
       std::vector<glm::uvec2> back;
