@@ -573,8 +573,9 @@ struct ObjStreamParser::State {
   // The mesh's vertices, made from the positions, the file's normals (normalized) and, for
   // vertices without a usable one, the area-weighted normal of their position's triangles. Frees
   // everything the parse held but the triangles: this array is the one allocation made while the
-  // parse's arrays are all held, so it sets the peak; the index array, made after, fits in the
-  // space the positions and normals leave (they were read first, side by side).
+  // parse's arrays are all held, so it sets the peak. The index array, made after, fits in the
+  // space the positions and normals leave when the file lists them before its faces (they lie
+  // side by side then: core/block_array.h).
   std::vector<Vertex> makeVertices() {
     std::vector<Vertex> out;
     out.reserve(vertices.size());
@@ -593,7 +594,8 @@ struct ObjStreamParser::State {
     if (needComputed) {
       // Per position: the sum of its triangles' area-weighted normals. The positions are in `out`
       // now, so their storage holds the sums.
-      BlockArray<glm::vec3> sums = std::move(positions);
+      BlockArray<glm::vec3> sums;
+      std::swap(sums, positions);
       for (size_t p = 0; p < sums.size(); ++p) sums[p] = glm::vec3(0.0f);
       for (size_t t = 0; t + 2 < indices.size(); t += 3) {
         const glm::vec3& a = out[indices[t]].position;
