@@ -70,10 +70,26 @@ export function readFileBytes(file, onProgress = null) {
   return readStream(file.stream(), file.size, onProgress, 0, file.name);
 }
 
+// Models are parsed one at a time, in the order their streams are read (the downloads still start
+// together; one waiting for its turn is held back by the browser, not read). Parsed side by side,
+// two models' arrays would lie interleaved in wasm memory, and what one parse frees would be too
+// scattered to hold the other's final arrays (core/block_array.h): their peaks would add up, and
+// wasm memory never shrinks.
+let parseTurn = Promise.resolve();
+function inParseTurn(task) {
+  const run = parseTurn.then(task);
+  parseTurn = run.catch(() => {});
+  return run;
+}
+
 // Streams `stream` (total bytes, 0 if unknown) into mesh `target.name` (target: { name, source,
 // pending, warn }: bridge.streamMesh's), piece by piece as it arrives. Resolves to "" or the parser's error (the mesh it had
 // stays); rejects when the stream fails or passes `limit`.
-async function streamInto(bridge, target, stream, total, { onProgress = null, limit = 0 } = {}) {
+function streamInto(bridge, target, stream, total, options = {}) {
+  return inParseTurn(() => streamIntoNow(bridge, target, stream, total, options));
+}
+
+async function streamIntoNow(bridge, target, stream, total, { onProgress = null, limit = 0 } = {}) {
   const parser = bridge.streamMesh(target);
   if (parser.error) return parser.error;
   const reader = stream.getReader();

@@ -38,19 +38,16 @@ export async function createBridge(canvas) {
   };
   const errorOf = (reply) => reply.error || '';
 
-  // The pieces of a streamed model go through one staging buffer in wasm memory, reused (and
-  // grown to the largest piece, at most 1 MB; larger pieces go in parts), so streaming a file
-  // allocates no more than that.
-  const kStagingMax = 1 << 20;
-  let staging = 0, stagingSize = 0;
+  // The pieces of a streamed model go through one staging buffer in wasm memory, allocated once
+  // (at the first piece, before any parse's arrays) and reused; larger pieces go in parts. It is
+  // never reallocated: a new buffer would be placed among a parse's arrays, and split the space
+  // they leave when freed (see core/block_array.h).
+  const kStagingBytes = 64 * 1024;
+  let staging = 0;
   const feedPiece = (stream, bytes) => {
-    for (let at = 0; at < bytes.length; at += kStagingMax) {
-      const part = bytes.subarray(at, Math.min(at + kStagingMax, bytes.length));
-      if (part.length > stagingSize) {
-        if (staging) Module._free(staging);
-        stagingSize = Math.max(part.length, 64 * 1024);
-        staging = Module._malloc(stagingSize);
-      }
+    if (!staging) staging = Module._malloc(kStagingBytes);
+    for (let at = 0; at < bytes.length; at += kStagingBytes) {
+      const part = bytes.subarray(at, Math.min(at + kStagingBytes, bytes.length));
       Module.HEAPU8.set(part, staging);
       const error = errorOf(JSON.parse(fn.rf_mesh_stream_feed(JSON.stringify({ stream }), staging, part.length)));
       if (error) return error;

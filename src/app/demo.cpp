@@ -216,7 +216,7 @@ Demo::MeshEntry* Demo::entryAt(const std::string& name, uint32_t revision, std::
 }
 
 std::string Demo::setMeshChunks(const std::string& name, uint32_t revision,
-                                std::vector<uint32_t> indices,
+                                std::span<const uint32_t> indices,
                                 const std::vector<uint32_t>& chunkTriangles) {
   std::string problem;
   MeshEntry* entry = entryAt(name, revision, &problem);
@@ -228,7 +228,7 @@ std::string Demo::setMeshChunks(const std::string& name, uint32_t revision,
   }
   Result<std::vector<MeshChunk>> chunks = chunksFromCounts(base.vertices, indices, chunkTriangles);
   if (!chunks) return name + ": " + chunks.error();
-  base.indices = std::move(indices);
+  std::copy(indices.begin(), indices.end(), base.indices.begin());
   base.chunks = chunks.take();
   entry->chunked = true;
   uploadLevels(name, *entry);

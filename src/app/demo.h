@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -95,8 +96,9 @@ class Demo {
   std::vector<LevelJob> levelJobs() const;
   // Mesh `name`'s triangles in chunk order (a reordering of its indices) and the chunks' triangle
   // counts. Returns "" or why not (a stale revision, counts that do not add up, bad indices).
+  // The indices are copied over the mesh's own (as many): no second array of them is allocated.
   std::string setMeshChunks(const std::string& name, uint32_t revision,
-                            std::vector<uint32_t> indices,
+                            std::span<const uint32_t> indices,
                             const std::vector<uint32_t>& chunkTriangles);
   // The next coarser level of mesh `name`: indices into its level-0 vertices, in chunk order.
   std::string addLodLevel(const std::string& name, uint32_t revision, std::vector<uint32_t> indices,

@@ -72,7 +72,7 @@ std::vector<uint32_t> chunkOrder(const std::vector<Vertex>& vertices,
 }
 
 Result<std::vector<MeshChunk>> chunksFromCounts(const std::vector<Vertex>& vertices,
-                                                const std::vector<uint32_t>& indices,
+                                                std::span<const uint32_t> indices,
                                                 const std::vector<uint32_t>& triangleCounts) {
   using Out = Result<std::vector<MeshChunk>>;
   if (indices.size() % 3 != 0) return Out::failure("the indices are not whole triangles");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/mesh_data.h"
@@ -23,7 +24,7 @@ std::vector<uint32_t> chunkOrder(const std::vector<Vertex>& vertices,
 // The chunks of `indices` from their consecutive triangle counts, each with the bounds of its
 // vertices. Fails when the counts do not add up to the triangles or an index is out of range.
 Result<std::vector<MeshChunk>> chunksFromCounts(const std::vector<Vertex>& vertices,
-                                                const std::vector<uint32_t>& indices,
+                                                std::span<const uint32_t> indices,
                                                 const std::vector<uint32_t>& triangleCounts);
 
 // Reorders `mesh.indices` (the triangles, not the vertices) and fills `mesh.chunks`, each of at

@@ -209,6 +209,15 @@ struct Corner {
   int32_t normal = -1;
 };
 
+// A vertex while the file is read: its position and normal (Corner's numbers) and the next vertex
+// of the same position (the chain vertexOf walks). 12 bytes where the Vertex it becomes is 24:
+// finish() makes the vertices, once, in the mesh's own array.
+struct VertexKey {
+  uint32_t position = 0;
+  int32_t normal = -1;
+  uint32_t nextSamePosition = 0;
+};
+
 // pnpoly (W. Randolph Franklin), as tinyobjloader's ear clipping uses it.
 bool insideTriangle(const float* x, const float* y, float tx, float ty) {
   bool inside = false;
@@ -218,6 +227,12 @@ bool insideTriangle(const float* x, const float* y, float tx, float ty) {
     }
   }
   return inside;
+}
+
+// Empties a container and frees its storage (`c = {}` would keep a vector's or a map's).
+template <class Container>
+void freeStorage(Container& c) {
+  c = Container();
 }
 
 glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
@@ -242,10 +257,8 @@ struct ObjStreamParser::State {
 
   BlockArray<glm::vec3> positions;
   BlockArray<glm::vec3> normals;
-  BlockArray<Vertex> vertices;            // normals filled in by finish()
-  BlockArray<int32_t> vertexNormal;       // per vertex: its normal index (Corner::normal)
-  BlockArray<uint32_t> nextSamePosition;  // per vertex: the next vertex of its position's chain
-  BlockArray<uint32_t> firstOfPosition;   // per position: its chain's first vertex
+  BlockArray<VertexKey> vertices;        // what each vertex is made of (finish() makes it)
+  BlockArray<uint32_t> firstOfPosition;  // per position: its chain's first vertex
   std::unordered_map<uint64_t, uint32_t> overflow;  // (position, normal) past a chain's limit
   BlockArray<uint32_t> indices;
   std::vector<std::string_view> cornerTokens;  // the face being read, as text
@@ -257,8 +270,8 @@ struct ObjStreamParser::State {
   uint32_t vertexOf(const Corner& c) {
     uint32_t id = firstOfPosition[c.position];
     int steps = 0;
-    for (; id != kNone; id = nextSamePosition[id], ++steps) {
-      if (vertexNormal[id] == c.normal) return id;
+    for (; id != kNone; id = vertices[id].nextSamePosition, ++steps) {
+      if (vertices[id].normal == c.normal) return id;
     }
     const uint64_t key =
         (static_cast<uint64_t>(c.position) << 32) | static_cast<uint32_t>(c.normal);
@@ -267,13 +280,11 @@ struct ObjStreamParser::State {
       if (it != overflow.end()) return it->second;
     }
     const uint32_t created = static_cast<uint32_t>(vertices.size());
-    vertices.push_back(Vertex{positions[c.position], glm::vec3(0.0f)});
-    vertexNormal.push_back(c.normal);
     if (steps < kChainLimit) {
-      nextSamePosition.push_back(firstOfPosition[c.position]);
+      vertices.push_back(VertexKey{c.position, c.normal, firstOfPosition[c.position]});
       firstOfPosition[c.position] = created;
     } else {
-      nextSamePosition.push_back(kNone);
+      vertices.push_back(VertexKey{c.position, c.normal, kNone});
       overflow.emplace(key, created);
     }
     return created;
@@ -519,47 +530,89 @@ struct ObjStreamParser::State {
 
   size_t heldBytes() const {
     return partial.capacity() + positions.capacityBytes() + normals.capacityBytes() +
-           vertices.capacityBytes() + vertexNormal.capacityBytes() +
-           nextSamePosition.capacityBytes() + firstOfPosition.capacityBytes() +
-           indices.capacityBytes() + overflow.size() * (sizeof(uint64_t) + sizeof(uint32_t)) +
+           vertices.capacityBytes() + firstOfPosition.capacityBytes() + indices.capacityBytes() +
+           overflow.size() * (sizeof(uint64_t) + sizeof(uint32_t)) +
            (face.capacity() + remaining.capacity()) * sizeof(Corner) +
            cornerTokens.capacity() * sizeof(std::string_view);
+  }
+
+  // Whether a vertex names a normal past the file's last (a forward reference never defined).
+  bool anyNormalPastTheEnd() const {
+    if (!forwardNormals) return false;
+    const int32_t total = static_cast<int32_t>(normals.size());
+    for (size_t v = 0; v < vertices.size(); ++v) {
+      if (vertices[v].normal >= total) return true;
+    }
+    return false;
   }
 
   // Where a positive normal index turned out past the file's last normal, those vertices name no
   // normal: several of them at one position are one vertex, as they would have been had the
   // file's normal count been known when they were read. Renumbers the vertices (still in the
-  // order of first use) and rewrites the triangles.
-  void mergeUndefinedNormals(std::vector<uint32_t>& positionOf) {
+  // order of first use) and rewrites the triangles. The chains are not kept up to date: finish()
+  // needs them no more.
+  void mergeUndefinedNormals() {
     const int32_t total = static_cast<int32_t>(normals.size());
     std::unordered_map<uint64_t, uint32_t> vertexOfKey;
     std::vector<uint32_t> renumbered(vertices.size());
     uint32_t next = 0;
     for (size_t v = 0; v < vertices.size(); ++v) {
-      int32_t normal = vertexNormal[v];
-      if (normal >= total) normal = -1;
+      VertexKey vertex = vertices[v];
+      if (vertex.normal >= total) vertex.normal = -1;
       const uint64_t key =
-          (static_cast<uint64_t>(positionOf[v]) << 32) | static_cast<uint32_t>(normal);
+          (static_cast<uint64_t>(vertex.position) << 32) | static_cast<uint32_t>(vertex.normal);
       auto [it, inserted] = vertexOfKey.try_emplace(key, next);
-      if (inserted) {  // the new number is never above the old: moving down is safe in place
-        vertices[next] = vertices[v];
-        vertexNormal[next] = normal;
-        positionOf[next] = positionOf[v];
-        ++next;
-      }
+      // The new number is never above the old: moving down is safe in place.
+      if (inserted) vertices[next++] = vertex;
       renumbered[v] = it->second;
     }
     for (size_t i = 0; i < indices.size(); ++i) indices[i] = renumbered[indices[i]];
-    // Drop the vertices past the new count.
-    BlockArray<Vertex> keptVertices;
-    BlockArray<int32_t> keptNormals;
-    for (uint32_t v = 0; v < next; ++v) {
-      keptVertices.push_back(vertices[v]);
-      keptNormals.push_back(vertexNormal[v]);
+    vertices.truncate(next);
+  }
+
+  // The mesh's vertices, made from the positions, the file's normals (normalized) and, for
+  // vertices without a usable one, the area-weighted normal of their position's triangles. Frees
+  // everything the parse held but the triangles: this array is the one allocation made while the
+  // parse's arrays are all held, so it sets the peak. The index array, made after, fits in the
+  // space the positions and normals leave when the file lists them before its faces (they lie
+  // side by side then: core/block_array.h).
+  std::vector<Vertex> makeVertices() {
+    std::vector<Vertex> out;
+    out.reserve(vertices.size());
+    const int32_t total = static_cast<int32_t>(normals.size());
+    bool needComputed = false;
+    for (size_t v = 0; v < vertices.size(); ++v) {
+      const VertexKey& key = vertices[v];
+      glm::vec3 normal(0.0f);
+      if (key.normal >= 0 && key.normal < total) {
+        normal = normalizedOr(normals[static_cast<size_t>(key.normal)], glm::vec3(0.0f));
+      }
+      needComputed |= normal == glm::vec3(0.0f);
+      out.push_back(Vertex{positions[key.position], normal});
     }
-    vertices = std::move(keptVertices);
-    vertexNormal = std::move(keptNormals);
-    positionOf.resize(next);
+    normals.clear();
+    if (needComputed) {
+      // Per position: the sum of its triangles' area-weighted normals. The positions are in `out`
+      // now, so their storage holds the sums.
+      BlockArray<glm::vec3> sums;
+      std::swap(sums, positions);
+      for (size_t p = 0; p < sums.size(); ++p) sums[p] = glm::vec3(0.0f);
+      for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const glm::vec3& a = out[indices[t]].position;
+        const glm::vec3& b = out[indices[t + 1]].position;
+        const glm::vec3& c = out[indices[t + 2]].position;
+        const glm::vec3 areaNormal = glm::cross(b - a, c - a);  // length = 2 x area
+        for (size_t k = 0; k < 3; ++k) sums[vertices[indices[t + k]].position] += areaNormal;
+      }
+      for (size_t v = 0; v < vertices.size(); ++v) {
+        if (out[v].normal == glm::vec3(0.0f)) {
+          out[v].normal = normalizedOr(sums[vertices[v].position], {0.0f, 1.0f, 0.0f});
+        }
+      }
+    }
+    positions.clear();
+    vertices.clear();
+    return out;
   }
 
   Result<LoadedMesh> finish() {
@@ -589,62 +642,18 @@ struct ObjStreamParser::State {
           std::to_string(texcoordLine) + "); ignored, as texture coordinates are not used");
     }
 
-    // Which file normal each vertex takes, and whether any vertex needs a computed one.
-    const int32_t total = static_cast<int32_t>(normals.size());
-    bool needComputed = false;
-    bool undefinedForward = false;
-    for (size_t v = 0; v < vertices.size(); ++v) {
-      const int32_t n = vertexNormal[v];
-      if (n >= total) undefinedForward = true;
-      if (n < 0 || n >= total ||
-          normalizedOr(normals[static_cast<size_t>(n)], glm::vec3(0.0f)) == glm::vec3(0.0f)) {
-        needComputed = true;
-      }
-    }
-    std::vector<glm::vec3> sums;  // per position: area-weighted normals of its triangles
-    if (needComputed || undefinedForward) {
-      std::vector<uint32_t> positionOf(vertices.size());
-      for (size_t p = 0; p < firstOfPosition.size(); ++p) {
-        for (uint32_t v = firstOfPosition[p]; v != kNone; v = nextSamePosition[v]) {
-          positionOf[v] = static_cast<uint32_t>(p);
-        }
-      }
-      for (const auto& [key, v] : overflow) positionOf[v] = static_cast<uint32_t>(key >> 32);
-      if (undefinedForward) mergeUndefinedNormals(positionOf);
-      if (needComputed) {
-        sums.assign(positions.size(), glm::vec3(0.0f));
-        for (size_t t = 0; t + 2 < indices.size(); t += 3) {
-          const glm::vec3& a = vertices[indices[t]].position;
-          const glm::vec3& b = vertices[indices[t + 1]].position;
-          const glm::vec3& c = vertices[indices[t + 2]].position;
-          const glm::vec3 areaNormal = glm::cross(b - a, c - a);  // length = 2 x area
-          for (size_t k = 0; k < 3; ++k) sums[positionOf[indices[t + k]]] += areaNormal;
-        }
-        // Afterwards only each vertex's own sum is needed: keep it per vertex, in place of the
-        // position number.
-        std::vector<glm::vec3> vertexSums(vertices.size());
-        for (size_t v = 0; v < vertices.size(); ++v) vertexSums[v] = sums[positionOf[v]];
-        sums = std::move(vertexSums);
-      }
-    }
-    positions.clear();
+    // The chains found vertices while the faces were read, and the face buffers held them: not
+    // needed any more.
     firstOfPosition.clear();
-    nextSamePosition.clear();
-    overflow = {};
+    freeStorage(overflow);
+    freeStorage(cornerTokens);
+    freeStorage(face);
+    freeStorage(remaining);
+    if (anyNormalPastTheEnd()) mergeUndefinedNormals();
 
     MeshData& mesh = loaded.mesh;
     mesh.name = name;
-    mesh.vertices = vertices.release<Vertex>([&](size_t v, const Vertex& in) {
-      Vertex out = in;
-      const int32_t n = vertexNormal[v];
-      out.normal = n >= 0 && n < total ? normalizedOr(normals[static_cast<size_t>(n)], glm::vec3(0))
-                                       : glm::vec3(0.0f);
-      if (out.normal == glm::vec3(0.0f)) out.normal = normalizedOr(sums[v], {0.0f, 1.0f, 0.0f});
-      return out;
-    });
-    vertexNormal.clear();
-    normals.clear();
-    sums = {};
+    mesh.vertices = makeVertices();
     mesh.indices = indices.release();
     mesh.bounds = computeBounds(mesh.vertices);
     return loaded;

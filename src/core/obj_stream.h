@@ -8,8 +8,9 @@
 // ear clipping; a vertex is a (position, normal) pair, numbered in the order of first use; faces
 // that name normals the file never defines get computed normals (area-weighted per position), with
 // a warning; texture coordinates are checked and ignored. The parse keeps positions, normals,
-// vertices and triangles in blocks (BlockArray) so nothing is copied as it grows; finish() hands
-// them over as exactly sized arrays.
+// vertices (as position and normal numbers) and triangles in blocks (BlockArray) so nothing is
+// copied as it grows; finish() makes the vertices and hands them and the triangles over as exactly
+// sized arrays, ordered so that the memory it peaks at is the parse's and one of them.
 #pragma once
 
 #include <cstddef>

@@ -5,6 +5,7 @@
 #include <emscripten/emscripten.h>
 
 #include <algorithm>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -67,7 +68,9 @@ struct LevelRequest {
   std::string name;
   uint32_t revision = 0;
   std::vector<uint32_t> chunkTriangles;
-  std::vector<uint32_t> indices;
+  // The caller's indices, not copied: a level keeps a copy, the chunk order is copied over the
+  // mesh's own indices (a second array of a heavy mesh's would raise the wasm heap's peak).
+  std::span<const uint32_t> indices;
 };
 
 reflect::Result<LevelRequest> levelRequest(const char* request, const char* function,
@@ -89,7 +92,7 @@ reflect::Result<LevelRequest> levelRequest(const char* request, const char* func
     }
   }
   if (!error.empty()) return Out::failure(std::string(function) + ": " + error);
-  if (indices && count > 0) out.indices.assign(indices, indices + count);
+  if (indices && count > 0) out.indices = {indices, static_cast<size_t>(count)};
   return out;
 }
 
@@ -345,8 +348,7 @@ EMSCRIPTEN_KEEPALIVE const char* rf_set_mesh_chunks(const char* request, const u
   auto r = levelRequest(request, "rf_set_mesh_chunks", indices, count);
   if (!r) return replyError(r.error());
   LevelRequest& q = r.value();
-  return replyError(
-      state().demo->setMeshChunks(q.name, q.revision, std::move(q.indices), q.chunkTriangles));
+  return replyError(state().demo->setMeshChunks(q.name, q.revision, q.indices, q.chunkTriangles));
 }
 
 // The next coarser level of mesh {"name", "revision"}: `count` indices into its level-0
@@ -357,8 +359,9 @@ EMSCRIPTEN_KEEPALIVE const char* rf_add_lod(const char* request, const uint32_t*
   auto r = levelRequest(request, "rf_add_lod", indices, count);
   if (!r) return replyError(r.error());
   LevelRequest& q = r.value();
-  return replyError(
-      state().demo->addLodLevel(q.name, q.revision, std::move(q.indices), q.chunkTriangles));
+  return replyError(state().demo->addLodLevel(
+      q.name, q.revision, std::vector<uint32_t>(q.indices.begin(), q.indices.end()),
+      q.chunkTriangles));
 }
 
 // Every coarser level of mesh {"name", "revision"} has been given. {} or {"error"}.
