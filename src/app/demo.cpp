@@ -14,7 +14,6 @@
 #include "core/scene_file.h"
 #include "core/settings_schema.h"
 #include "gfx/gl.h"
-#include "gfx/shader_program.h"
 
 namespace reflect {
 namespace {
@@ -407,15 +406,6 @@ std::string Demo::initGraphics() {
   std::string error = setUpExact();
   if (!error.empty()) return error;
   return checkGlError("init graphics") ? std::string() : "GL error while creating resources";
-}
-
-void Demo::startPrograms(const AccuracySettings& accuracy) {
-  SceneRenderer::startPrograms(accuracy);
-  glFlush();  // a browser's GPU process sees the commands only once they are flushed to it
-}
-
-void Demo::dropStartedPrograms(bool contextLost) {
-  ShaderProgram::dropStarted(contextLost);
 }
 
 std::string Demo::setUpExact() {

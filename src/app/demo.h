@@ -126,12 +126,6 @@ class Demo {
   // Creates the GL resources from the CPU-side data. Call once a context is current, and again
   // after a lost context is restored. Returns "" or a message.
   std::string initGraphics();
-  // Starts compiling the programs initGraphics builds for `accuracy` and returns without waiting
-  // for the compiler: the page calls it as soon as a scene's file is read, so the browser's GPU
-  // process compiles while the models download and parse. initGraphics takes them over; those it
-  // does not (a load that failed, settings changed meanwhile) go with dropStartedPrograms.
-  static void startPrograms(const AccuracySettings& accuracy);
-  static void dropStartedPrograms(bool contextLost = false);
   // The context is gone: forget GL names without calling GL.
   void loseGraphics();
   // Frees the GL resources (the context stays); initGraphics makes them again.

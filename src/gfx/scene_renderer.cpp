@@ -39,59 +39,29 @@ bool mayFaceAway(const MeshBuffer* mesh, const glm::mat4& model, const glm::vec3
 using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
-// The programs a renderer builds for `accuracy`: create() builds them, startPrograms() starts
-// them early; one list, so the two cannot drift apart.
-struct SceneRenderer::ProgramSources {
-  ProgramSource phong;
-  ProgramSource environment;
-  // Reflectors that need no search (a skybox, a probe whose surroundings are all far) are drawn
-  // by a program without one: a software rasteriser pays for a branch not taken. Empty (no
-  // files) when the configured lookup has no search.
-  ProgramSource plainEnvironment;
-  ProgramSource cubeTextured;
-  ProgramSource pyramidFirst;
-  ProgramSource reduce;
-
-  explicit ProgramSources(const AccuracySettings& accuracy) {
-    const bool mediump = accuracy.mediump;
-    const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
-    phong = {"mesh.vert", "phong.frag", mediump, precision};
-    environment = environmentSource(static_cast<int>(accuracy.search), mediump, precision, false);
-    if (accuracy.search == Search::Linear || accuracy.search == Search::Hierarchical) {
-      plainEnvironment =
-          environmentSource(static_cast<int>(Search::Plain), mediump, precision, false);
-    }
-    cubeTextured = {"mesh.vert", "cube_textured.frag", mediump, precision};
-    pyramidFirst = {"fullscreen.vert", "depth_pyramid.frag", false, ""};
-    reduce = {"fullscreen.vert", "depth_reduce.frag", false, ""};
-  }
-};
-
-void SceneRenderer::startPrograms(const AccuracySettings& accuracy) {
-  const ProgramSources sources(accuracy);
-  for (const ProgramSource* s : {&sources.phong, &sources.environment, &sources.plainEnvironment,
-                                 &sources.cubeTextured, &sources.pyramidFirst, &sources.reduce}) {
-    if (!s->vertexFile.empty()) ShaderProgram::start(*s);
-  }
-}
-
 Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
-  const ProgramSources sources(accuracy);
-  Result<ShaderProgram> phong = ShaderProgram::build(sources.phong);
+  const bool mediump = accuracy.mediump;
+  const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
+  Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag", mediump, precision);
   if (!phong) return Result<SceneRenderer>::failure(phong.error());
-  const int search = static_cast<int>(accuracy.search);
-  Result<EnvironmentProgram> environment = buildEnvironment(sources.environment, search, false);
+  Result<EnvironmentProgram> environment =
+      buildEnvironment(static_cast<int>(accuracy.search), mediump, precision);
   if (!environment) return Result<SceneRenderer>::failure(environment.error());
+  // Reflectors that need no search (a skybox, a probe whose surroundings are all far) are drawn
+  // by a program without one: a software rasteriser pays for a branch not taken.
+  const bool searches =
+      accuracy.search == Search::Linear || accuracy.search == Search::Hierarchical;
   Result<EnvironmentProgram> plainEnvironment =
-      sources.plainEnvironment.vertexFile.empty()
-          ? Result<EnvironmentProgram>(EnvironmentProgram{})
-          : buildEnvironment(sources.plainEnvironment, static_cast<int>(Search::Plain), false);
+      searches ? buildEnvironment(static_cast<int>(Search::Plain), mediump, precision)
+               : Result<EnvironmentProgram>(EnvironmentProgram{});
   if (!plainEnvironment) return Result<SceneRenderer>::failure(plainEnvironment.error());
-  Result<ShaderProgram> cubeTextured = ShaderProgram::build(sources.cubeTextured);
+  Result<ShaderProgram> cubeTextured =
+      ShaderProgram::build("mesh.vert", "cube_textured.frag", mediump, precision);
   if (!cubeTextured) return Result<SceneRenderer>::failure(cubeTextured.error());
-  Result<ShaderProgram> pyramidFirst = ShaderProgram::build(sources.pyramidFirst);
+  Result<ShaderProgram> pyramidFirst =
+      ShaderProgram::build("fullscreen.vert", "depth_pyramid.frag");
   if (!pyramidFirst) return Result<SceneRenderer>::failure(pyramidFirst.error());
-  Result<ShaderProgram> reduce = ShaderProgram::build(sources.reduce);
+  Result<ShaderProgram> reduce = ShaderProgram::build("fullscreen.vert", "depth_reduce.frag");
   if (!reduce) return Result<SceneRenderer>::failure(reduce.error());
 
   SceneRenderer r;

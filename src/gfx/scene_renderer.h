@@ -47,9 +47,6 @@ struct PassCounts {
 class SceneRenderer {
  public:
   static Result<SceneRenderer> create(const AccuracySettings& accuracy = {});
-  // Starts compiling the programs create(accuracy) builds (ShaderProgram::start), so a browser
-  // compiles them while the page still downloads the scene's models.
-  static void startPrograms(const AccuracySettings& accuracy);
   const AccuracySettings& accuracy() const { return accuracy_; }
 
   // Uploads (or replaces) level `lod` of the mesh the scene knows by `name` (0 = full detail;
@@ -135,12 +132,9 @@ class SceneRenderer {
   bool searchesFor(const Scene& scene, const FramePlan& plan, int index) const;
   // The environment program in use: the configured search's, or the one without a search.
   const EnvironmentProgram& activeEnvironment() const;
-  static ProgramSource environmentSource(int search, bool mediump, const std::string& precision,
-                                         bool glassExit);
-  // The program of environmentSource(search, ..., glassExit), and its uniforms.
-  static Result<EnvironmentProgram> buildEnvironment(const ProgramSource& source, int search,
-                                                     bool glassExit);
-  struct ProgramSources;
+  static Result<EnvironmentProgram> buildEnvironment(int search, bool mediump,
+                                                     const std::string& precision,
+                                                     bool glassExit = false);
   // Makes the interior maps of the scene's glass meshes that are not spheres, and the programs
   // that use them, the first time they are needed (glassSurfaces 2, a search that is no exact
   // trace). A failure leaves those objects at one surface.

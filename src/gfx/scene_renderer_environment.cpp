@@ -33,17 +33,13 @@ using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
 // The reflectors' program with the search SEARCH (environment.frag) and its uniforms.
-ProgramSource SceneRenderer::environmentSource(int search, bool mediump,
-                                               const std::string& precision, bool glassExit) {
-  return {"mesh.vert", "environment.frag", mediump,
-          precision + "#define SEARCH " + std::to_string(search) +
-              "\n#define DISTANCE_ITERATIONS 2\n#define GLASS_EXIT " + (glassExit ? "1" : "0") +
-              "\n"};
-}
-
 Result<SceneRenderer::EnvironmentProgram> SceneRenderer::buildEnvironment(
-    const ProgramSource& source, int search, bool glassExit) {
-  Result<ShaderProgram> built = ShaderProgram::build(source);
+    int search, bool mediump, const std::string& precision, bool glassExit) {
+  const std::string lookup = precision + "#define SEARCH " + std::to_string(search) +
+                             "\n#define DISTANCE_ITERATIONS 2\n#define GLASS_EXIT " +
+                             (glassExit ? "1" : "0") + "\n";
+  Result<ShaderProgram> built =
+      ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
   if (!built) return Result<EnvironmentProgram>::failure(built.error());
   const ShaderProgram& e = built.value();
   EnvironmentProgram env{ShaderProgram{},
@@ -115,14 +111,11 @@ void SceneRenderer::prepareGlassExits(const Scene& scene, double seconds) {
     if (glassEnvironment_.program.id()) continue;
     const bool mediump = accuracy_.mediump;
     const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
-    const int search = static_cast<int>(accuracy_.search);
-    const int plainSearch = static_cast<int>(Search::Plain);
     Result<EnvironmentProgram> built =
-        buildEnvironment(environmentSource(search, mediump, precision, true), search, true);
+        buildEnvironment(static_cast<int>(accuracy_.search), mediump, precision, true);
     const bool searches = plainEnvironment_.program.id() != 0;
     Result<EnvironmentProgram> plain =
-        searches ? buildEnvironment(environmentSource(plainSearch, mediump, precision, true),
-                                    plainSearch, true)
+        searches ? buildEnvironment(static_cast<int>(Search::Plain), mediump, precision, true)
                  : Result<EnvironmentProgram>(EnvironmentProgram{});
     if (!built || !plain) {
       std::fprintf(stderr, "glass exit: %s\n", (built ? plain : built).error().c_str());

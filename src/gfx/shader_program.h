@@ -12,15 +12,6 @@ namespace reflect {
 inline constexpr GLuint kAttribPosition = 0;
 inline constexpr GLuint kAttribNormal = 1;
 
-// What a program is built from: two embedded shader files, the fragment shader's precision and
-// the "#define NAME VALUE\n" lines that follow its prelude.
-struct ProgramSource {
-  std::string vertexFile;
-  std::string fragmentFile;
-  bool mediump = false;
-  std::string defines;
-};
-
 class ShaderProgram {
  public:
   // Prepends "#version 300 es" and the float precision in one place (fragment shaders mediump
@@ -29,19 +20,6 @@ class ShaderProgram {
   // `defines` ("#define NAME VALUE\n" lines) follow the prelude in the fragment shader.
   static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
                                      bool mediump = false, const std::string& defines = "");
-  static Result<ShaderProgram> build(const ProgramSource& source) {
-    return build(source.vertexFile, source.fragmentFile, source.mediump, source.defines);
-  }
-  // Starts compiling and linking the program build(source) makes, and returns without asking the
-  // driver how it went (a status query waits for the compiler). The next build of the same text
-  // takes it over and checks it then. In a browser the GPU process compiles while the page
-  // downloads and parses models; natively it only moves the work. A source that is not embedded
-  // is left for build() to report.
-  static void start(const ProgramSource& source);
-  // Programs started and not yet built (a scene load that failed or changed its settings): freed,
-  // or after a lost context forgotten (their names are gone).
-  static void dropStarted(bool contextLost = false);
-  static size_t startedCount();
   // The same from GLSL text (without #version); the names label messages. For tools and tests.
   static Result<ShaderProgram> buildFromSource(const std::string& vertexName,
                                                const char* vertexSource,

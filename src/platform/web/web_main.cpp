@@ -63,7 +63,6 @@ std::string makeContextCurrent() {
 EM_BOOL onContextLost(int, const void*, void*) {
   if (state().demo) state().demo->loseGraphics();
   if (state().pending.demo) state().pending.demo->loseGraphics();
-  reflect::Demo::dropStartedPrograms(/*contextLost=*/true);
   return EM_TRUE;  // prevents the default, which would forbid a restore
 }
 

@@ -146,11 +146,6 @@ EMSCRIPTEN_KEEPALIVE const char* rf_begin_scene(const char* request, const uint8
   const size_t images = skyboxFiles(pending.demo->scene()).size();
   pending.skyboxImages.assign(images, reflect::RgbaImage{});
   pending.skyboxReceived.assign(images, false);
-  // The renderer's programs compile in the browser's GPU process while the models download and
-  // parse; rf_commit_scene builds the renderer with the accuracy settings this one will have.
-  reflect::Demo::dropStartedPrograms();  // a load before this one's, never committed
-  reflect::Demo::startPrograms(state().demo ? state().demo->accuracySettings()
-                                            : pending.demo->accuracySettings());
   return replyDone();
 }
 
@@ -283,7 +278,6 @@ EMSCRIPTEN_KEEPALIVE const char* rf_commit_scene(const char* request) {
   }
   pending.demo->setShowError(state().view.showError);
   error = pending.demo->initGraphics();
-  reflect::Demo::dropStartedPrograms();  // those it did not take (settings changed meanwhile)
   if (!error.empty()) return replyError(error);
   if (state().demo) state().demo->releaseGraphics();
   state().demo = std::move(pending.demo);
