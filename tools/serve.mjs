@@ -1,7 +1,9 @@
 // A static file server for the built page (no dependencies): node tools/serve.mjs DIR [PORT]
 // Binds 127.0.0.1 only. Serves .wasm as application/wasm so the browser can stream-compile it.
 import { createServer } from 'node:http';
-import { readFile, stat } from 'node:fs/promises';
+import { createReadStream } from 'node:fs';
+import { stat } from 'node:fs/promises';
+import { pipeline } from 'node:stream';
 import { extname, join, normalize, resolve, sep } from 'node:path';
 
 const root = resolve(process.argv[2] || 'build/web/site');
@@ -18,13 +20,28 @@ const server = createServer(async (request, response) => {
     const path = decodeURIComponent(new URL(request.url, 'http://localhost').pathname);
     let file = normalize(join(root, path));
     if (file !== root && !file.startsWith(root + sep)) throw Object.assign(new Error(), { code: 'ENOENT' });
-    if ((await stat(file)).isDirectory()) file = join(file, 'index.html');
-    const body = await readFile(file);
+    let info = await stat(file);
+    if (info.isDirectory()) {
+      file = join(file, 'index.html');
+      info = await stat(file);
+    }
+    // Streamed, as a static server does: a large model's first bytes leave at once instead of
+    // after the whole file is read. The length is written out, or Node would send the body
+    // chunked and the page would not know a model's size (its progress, and which models are
+    // small enough to read whole).
+    const body = createReadStream(file);
+    await new Promise((ready, failed) => {
+      body.once('open', ready);
+      body.once('error', failed);
+    });
     response.writeHead(200, {
       'Content-Type': types[extname(file)] || 'application/octet-stream',
       'Cache-Control': 'no-cache',
+      'Content-Length': info.size,
     });
-    response.end(body);
+    // A read error cuts the response short (the browser sees a failed download); a browser that
+    // goes away closes the file.
+    pipeline(body, response, () => {});
   } catch (error) {
     response.writeHead(error.code === 'ENOENT' ? 404 : 500, { 'Content-Type': 'text/plain' });
     response.end(error.code === 'ENOENT' ? 'not found\n' : 'server error\n');
