@@ -40,6 +40,16 @@ uniform vec3 u_faceUp[6];
 uniform vec3 u_faceAxis[6];
 
 const int kMaxSteps = 128;
+// A ray nearly parallel to a cell border can stall against it: just past the border in exact
+// arithmetic, its rounded position falls back into the cell it left, and each step advances it by
+// the minimum. (Nearly horizontal rays on a side face's middle row, a cell border at every level,
+// at the mirror's rim.) Almost all such rays never get past, and end out of steps with the lookup
+// along d; after this many minimum steps in a row the search gives that answer at once. Measured
+// at 256 x 256 over the eight held-out times, against letting them run: no pixel changed in seven
+// shipped scenes, and skybox-grid's frame fell from 23.6 to 16.8 ms in llvmpipe, its pixels off by
+// more than 32 levels 13.6 -> 13.8 a frame (a ray that got free after more than 64 steps had found
+// the right colour). 16 and 8 cost skybox-grid 0.5 and 1.4 dB.
+const int kStallSteps = 64;
 const float kNever = 1e30;
 
 int faceOf(vec3 p) {
@@ -77,6 +87,7 @@ SearchResult searchDepths(vec3 x, vec3 d) {
   float xz = 0.0, dz = 0.0;
   vec2 xst = vec2(0.0), dst = vec2(0.0), motion = vec2(0.0), towards = vec2(0.0);
   bool faceEdge = true;  // the ray is on a face's edge: which face it is on is to be found
+  int stalled = 0;       // minimum steps in a row
   for (int i = 0; i < kMaxSteps; ++i) {
     int face = faceEdge ? faceOf(x + tau * d) : f;
     if (face != f) {
@@ -163,11 +174,13 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     int exitTexel = leavesAcross ? edgeTexel.x : edgeTexel.y;
     faceEdge = exitTexel == 0 || exitTexel >= u_faceSize;
     if ((exitTexel & (2 * span - 1)) == 0 || faceEdge) level = min(level + 1, u_topLevel);
+    stalled = tauExit - tau < 1e-4 * max(tau, 1.0) ? stalled + 1 : 0;
+    if (stalled > kStallSteps) break;
     tau = tauExit + max(tauExit * 1e-5, 1e-5);
   }
-  // Out of steps (a long walk of a ray grazing the reflector's rim, behind the sky's texels or a
-  // figure's): taken as a miss, looked up along d. (The farthest point reached, the guess this
-  // replaced, painted the rim of skybox-grid's mirror grey: its PSNR 29.4 -> 46.0 dB.)
+  // Out of steps or stalled (a long walk of a ray grazing the reflector's rim, behind the sky's
+  // texels or a figure's): taken as a miss, looked up along d. (The farthest point reached, the
+  // guess this replaced, painted the rim of skybox-grid's mirror grey: its PSNR 29.4 -> 46.0 dB.)
   return SearchResult(d, 0, kMaxSteps);
 }
 
