@@ -144,16 +144,31 @@ void CubeCaptureTarget::endBackPass() {
   glDepthFunc(GL_LESS);
 }
 
-void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
+void CubeCaptureTarget::finish(const PyramidPrograms& programs, unsigned faces) const {
   glDisable(GL_DEPTH_TEST);
-  if (format_.depthChain) {
+  if (format_.depthChain && (faces & kAllFaces) != 0) {
     glBindFramebuffer(GL_FRAMEBUFFER, pyramidFramebuffer_.id());
     const int baseTile = 1 << topLevel_;
     const bool two = format_.layers == 2;
     const GLuint pyramid = pyramid_.id();
-    // Level 0, all faces (and both layers) in one draw, from the faces' own layers and the backs.
+    // Each level is drawn over the runs of consecutive faces to rebuild, one draw a run (one
+    // draw a level when all six were captured). The programs find a texel's face from its
+    // window position, which a viewport's offset keeps.
+    const auto drawFaces = [faces](int tile) {
+      for (int first = 0; first < 6;) {
+        if (!(faces & (1u << first))) {
+          ++first;
+          continue;
+        }
+        int end = first + 1;
+        while (end < 6 && (faces & (1u << end))) ++end;
+        glViewport(first * tile, 0, (end - first) * tile, tile);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        first = end;
+      }
+    };
+    // Level 0, from the faces' own layers and the backs.
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, 0);
-    glViewport(0, 0, 6 * baseTile, baseTile);
     glUseProgram(programs.first);
     glUniform1i(programs.layers, format_.layers);
     glUniform1i(programs.faceSize, format_.faceSize);
@@ -164,7 +179,7 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
     glBindTexture(GL_TEXTURE_2D_ARRAY, two ? backs_.id() : 0);
     glActiveTexture(GL_TEXTURE2);  // u_faces2
     glBindTexture(GL_TEXTURE_2D_ARRAY, two ? faceDepths_[1].id() : 0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    drawFaces(baseTile);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
@@ -178,8 +193,7 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs) const {
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, mip - 1);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mip - 1);
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, mip);
-      glViewport(0, 0, 6 * (baseTile >> mip), baseTile >> mip);
-      glDrawArrays(GL_TRIANGLES, 0, 3);
+      drawFaces(baseTile >> mip);
     }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, topLevel_);

@@ -11,7 +11,8 @@
 //    level, level 0 a copy of the faces: RG16UI, or with two layers RGBA16UI, the second layer's
 //    codes in B and A (one chain of draws builds both, one fetch reads both). With P the face
 //    size rounded up to a power of two, level L's tile is P / 2^L texels square, so every tile
-//    halves exactly and one draw builds a level for all six faces: one draw per level, not six.
+//    halves exactly and one draw builds a level for any run of neighbouring faces: one draw per
+//    level when all six were captured, not six. Only the faces captured in a frame are rebuilt.
 //    The search reads this texture alone.
 // A level-L cell covers the 2^L x 2^L level-0 texels at its index times 2^L (clipped to N); each
 // holds the min of their near codes and the max of their far codes (and of the backs found).
@@ -60,10 +61,12 @@ class CubeCaptureTarget {
   // fragment; endBackPass() restores the depth test.
   void bindBackPass(int face) const;
   static void endBackPass();
-  // After the faces are drawn: rebuilds the pyramid from the layers' faces (and, for the first
-  // layer, the backs), then the colour mip chain when the format asks for one. Leaves the depth
-  // test off.
-  void finish(const PyramidPrograms& programs) const;
+  // After the faces are drawn: rebuilds the pyramid's tiles of the faces in `faces` (bit f for
+  // face f: the faces drawn this frame; the others' tiles still bound their unchanged depths)
+  // from the layers' faces (and, for the first layer, the backs), then the colour mip chain when
+  // the format asks for one. Leaves the depth test off.
+  static constexpr unsigned kAllFaces = 0x3fu;
+  void finish(const PyramidPrograms& programs, unsigned faces = kAllFaces) const;
 
   GLuint texture(int layer = 0) const { return colour_[static_cast<size_t>(layer)].id(); }
   GLuint faceDepths(int layer = 0) const { return faceDepths_[static_cast<size_t>(layer)].id(); }

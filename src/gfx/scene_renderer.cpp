@@ -384,7 +384,9 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
       bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY, emptyDepths_.id());
     }
     glBindVertexArray(emptyVertexArray_.id());
-    t.finish(pyramid_.uses);
+    unsigned captured = 0;
+    for (const FacePlan& face : probe.faces) captured |= 1u << face.face;
+    t.finish(pyramid_.uses, captured);
     glEnable(GL_DEPTH_TEST);
   }
   glActiveTexture(GL_TEXTURE0);
