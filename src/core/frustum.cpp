@@ -81,13 +81,4 @@ ScreenBox screenBox(const Bounds& local, const glm::mat4& model, const glm::mat4
   return box;
 }
 
-bool boxInFrontOf(const Bounds& box, const glm::vec3& point, const glm::vec3& normal) {
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 c(corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y,
-                      corner & 4 ? box.max.z : box.min.z);
-    if (glm::dot(normal, c - point) <= 0.0f) return false;
-  }
-  return true;
-}
-
 }  // namespace reflect

@@ -18,10 +18,6 @@ Bounds transformBounds(const Bounds& local, const glm::mat4& model);
 bool faceMaySee(const glm::vec3& centre, int face, float near, float far, const Bounds& local,
                 const glm::mat4& model = glm::mat4(1.0f));
 
-// True when every corner of the world box lies strictly on the side of the plane through
-// `point` that `normal` points to (nothing of it on or behind the plane).
-bool boxInFrontOf(const Bounds& box, const glm::vec3& point, const glm::vec3& normal);
-
 // Where a box lands on a target: the rectangle around its 8 corners (the box `local` placed by
 // `model`) projected by `viewProjection`, in fractions of the target (x to the right, y down;
 // 0..1 is on the target). Conservative: the object inside the box covers at most this rectangle.

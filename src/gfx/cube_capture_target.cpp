@@ -75,21 +75,16 @@ Result<CubeCaptureTarget> CubeCaptureTarget::create(const CaptureFormat& format)
   if (format.depthChain) t.pyramid_ = createPyramid(t.topLevel_, t.format_.layers);
   if (t.format_.layers == 2) t.backs_ = createFaceArray(GL_R16UI, size);
 
-  t.peelStencil_ = t.format_.layers == 2 && format.depthBits > 16;
   t.depth_ = RenderbufferHandle(genRenderbuffer());
   glBindRenderbuffer(GL_RENDERBUFFER, t.depth_.id());
   glRenderbufferStorage(GL_RENDERBUFFER,
-                        t.peelStencil_           ? GL_DEPTH24_STENCIL8
-                        : format.depthBits <= 16 ? GL_DEPTH_COMPONENT16
-                                                 : GL_DEPTH_COMPONENT24,
-                        size, size);
+                        format.depthBits <= 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24, size,
+                        size);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
 
   t.framebuffer_ = FramebufferHandle(genFramebuffer());
   glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer_.id());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER,
-                            t.peelStencil_ ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
-                            GL_RENDERBUFFER, t.depth_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth_.id());
   t.bindFace(0, 0);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (format.depthChain) t.pyramidFramebuffer_ = FramebufferHandle(genFramebuffer());
@@ -120,20 +115,16 @@ void CubeCaptureTarget::bindFace(int face, int layer) const {
   glViewport(0, 0, format_.faceSize, format_.faceSize);
 }
 
-void CubeCaptureTarget::clearFace(const float colour[3], float alpha, const unsigned codes[2],
-                                  bool stencilToo) const {
+void CubeCaptureTarget::clearFace(const float colour[3], float alpha,
+                                  const unsigned codes[2]) const {
   const GLfloat rgba[4] = {colour[0], colour[1], colour[2], alpha};
   glClearBufferfv(GL_COLOR, 0, rgba);
   if (format_.depthChain) {
     const GLuint values[4] = {codes[0], codes[1], 0, 0};
     glClearBufferuiv(GL_COLOR, 1, values);
   }
-  if (peelStencil_ && stencilToo) {
-    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  } else {
-    const GLfloat far = 1.0f;
-    glClearBufferfv(GL_DEPTH, 0, &far);
-  }
+  const GLfloat far = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &far);
 }
 
 void CubeCaptureTarget::bindBackPass(int face) const {

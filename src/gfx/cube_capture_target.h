@@ -54,13 +54,8 @@ class CubeCaptureTarget {
   // face's level-0 depths as the second colour attachment) and sets the viewport.
   void bindFace(int face, int layer) const;
   // Clears the bound face: colour to `colour` with alpha `alpha`, the depths' two channels to
-  // `codes`, the depth buffer to the far plane, and (`stencilToo`, pass 1) the stencil to 0.
-  void clearFace(const float colour[3], float alpha, const unsigned codes[2],
-                 bool stencilToo = true) const;
-  // Whether the faces have a stencil: two layers with a 24-bit depth (GLES 3 has no 16-bit depth
-  // with stencil). Pass 1 marks the texels something may lie behind, and passes 2 and 3, which
-  // only matter there, draw nowhere else (SceneRenderer::capture).
-  bool peelStencil() const { return peelStencil_; }
+  // `codes`, the depth buffer to the far plane.
+  void clearFace(const float colour[3], float alpha, const unsigned codes[2]) const;
   // Binds `face` of the backs texture alone (shaders/capture_output.glsl, pass 3: the farthest
   // back of each object in front), clears it and the depth buffer, and keeps the farthest
   // fragment; endBackPass() restores the depth test.
@@ -93,7 +88,6 @@ class CubeCaptureTarget {
   FramebufferHandle pyramidFramebuffer_;
   CaptureFormat format_;
   int topLevel_ = 0;
-  bool peelStencil_ = false;
 };
 
 }  // namespace reflect

@@ -34,21 +34,6 @@ bool mayFaceAway(const MeshBuffer* mesh, const glm::mat4& model, const glm::vec3
   return glm::dot(normal, offset) > -1e-4f * glm::length(normal) * glm::length(offset);
 }
 
-// Whether nothing can lie behind a flat mesh drawn with `model`, seen from `centre`: the probe
-// sees only its front, there is no sky, and every other object of the face lies wholly in front
-// of its plane. Then where it is the nearest surface, passes 2 and 3 find nothing behind it, and
-// they need not draw there.
-bool hidesNothing(const MeshBuffer* mesh, const glm::mat4& model, const glm::vec3& centre,
-                  const std::vector<Bounds>& others, bool sky) {
-  if (sky || !mesh || mayFaceAway(mesh, model, centre)) return false;
-  const glm::vec3 normal = normalMatrixOf(glm::mat3(model)) * mesh->flatNormal();
-  const glm::vec3 point(model * glm::vec4(mesh->flatPoint(), 1.0f));
-  for (const Bounds& b : others) {
-    if (!boxInFrontOf(b, point, normal)) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 using renderer_detail::bindTexture;
@@ -275,16 +260,14 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
                                     const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
                                     const glm::vec3& viewPosition,
                                     const glm::vec3& environmentViewPosition,
-                                    const CaptureState& pass, bool outputDirections,
-                                    const std::vector<int>* stencilMarks) {
+                                    const CaptureState& pass, bool outputDirections) {
   PassCounts counts;
   // One program switch per material kind present: Phong first, then the environment users.
   for (ProgramKind kind : {ProgramKind::Phong, ProgramKind::PlainEnvironment,
                            ProgramKind::Environment, ProgramKind::PlainGlassEnvironment,
                            ProgramKind::GlassEnvironment, ProgramKind::CubeTextured}) {
     bool inUse = false;
-    for (size_t i = 0; i < draws.size(); ++i) {
-      const DrawItem& d = draws[i];
+    for (const DrawItem& d : draws) {
       const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
       const Material m = object.material;
       // A mirror seen in another probe's capture looks its own cube up plainly: that view is a
@@ -308,7 +291,6 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
             outputDirections);
       }
       inUse = true;
-      if (stencilMarks) glStencilFunc(GL_ALWAYS, (*stencilMarks)[i], 0xffu);
       counts += drawObject(scene, plan, d, seconds);
     }
   }
@@ -365,29 +347,13 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
       }
       // Pass 3 keeps only surfaces facing away from the probe: it skips what cannot have any.
       std::vector<DrawItem> backDraws;
-      // With a stencil, pass 1 marks where what is nearest may hide something (all but the
-      // draws in `front`), and passes 3 and 2 draw only there: a floor with nothing beneath
-      // it spans half of most faces, and they found nothing behind it (the same pixels).
-      const bool stencil = face.layers == 2 && t.peelStencil();
-      std::vector<int> marks;
       if (face.layers == 2) {
-        std::vector<Bounds> bounds;
         for (const DrawItem& d : face.draws) {
           const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
-          const glm::mat4 model = scene.modelMatrix(object, seconds);
-          if (mayFaceAway(mesh(object.mesh, d.lod), model, probe.centre)) backDraws.push_back(d);
-          const MeshBuffer* m = mesh(object.mesh, d.lod);
-          bounds.push_back(m ? transformBounds(m->bounds(), model) : Bounds{});
-        }
-        for (size_t i = 0; i < face.draws.size(); ++i) {
-          const DrawItem& d = face.draws[i];
-          const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
-          std::vector<Bounds> others = bounds;
-          others.erase(others.begin() + static_cast<std::ptrdiff_t>(i));
-          const bool flatFront =
-              hidesNothing(mesh(object.mesh, d.lod), scene.modelMatrix(object, seconds),
-                           probe.centre, others, skybox_ != nullptr);
-          marks.push_back(flatFront ? 0 : 1);
+          if (mayFaceAway(mesh(object.mesh, d.lod), scene.modelMatrix(object, seconds),
+                          probe.centre)) {
+            backDraws.push_back(d);
+          }
         }
       }
       for (int layer : passes) {
@@ -396,13 +362,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
         } else {
           t.bindFace(face.face, layer - 1);
           const unsigned codes[2] = {farCode, farCode};
-          t.clearFace(clear, accuracy_.search == Search::Linear ? farAlpha : 1.0f, codes,
-                      layer == 1);
-        }
-        if (stencil) {
-          glEnable(GL_STENCIL_TEST);
-          glStencilOp(GL_KEEP, GL_KEEP, layer == 1 ? GL_REPLACE : GL_KEEP);
-          glStencilFunc(layer == 1 ? GL_ALWAYS : GL_EQUAL, 1, 0xffu);
+          t.clearFace(clear, accuracy_.search == Search::Linear ? farAlpha : 1.0f, codes);
         }
         // Passes 2 and 3 peel behind pass 1's depths, and pass 2 behind pass 3's backs.
         bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY,
@@ -415,16 +375,10 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
                                 face.face, guessDepth};
         // Other mirrors in view use their cube as it was before this frame's capture of them
         // (one bounce); they are seen from the probe centre.
-        // Pass 1 leaves the nearest surface's mark: each draw writes its own where it passes
-        // the depth test.
         counts += drawItems(scene, seconds, plan, layer == 3 ? backDraws : face.draws,
-                            projection * view, lightingEye, probe.centre, pass, false,
-                            stencil && layer == 1 ? &marks : nullptr);
-        // The sky hides nothing: unmarked in pass 1.
-        if (stencil && layer == 1) glStencilFunc(GL_ALWAYS, 0, 0xffu);
+                            projection * view, lightingEye, probe.centre, pass, false);
         if (skybox_ && layer != 3) skybox_->draw(projection, view, pass);
         if (layer == 3) CubeCaptureTarget::endBackPass();
-        glDisable(GL_STENCIL_TEST);
       }
       bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY, emptyDepths_.id());
       bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY, emptyDepths_.id());

@@ -115,13 +115,11 @@ class SceneRenderer {
   };
 
   SceneRenderer() = default;
-  // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is. With
-  // `stencilMarks` (one per draw), each draw writes its mark where it passes the depth test.
+  // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
   PassCounts drawItems(const Scene& scene, double seconds, const FramePlan& plan,
                        const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
                        const glm::vec3& viewPosition, const glm::vec3& environmentViewPosition,
-                       const CaptureState& pass, bool outputDirections,
-                       const std::vector<int>* stencilMarks = nullptr);
+                       const CaptureState& pass, bool outputDirections);
   PassCounts drawObject(const Scene& scene, const FramePlan& plan, const DrawItem& item,
                         double seconds);
   void use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,

@@ -7,8 +7,6 @@
 #include <cstdio>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "core/depth_code.h"
 #include "gfx/cube_capture_target.h"
 #include "gfx/gl.h"
@@ -110,38 +108,6 @@ TEST(DepthPyramid, WhereNothingWasDrawnTheCodeIsTheFarPlanesAsTheCSideComputesIt
   const std::vector<glm::uvec2> up = readCodes(probe->faceDepths(0), true, 2, 0, 16, 16);
   const uint32_t far = depthCode(scene.capture.far / scene.capture.near);
   EXPECT_EQ(up[8 * 16 + 8], glm::uvec2(far, far));
-}
-
-// Passes 2 and 3 draw only where pass 1 marked that something may lie behind the nearest surface
-// (SceneRenderer::capture): not behind a flat mesh with everything in front of it (the floor), but
-// behind one with something beneath it. Here a small flat top 1.45 below the probe (the sphere's
-// centre is 0.25 above the origin) hides a box further down (its top 2.45 below, more than the
-// box's own size behind the top, so pass 3 does not take the box's bottom for the top's back):
-// straight down (face -Y) the first layer stores the top, the second the box.
-TEST(DepthPyramid, WhatLiesBeneathAFlatTopIsStillPeeled) {
-  Scene scene = makeDynamicReflectionScene();
-  scene.capture.faceSize = 32;
-  SceneObject top = scene.objects[0];  // quad.obj, facing +Y
-  top.placement =
-      glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, -1.2f, 0.0f}), {0.6f, 1.0f, 0.6f});
-  SceneObject box = scene.objects[0];
-  box.mesh = "cube.obj";
-  box.placement = glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, -2.4f, 0.0f}), glm::vec3(0.2f));
-  scene.objects = {top, box, scene.objects[3]};  // and the mirror sphere
-  auto demo = testing::makeDemo(scene);
-  auto target = OffscreenTarget::create(32, 32);
-  ASSERT_TRUE(target);
-  demo->frame(0.0, target.value().framebuffer(), 32, 32, true);
-  const CubeCaptureTarget* probe = demo->renderer()->probeTarget(demo->scene().reflectorIndex());
-  ASSERT_NE(probe, nullptr);
-  ASSERT_EQ(probe->format().layers, 2);
-  const int kNegativeY = 3, centre = 16 * 32 + 16;
-  const glm::uvec2 first = readCodes(probe->faceDepths(0), true, kNegativeY, 0, 32, 32)[centre];
-  const glm::uvec2 second = readCodes(probe->faceDepths(1), true, kNegativeY, 0, 32, 32)[centre];
-  // Depth along the face's axis, in near-plane units.
-  EXPECT_NEAR(depthOfCode(first.x), 1.45, 0.01);
-  EXPECT_NEAR(depthOfCode(second.x), 2.45, 0.01);
-  EXPECT_TRUE(checkGlError("beneath a flat top"));
 }
 
 // Only the faces a frame recaptures get their tiles rebuilt (issue 11: the chain is built after

@@ -67,21 +67,6 @@ TEST(FramePlanner, CullsObjectsPerFace) {
   EXPECT_EQ(objectsIn(probe, kNY), (std::vector<int>{3}));
 }
 
-// The capture's stencil (SceneRenderer::capture) leaves the second layer undrawn behind a flat
-// mesh only when every other object is wholly in front of its plane.
-TEST(FramePlanner, ABoxIsInFrontOfAPlaneOnlyWhenEveryCornerIs) {
-  const glm::vec3 floorPoint(0.0f, -2.0f, 0.0f), up(0.0f, 1.0f, 0.0f);
-  EXPECT_TRUE(boxInFrontOf({{-1, -1.5f, -1}, {1, 1, 1}}, floorPoint, up));
-  EXPECT_FALSE(boxInFrontOf({{-1, -2.5f, -1}, {1, 1, 1}}, floorPoint, up));   // reaches beneath
-  EXPECT_FALSE(boxInFrontOf({{-1, -2.0f, -1}, {1, 1, 1}}, floorPoint, up));   // stands on it
-  EXPECT_FALSE(boxInFrontOf({{-1, -4.0f, -1}, {1, -3, 1}}, floorPoint, up));  // wholly beneath
-  EXPECT_TRUE(boxInFrontOf({{-1, -4.0f, -1}, {1, -3, 1}}, floorPoint, -up));  // seen from below
-  // A tilted plane: the corner nearest it decides.
-  const glm::vec3 tilted = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
-  EXPECT_TRUE(boxInFrontOf({{0.1f, 0.1f, -1}, {1, 1, 1}}, glm::vec3(0.0f), tilted));
-  EXPECT_FALSE(boxInFrontOf({{-0.2f, 0.1f, -1}, {1, 1, 1}}, glm::vec3(0.0f), tilted));
-}
-
 TEST(FramePlanner, NearAndFarPlanesCull) {
   const glm::vec3 c(0.0f);
   EXPECT_FALSE(faceMaySee(c, kPX, 1.0f, 100.0f,
