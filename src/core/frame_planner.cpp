@@ -224,24 +224,23 @@ std::vector<DrawItem> planViewDraws(const std::vector<PlannedObject>& objects, c
 std::vector<DrawItem> FramePlanner::drawsFor(const std::vector<PlannedObject>& objects,
                                              const std::vector<int>& members,
                                              const glm::vec3& centre, int face,
-                                             const CaptureContext& context,
-                                             const PlannerSettings& settings) const {
+                                             const CaptureContext& context, bool whole,
+                                             float trianglesPerPixel) const {
   std::vector<DrawItem> draws;
-  const bool original = settings.policy == UpdatePolicy::EveryFrame;
   for (size_t i = 0; i < objects.size(); ++i) {
     // The probe's own reflectors are left out by identity: they surround the capture point.
     if (contains(members, static_cast<int>(i))) continue;
     const PlannedObject& o = objects[i];
     DrawItem item{static_cast<int>(i), 0, {}, 0};
     if (!o.levels.empty()) item.triangles = o.levels[0].triangles;
-    if (original) {  // the course draws every object whole into every face
+    if (whole) {  // the course draws every object whole into every face
       draws.push_back(std::move(item));
       continue;
     }
     if (!faceMaySee(centre, face, context.near, context.far, o.localBounds, o.model)) continue;
     // At 90 degrees one unit of tangent spans half the face.
     item.lod =
-        chooseLevel(o, centre, 0.5f * static_cast<float>(context.faceSize), settings.captureLod);
+        chooseLevel(o, centre, 0.5f * static_cast<float>(context.faceSize), trianglesPerPixel);
     if (!o.levels.empty()) {
       const PlannedLevel& level = o.levels[static_cast<size_t>(item.lod)];
       item.triangles = level.triangles;
@@ -334,7 +333,8 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
     std::vector<int> stale;  // faces that need a redraw, in face order
     for (int face = 0; face < 6; ++face) {
       const size_t f = static_cast<size_t>(face);
-      draws[f] = drawsFor(objects, members, probe.centre, face, context, settings);
+      draws[f] = drawsFor(objects, members, probe.centre, face, context,
+                          settings.policy == UpdatePolicy::EveryFrame, settings.captureLod);
       std::vector<int> visible;
       for (const DrawItem& d : draws[f]) visible.push_back(d.object);
       staleness[f] = settings.policy == UpdatePolicy::EveryFrame
@@ -356,8 +356,14 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       m.contentVersions = contentVersions_;
       const size_t shown = draws[f].size();
       const bool hides = shown >= 2 || (context.skyboxContent != 0 && shown >= 1);
-      probe.faces.push_back(
-          FacePlan{face, std::move(draws[f]), probe.layers == 2 && hides ? 2 : 1});
+      const int layers = probe.layers == 2 && hides ? 2 : 1;
+      // The second layer is beyond the course's capture: culled and coarser under any policy.
+      std::vector<DrawItem> secondLayer;
+      if (layers == 2) {
+        secondLayer = drawsFor(objects, members, probe.centre, face, context, false,
+                               settings.captureLod * kSecondLayerDetail);
+      }
+      probe.faces.push_back(FacePlan{face, std::move(draws[f]), layers, std::move(secondLayer)});
     }
     if (capturedReal) {
       recapturedForRealChange.insert(recapturedForRealChange.end(), members.begin(), members.end());

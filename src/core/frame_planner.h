@@ -96,7 +96,18 @@ struct FacePlan {
   // face can hide something else (two objects, or one in front of the sky); a face of floor
   // alone needs one pass, not three.
   int layers = 1;
+  // What the second layer's passes draw (layers == 2): the objects of `draws`, each culled to
+  // the face by its chunks and at the coarsest level with kSecondLayerDetail of the capture
+  // LOD's triangles per pixel (full detail when capture LOD is off).
+  std::vector<DrawItem> secondLayerDraws;
 };
+
+// What lies behind the nearest surfaces is seen only by the rays that pass behind them, and its
+// depth only decides where such a ray comes out: the second layer's passes draw each object with
+// this fraction of the triangles per pixel the first layer's get. (Its passes were vertex-bound
+// in llvmpipe: half the default's capture time with every object at full detail. Measured with
+// `reflect bench --sweep`: docs/accuracy.md, "The second layer's detail".)
+inline constexpr float kSecondLayerDetail = 1.0f / 16.0f;
 
 // A probe (who samples it, where it captures from), what it stores and the faces it redraws
 // this frame.
@@ -180,10 +191,13 @@ class FramePlanner {
   Staleness faceStaleness(const ProbeMemory& probe, int face,
                           const std::vector<int>& visibleNow) const;
   void trackChanges(const std::vector<PlannedObject>& objects);
+  // The objects a face shows: with `whole`, every object at full detail (the course's capture);
+  // otherwise those the face may see, culled by chunks, at the coarsest level with
+  // `trianglesPerPixel` (0: full detail).
   std::vector<DrawItem> drawsFor(const std::vector<PlannedObject>& objects,
                                  const std::vector<int>& members, const glm::vec3& centre, int face,
-                                 const CaptureContext& context,
-                                 const PlannerSettings& settings) const;
+                                 const CaptureContext& context, bool whole,
+                                 float trianglesPerPixel) const;
 
   std::vector<PlannedObject> previous_;
   std::vector<uint32_t> stateVersions_;  // per object: bumped each frame its state changes

@@ -348,7 +348,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
       // Pass 3 keeps only surfaces facing away from the probe: it skips what cannot have any.
       std::vector<DrawItem> backDraws;
       if (face.layers == 2) {
-        for (const DrawItem& d : face.draws) {
+        for (const DrawItem& d : face.secondLayerDraws) {
           const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
           if (mayFaceAway(mesh(object.mesh, d.lod), scene.modelMatrix(object, seconds),
                           probe.centre)) {
@@ -375,7 +375,10 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
                                 face.face, guessDepth};
         // Other mirrors in view use their cube as it was before this frame's capture of them
         // (one bounce); they are seen from the probe centre.
-        counts += drawItems(scene, seconds, plan, layer == 3 ? backDraws : face.draws,
+        counts += drawItems(scene, seconds, plan,
+                            layer == 1   ? face.draws
+                            : layer == 3 ? backDraws
+                                         : face.secondLayerDraws,
                             projection * view, lightingEye, probe.centre, pass, false);
         if (skybox_ && layer != 3) skybox_->draw(projection, view, pass);
         if (layer == 3) CubeCaptureTarget::endBackPass();

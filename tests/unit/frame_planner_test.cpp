@@ -324,6 +324,51 @@ TEST(FramePlanner, CoarserLevelsForObjectsSmallInTheFace) {
   EXPECT_EQ(PlannerSettings{}.viewLod, 0.0f);
 }
 
+TEST(FramePlanner, TheSecondLayerDrawsCoarserAndOnlyWhereSomethingHides) {
+  auto withLevels = [](PlannedObject o) {
+    o.levels = {{4000, nullptr}, {1000, nullptr}, {250, nullptr}};
+    return o;
+  };
+  // +X shows a box at 3 units (level 0 in the first layer: it wants 2140 triangles) in front of
+  // another at 8; -Z shows one box alone.
+  PlannedObject mirror = mirrorAt({0, 0, 0});
+  mirror.look.material = Material::Mirror;  // it searches its surroundings
+  const std::vector<PlannedObject> scene = {mirror, withLevels(boxAt({3, 0, 0})),
+                                            withLevels(boxAt({8, 0, 0})),
+                                            withLevels(boxAt({0, 0, -5}))};
+  auto faceOf = [](const FramePlan& plan, int face) {
+    for (const FacePlan& f : plan.probes[0].faces)
+      if (f.face == face) return f;
+    return FacePlan{};
+  };
+  for (UpdatePolicy policy : {UpdatePolicy::WhenChanged, UpdatePolicy::EveryFrame}) {
+    FramePlanner planner;
+    PlannerSettings settings;
+    settings.policy = policy;
+    const FramePlan plan = planner.plan(scene, {}, settings);
+    ASSERT_EQ(plan.probes[0].layers, 2);
+    const FacePlan px = faceOf(plan, kPX);
+    EXPECT_EQ(px.layers, 2);
+    // A sixteenth of the triangles per pixel: the near box wants 134, level 2.
+    ASSERT_EQ(px.secondLayerDraws.size(), 2u);
+    EXPECT_EQ(px.secondLayerDraws[0].object, 1);
+    EXPECT_EQ(px.secondLayerDraws[0].lod, 2);
+    // Beyond the course's capture, culled under every policy: -Z's box is not drawn in +X.
+    for (const DrawItem& d : px.secondLayerDraws) EXPECT_NE(d.object, 3);
+    const FacePlan nz = faceOf(plan, kNZ);
+    if (policy == UpdatePolicy::WhenChanged) {
+      EXPECT_EQ(nz.layers, 1);  // one object: nothing to hide
+      EXPECT_TRUE(nz.secondLayerDraws.empty());
+    }
+  }
+  // Capture LOD off (full detail as a setting): the second layer at full detail too.
+  FramePlanner planner;
+  PlannerSettings full;
+  full.captureLod = 0.0f;
+  const FramePlan plan = planner.plan(scene, {}, full);
+  for (const DrawItem& d : faceOf(plan, kPX).secondLayerDraws) EXPECT_EQ(d.lod, 0);
+}
+
 TEST(FramePlanner, ViewLodPicksLevelsByTheObjectsSizeInTheView) {
   auto withLevels = [](PlannedObject o) {
     o.levels = {{4000, nullptr}, {1000, nullptr}, {250, nullptr}};
