@@ -96,17 +96,20 @@ struct FacePlan {
   // face can hide something else (two objects, or one in front of the sky); a face of floor
   // alone needs one pass, not three.
   int layers = 1;
-  // What the second layer's passes draw (layers == 2): the objects of `draws`, each culled to
-  // the face by its chunks and at the coarsest level with kSecondLayerDetail of the capture
-  // LOD's triangles per pixel (full detail when capture LOD is off).
+  // What the second layer's peel draws (layers == 2; capture pass 2, what the nearest surfaces
+  // hide): the objects of `draws`, each culled to the face by its chunks and at the coarsest
+  // level with kSecondLayerDetail of the capture LOD's triangles per pixel (full detail when
+  // capture LOD is off). Pass 3, where the nearest objects end, draws `draws`: their backs must
+  // be those of the meshes the first layer stored.
   std::vector<DrawItem> secondLayerDraws;
 };
 
-// What lies behind the nearest surfaces is seen only by the rays that pass behind them, and its
-// depth only decides where such a ray comes out: the second layer's passes draw each object with
-// this fraction of the triangles per pixel the first layer's get. (Its passes were vertex-bound
-// in llvmpipe: half the default's capture time with every object at full detail. Measured with
-// `reflect bench --sweep`: docs/accuracy.md, "The second layer's detail".)
+// What the nearest surfaces hide is seen only by the rays that pass behind them: the second
+// layer's peel draws each object with this fraction of the triangles per pixel the first layer's
+// get. It was vertex-bound in llvmpipe (every figure whole into every face, at full detail).
+// Measured against full detail on the held-out times (docs/accuracy.md, "The second layer's
+// detail"): the same pixels at 256x256; coarse backs (pass 3) cost up to 0.3 dB, so they keep
+// the first layer's detail.
 inline constexpr float kSecondLayerDetail = 1.0f / 16.0f;
 
 // A probe (who samples it, where it captures from), what it stores and the faces it redraws

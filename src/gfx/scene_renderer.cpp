@@ -348,7 +348,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
       // Pass 3 keeps only surfaces facing away from the probe: it skips what cannot have any.
       std::vector<DrawItem> backDraws;
       if (face.layers == 2) {
-        for (const DrawItem& d : face.secondLayerDraws) {
+        for (const DrawItem& d : face.draws) {
           const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
           if (mayFaceAway(mesh(object.mesh, d.lod), scene.modelMatrix(object, seconds),
                           probe.centre)) {
