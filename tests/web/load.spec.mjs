@@ -22,11 +22,14 @@ test('loads without errors, resolves demo.ready and draws a non-blank scene', as
   expect(errors).toEqual([]);
 });
 
-// The contract: every frame re-captures the cube map, six faces, 52 draw calls (6 faces x 3
-// objects in passes 1 and 2, as the default stores two depth layers where figures can hide the
-// floor, and the 2 figures in pass 3, which skips the flat ground; + 4 in the main pass). A page whose stats name another capture `policy` (a planner that
-// skips unchanged faces) cannot meet the fixed counts; for it the test checks that the counts are
-// consistent and that a scene change is captured, and records an annotation saying so.
+// The contract: every frame re-captures the cube map, six faces, and more than 34 draw calls: the
+// 3 objects whole in pass 1 and the 2 figures whole in pass 3 (which skips the flat ground) in
+// each of the 6 faces, as the default stores two depth layers where figures can hide the floor,
+// + 4 in the main pass; and pass 2's draws, the chunks of each object the face sees (at least the
+// ground's, in the five faces that see it), whose number moves with the figures. A page whose
+// stats name another capture `policy` (a planner that skips unchanged faces) re-captures fewer
+// faces; for it the test checks that the counts are consistent and that a scene change is
+// captured, and records an annotation saying so.
 const EVERY_FRAME = (s) => s.policy === undefined || s.policy === 'every-frame';
 
 test('stats line shows fps, faces, draws and triangles; demo.stats() has the counts', async ({ page }) => {
@@ -87,14 +90,14 @@ test('stats line shows fps, faces, draws and triangles; demo.stats() has the cou
   expect(s.timing).toBe('gpu-finish');
   if (EVERY_FRAME(s)) {
     expect(s.facesCaptured).toBe(6);
-    expect(s.drawCalls).toBe(52);
+    expect(s.drawCalls).toBeGreaterThanOrEqual(34 + 5);
     expect(loop.facesCaptured).toBe(6);
-    expect(loop.drawCalls).toBe(52);
-    expect(text).toContain('\n6 faces · 52 draws · ');
+    expect(loop.drawCalls).toBeGreaterThanOrEqual(34 + 5);
+    expect(text).toContain(`\n6 faces · ${loop.drawCalls} draws · `);
   } else {
     test.info().annotations.push({ type: 'contract',
       description: `capture policy "${s.policy}": ${s.facesCaptured} faces / ${s.drawCalls} draws ` +
-                   'for a moving frame, not the 6 / 52 of re-capturing every frame' });
+                   'for a moving frame, not the 6 faces of re-capturing every frame' });
     expect(s.facesCaptured).toBeGreaterThanOrEqual(1);  // the figures moved: something is redrawn
     expect(s.facesCaptured).toBeLessThanOrEqual(6);
     expect(s.drawCalls).toBeGreaterThanOrEqual(4);     // at least the main pass's four objects
