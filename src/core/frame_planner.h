@@ -106,10 +106,10 @@ struct FacePlan {
 
 // What the nearest surfaces hide is seen only by the rays that pass behind them: the second
 // layer's peel draws each object with this fraction of the triangles per pixel the first layer's
-// get. It was vertex-bound in llvmpipe (every figure whole into every face, at full detail).
-// Measured against full detail on the held-out times (docs/accuracy.md, "The second layer's
-// detail"): the same pixels at 256x256; coarse backs (pass 3) cost up to 0.3 dB, so they keep
-// the first layer's detail.
+// get. In llvmpipe that pass was bound by the figures' triangles (every figure whole into every
+// face, at full detail). Measured against full detail on the held-out times (docs/accuracy.md,
+// "The second layer's detail and the pyramid's faces"): the same pixels at 256x256; coarse backs
+// (pass 3) moved single times by up to 0.3 dB, so pass 3 keeps the first layer's detail.
 inline constexpr float kSecondLayerDetail = 1.0f / 16.0f;
 
 // A probe (who samples it, where it captures from), what it stores and the faces it redraws
