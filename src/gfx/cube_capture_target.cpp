@@ -146,7 +146,7 @@ void CubeCaptureTarget::endBackPass() {
 
 void CubeCaptureTarget::finish(const PyramidPrograms& programs, unsigned faces) const {
   glDisable(GL_DEPTH_TEST);
-  if (format_.depthChain && (faces & kAllFaces) != 0) {
+  if (format_.depthChain && faces != 0) {
     glBindFramebuffer(GL_FRAMEBUFFER, pyramidFramebuffer_.id());
     const int baseTile = 1 << topLevel_;
     const bool two = format_.layers == 2;

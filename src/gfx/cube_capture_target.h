@@ -65,8 +65,7 @@ class CubeCaptureTarget {
   // face f: the faces drawn this frame; the others' tiles still bound their unchanged depths)
   // from the layers' faces (and, for the first layer, the backs), then the colour mip chain when
   // the format asks for one. Leaves the depth test off.
-  static constexpr unsigned kAllFaces = 0x3fu;
-  void finish(const PyramidPrograms& programs, unsigned faces = kAllFaces) const;
+  void finish(const PyramidPrograms& programs, unsigned faces) const;
 
   GLuint texture(int layer = 0) const { return colour_[static_cast<size_t>(layer)].id(); }
   GLuint faceDepths(int layer = 0) const { return faceDepths_[static_cast<size_t>(layer)].id(); }

@@ -20,8 +20,8 @@ namespace {
 
 // An integer texture image, read as (R, G) per texel, or (B, A) with `second`, rows from the
 // bottom.
-std::vector<glm::uvec2> readCodes(GLuint texture, bool array, int layer, int level, int width,
-                                  int height, bool second = false) {
+// A framebuffer, bound, with `level` of `texture` (its `layer` when an array) as its colour.
+FramebufferHandle bindLevel(GLuint texture, bool array, int layer, int level) {
   FramebufferHandle fb(genFramebuffer());
   glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
   if (array) {
@@ -29,6 +29,12 @@ std::vector<glm::uvec2> readCodes(GLuint texture, bool array, int layer, int lev
   } else {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, level);
   }
+  return fb;
+}
+
+std::vector<glm::uvec2> readCodes(GLuint texture, bool array, int layer, int level, int width,
+                                  int height, bool second = false) {
+  const FramebufferHandle fb = bindLevel(texture, array, layer, level);
   std::vector<GLuint> rgba(static_cast<size_t>(width * height * 4));
   glReadPixels(0, 0, width, height, GL_RGBA_INTEGER, GL_UNSIGNED_INT, rgba.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -126,10 +132,7 @@ TEST(DepthPyramid, OnlyTheFacesRecapturedAreRebuilt) {
   for (int frame = 0; frame < 8; ++frame) {
     const CubeCaptureTarget* probe = demo->renderer()->probeTarget(demo->scene().reflectorIndex());
     if (probe) {
-      FramebufferHandle fb(genFramebuffer());
-      glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, probe->pyramid(),
-                             probe->topLevel());
+      const FramebufferHandle fb = bindLevel(probe->pyramid(), false, 0, probe->topLevel());
       const GLuint values[4] = {mark.x, mark.y, mark.x, mark.y};
       glClearBufferuiv(GL_COLOR, 0, values);
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
