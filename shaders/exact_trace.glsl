@@ -8,35 +8,38 @@
 // (one ray a bounce: no tree of rays in a fragment shader).
 //
 // The scene is two levels of BVH (core/bvh.h) in float textures, kBvhTextureWidth texels a row:
-//  u_exactNodes      every mesh's nodes, 2 texels each: (min, first), (max, count); first is the
-//                    left child (the right one follows it) or, in a leaf, the first triangle
-//  u_exactPositions  3 texels a triangle (object space), in leaf order
-//  u_exactNormals    3 texels a triangle: the vertices' normals
-//  u_exactScene      kInstanceTexels per object (its inverse model's rows, normal matrix columns,
-//                    colour and material, mix weights, probe centre and root node, self epsilon),
-//                    then the top level's nodes (from u_exactTopNodes) and items (u_exactTopOrder)
-// Rays go into each object's space unnormalised, so t is the same parameter in both.
+//  u_exactAtlas    every mesh's tree: interior nodes (kNodeTexels: each child's (min, ref) and
+//                  (max, count)) and triangles (kTriangleTexels: v0, v1 - v0, v2 - v0, v0.w its
+//                  slot); after them, rewritten each frame, the header (the top level's box and
+//                  root), each object's slot (its inverse model's rows, then (root, count,
+//                  object)) and the top level's interior nodes
+//  u_exactNormals  3 texels a triangle slot: its vertices' normals
+//  u_exactScene    kInstanceTexels per object, for shading what the walk found (normal matrix
+//                  columns, colour and material, mix weights, probe centre, self epsilon,
+//                  inverse model's rows)
+// A reference (ref, count) is an interior node (count 0), a leaf of `count` triangles, or in the
+// top level an object's slot (count -1). Rays go into each object's space unnormalised, so t is
+// the same parameter in both levels.
 #if SEARCH == 3
 // Tracing needs full precision whatever the shader's default (mediump would lose the triangles).
 precision highp float;
 precision highp int;
-const int kExactWidth = 1024;       // kBvhTextureWidth
+const int kExactWidthShift = 10;    // log2(kBvhTextureWidth)
 const int kExactInstance = 10;      // kInstanceTexels
-const int kExactStack = 33;         // kBvhMaxDepth + 1
+const int kExactStack = 66;         // two levels of kBvhMaxDepth, and a leaf of objects split
+const int kExactSteps = 4096;       // a bound on one walk's turns (a walk takes tens)
 const int kExactMaxBounces = 4;     // reference_renderer.h's kMaxBounces
 const int kExactMaxInternal = 8;    // and kMaxInternalReflections
 const float kExactFar = 3.0e38;     // no hit
 
-uniform highp sampler2D u_exactNodes;
-uniform highp sampler2D u_exactPositions;
+uniform highp sampler2D u_exactAtlas;
 uniform highp sampler2D u_exactNormals;
 uniform highp sampler2D u_exactScene;
 uniform samplerCube u_exactSky;
 uniform int u_exactHasSky;    // 0: the clear colour where nothing is met
 uniform vec3 u_exactClear;
 uniform int u_exactSelf;      // the object being drawn
-uniform int u_exactTopNodes;
-uniform int u_exactTopOrder;
+uniform int u_exactHeader;    // the texel of the top level's header in u_exactAtlas
 uniform int u_exactEmpty;     // 1: nothing to trace
 uniform vec3 u_exactLight;
 uniform vec4 u_exactPhong;    // ambient, diffuse, specular, shininess
@@ -44,13 +47,13 @@ uniform vec3 u_exactEye;      // the main camera's eye: captures are lit as seen
 uniform int u_exactMark;      // 1: alpha 0 on this pass's pixels (the error view's reflector mask)
 
 highp vec4 exactFetch(highp sampler2D s, int i) {
-  return texelFetch(s, ivec2(i % kExactWidth, i / kExactWidth), 0);
+  return texelFetch(s, ivec2(i & ((1 << kExactWidthShift) - 1), i >> kExactWidthShift), 0);
 }
 
 struct ExactHit {
   float t;
   int instance;  // -1: nothing met
-  int slot;      // the triangle, in leaf order
+  int slot;      // the triangle's slot (u_exactNormals)
   float u;
   float v;
 };
@@ -72,7 +75,11 @@ vec3 exactInverse(vec3 d) {
 }
 
 // The nearest hit along o + t d, t in (tMin, best.t), among the objects but `skip` (only `only`
-// when >= 0): the top level, then each object's own tree, both walked nearer child first.
+// when >= 0). One loop walks both levels, nearer child first: each turn reads the four texels
+// at `ref` and, by `count`, tests an interior node's two children, one triangle of a leaf, or
+// enters an object (the ray moves into its space; its nodes are pushed above `base`, and the
+// ray moves back when the walk pops below it). Every turn reads the same texture the same way:
+// a software rasteriser runs each turn's whole body for every pixel.
 ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only) {
   ExactHit best;
   best.t = kExactFar;
@@ -81,134 +88,90 @@ ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only)
   best.u = 0.0;
   best.v = 0.0;
   if (u_exactEmpty == 1) return best;
-  vec3 invD = exactInverse(direction);
-  int topNode[kExactStack];
-  float topEntry[kExactStack];
-  int top = 0;
-  int node = 0;
-  vec4 r0 = exactFetch(u_exactScene, u_exactTopNodes);
-  vec4 r1 = exactFetch(u_exactScene, u_exactTopNodes + 1);
-  if (exactBoxEntry(r0.xyz, r1.xyz, origin, invD, tMin, best.t) >= kExactFar) return best;
-  for (;;) {
-    vec4 a = exactFetch(u_exactScene, u_exactTopNodes + 2 * node);
-    vec4 b = exactFetch(u_exactScene, u_exactTopNodes + 2 * node + 1);
-    int first = int(a.w);
-    int count = int(b.w);
-    bool descended = false;
-    if (count > 0) {
-      for (int k = 0; k < count; ++k) {
-        int instance = int(exactFetch(u_exactScene, u_exactTopOrder + first + k).x);
-        if (instance == skip || (only >= 0 && instance != only)) continue;
-        int base = instance * kExactInstance;
-        int root = int(exactFetch(u_exactScene, base + 8).w);
-        if (root < 0) continue;
-        vec4 m0 = exactFetch(u_exactScene, base);
-        vec4 m1 = exactFetch(u_exactScene, base + 1);
-        vec4 m2 = exactFetch(u_exactScene, base + 2);
-        vec3 o = vec3(dot(m0, vec4(origin, 1.0)), dot(m1, vec4(origin, 1.0)),
-                      dot(m2, vec4(origin, 1.0)));
-        vec3 d = vec3(dot(m0.xyz, direction), dot(m1.xyz, direction), dot(m2.xyz, direction));
-        vec3 inv = exactInverse(d);
-        // The object's own tree.
-        int meshNode[kExactStack];
-        float meshEntry[kExactStack];
-        int sp = 0;
-        int n = root;
-        vec4 q0 = exactFetch(u_exactNodes, 2 * root);
-        vec4 q1 = exactFetch(u_exactNodes, 2 * root + 1);
-        if (exactBoxEntry(q0.xyz, q1.xyz, o, inv, tMin, best.t) >= kExactFar) continue;
-        for (;;) {
-          vec4 na = exactFetch(u_exactNodes, 2 * n);
-          vec4 nb = exactFetch(u_exactNodes, 2 * n + 1);
-          int nFirst = int(na.w);
-          int nCount = int(nb.w);
-          bool down = false;
-          if (nCount > 0) {
-            for (int s = nFirst; s < nFirst + nCount; ++s) {
-              vec3 v0 = exactFetch(u_exactPositions, 3 * s).xyz;
-              vec3 e1 = exactFetch(u_exactPositions, 3 * s + 1).xyz - v0;
-              vec3 e2 = exactFetch(u_exactPositions, 3 * s + 2).xyz - v0;
-              vec3 p = cross(d, e2);
-              float det = dot(e1, p);
-              if (det == 0.0) continue;
-              float invDet = 1.0 / det;
-              vec3 sv = o - v0;
-              float u = dot(sv, p) * invDet;
-              if (u < 0.0 || u > 1.0) continue;
-              vec3 q = cross(sv, e1);
-              float v = dot(d, q) * invDet;
-              if (v < 0.0 || u + v > 1.0) continue;
-              float t = dot(e2, q) * invDet;
-              if (t > tMin && t < best.t) {
-                best.t = t;
-                best.instance = instance;
-                best.slot = s;
-                best.u = u;
-                best.v = v;
-              }
-            }
-          } else {
-            vec4 l0 = exactFetch(u_exactNodes, 2 * nFirst);
-            vec4 l1 = exactFetch(u_exactNodes, 2 * nFirst + 1);
-            vec4 g0 = exactFetch(u_exactNodes, 2 * nFirst + 2);
-            vec4 g1 = exactFetch(u_exactNodes, 2 * nFirst + 3);
-            float tl = exactBoxEntry(l0.xyz, l1.xyz, o, inv, tMin, best.t);
-            float tr = exactBoxEntry(g0.xyz, g1.xyz, o, inv, tMin, best.t);
-            if (tl < kExactFar || tr < kExactFar) {
-              bool leftFirst = tl <= tr;
-              n = leftFirst ? nFirst : nFirst + 1;
-              float farEntry = leftFirst ? tr : tl;
-              if (farEntry < kExactFar) {
-                meshNode[sp] = leftFirst ? nFirst + 1 : nFirst;
-                meshEntry[sp] = farEntry;
-                ++sp;
-              }
-              down = true;
-            }
-          }
-          if (down) continue;
-          bool found = false;
-          while (sp > 0) {
-            --sp;
-            if (meshEntry[sp] <= best.t) {
-              n = meshNode[sp];
-              found = true;
-              break;
-            }
-          }
-          if (!found) break;
-        }
+  vec3 worldInv = exactInverse(direction);
+  vec4 h0 = exactFetch(u_exactAtlas, u_exactHeader);
+  vec4 h1 = exactFetch(u_exactAtlas, u_exactHeader + 1);
+  if (exactBoxEntry(h0.xyz, h1.xyz, origin, worldInv, tMin, best.t) >= kExactFar) return best;
+  int ref = int(h0.w);
+  int count = int(h1.w);
+  vec3 o = origin;
+  vec3 d = direction;
+  vec3 inv = worldInv;
+  int instance = -1;
+  int base = -1;  // the stack's height when the walk entered `instance` (-1: the top level)
+  int stackRef[kExactStack];
+  int stackCount[kExactStack];
+  float stackEntry[kExactStack];
+  int sp = 0;
+  for (int step = 0; step < kExactSteps; ++step) {
+    vec4 a = exactFetch(u_exactAtlas, ref);
+    vec4 b = exactFetch(u_exactAtlas, ref + 1);
+    vec4 c = exactFetch(u_exactAtlas, ref + 2);
+    vec4 e = exactFetch(u_exactAtlas, ref + 3);
+    bool done = false;  // this reference is finished: take the next from the stack
+    if (count == 0) {  // an interior node: a = (left min, ref), b = (left max, count), c, e right
+      float tl = exactBoxEntry(a.xyz, b.xyz, o, inv, tMin, best.t);
+      float tr = exactBoxEntry(c.xyz, e.xyz, o, inv, tMin, best.t);
+      bool leftFirst = tl <= tr;
+      float nearEntry = min(tl, tr);
+      float farEntry = max(tl, tr);
+      if (farEntry < kExactFar) {
+        stackRef[sp] = int(leftFirst ? c.w : a.w);
+        stackCount[sp] = int(leftFirst ? e.w : b.w);
+        stackEntry[sp] = farEntry;
+        ++sp;
       }
-    } else {
-      vec4 l0 = exactFetch(u_exactScene, u_exactTopNodes + 2 * first);
-      vec4 l1 = exactFetch(u_exactScene, u_exactTopNodes + 2 * first + 1);
-      vec4 g0 = exactFetch(u_exactScene, u_exactTopNodes + 2 * first + 2);
-      vec4 g1 = exactFetch(u_exactScene, u_exactTopNodes + 2 * first + 3);
-      float tl = exactBoxEntry(l0.xyz, l1.xyz, origin, invD, tMin, best.t);
-      float tr = exactBoxEntry(g0.xyz, g1.xyz, origin, invD, tMin, best.t);
-      if (tl < kExactFar || tr < kExactFar) {
-        bool leftFirst = tl <= tr;
-        node = leftFirst ? first : first + 1;
-        float farEntry = leftFirst ? tr : tl;
-        if (farEntry < kExactFar) {
-          topNode[top] = leftFirst ? first + 1 : first;
-          topEntry[top] = farEntry;
-          ++top;
-        }
-        descended = true;
+      ref = int(leftFirst ? a.w : c.w);
+      count = int(leftFirst ? b.w : e.w);
+      done = nearEntry >= kExactFar;
+    } else if (count > 0) {  // a leaf's next triangle: a = v0, b = v1 - v0, c = v2 - v0
+      vec3 p = cross(d, c.xyz);
+      float det = dot(b.xyz, p);
+      float invDet = 1.0 / det;
+      vec3 sv = o - a.xyz;
+      float u = dot(sv, p) * invDet;
+      vec3 q = cross(sv, b.xyz);
+      float v = dot(d, q) * invDet;
+      float t = dot(c.xyz, q) * invDet;
+      if (det != 0.0 && u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > tMin && t < best.t) {
+        best.t = t;
+        best.instance = instance;
+        best.slot = int(a.w);
+        best.u = u;
+        best.v = v;
+      }
+      ref += 3;  // kTriangleTexels
+      --count;
+      done = count == 0;
+    } else {  // an object: a, b, c = its inverse model's rows, e = (root, count, object)
+      int object = int(e.z);
+      if (object == skip || (only >= 0 && object != only) || e.x < 0.0) {
+        done = true;
+      } else {
+        o = vec3(dot(a, vec4(origin, 1.0)), dot(b, vec4(origin, 1.0)), dot(c, vec4(origin, 1.0)));
+        d = vec3(dot(a.xyz, direction), dot(b.xyz, direction), dot(c.xyz, direction));
+        inv = exactInverse(d);
+        instance = object;
+        base = sp;
+        ref = int(e.x);
+        count = int(e.y);
       }
     }
-    if (descended) continue;
-    bool found = false;
-    while (top > 0) {
-      --top;
-      if (topEntry[top] <= best.t) {
-        node = topNode[top];
-        found = true;
-        break;
+    if (done) {
+      // The nearest pushed reference the best hit so far has not ruled out.
+      while (sp > 0 && stackEntry[sp - 1] > best.t) --sp;
+      if (sp == 0) break;
+      --sp;
+      ref = stackRef[sp];
+      count = stackCount[sp];
+      if (sp < base) {  // back at the top level
+        o = origin;
+        d = direction;
+        inv = worldInv;
+        instance = -1;
+        base = -1;
       }
     }
-    if (!found) break;
   }
   return best;
 }
@@ -243,9 +206,9 @@ vec3 exactNormal(ExactHit h) {
   vec3 n1 = exactFetch(u_exactNormals, 3 * h.slot + 1).xyz;
   vec3 n2 = exactFetch(u_exactNormals, 3 * h.slot + 2).xyz;
   vec3 n = (1.0 - h.u - h.v) * n0 + h.u * n1 + h.v * n2;
-  mat3 normalMatrix = mat3(exactFetch(u_exactScene, base + 3).xyz,
-                           exactFetch(u_exactScene, base + 4).xyz,
-                           exactFetch(u_exactScene, base + 5).xyz);
+  mat3 normalMatrix = mat3(exactFetch(u_exactScene, base).xyz,
+                           exactFetch(u_exactScene, base + 1).xyz,
+                           exactFetch(u_exactScene, base + 2).xyz);
   return normalize(normalMatrix * n);
 }
 
@@ -268,7 +231,7 @@ vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth)
   vec3 result = exactBackground(dir);
   for (int step = 0; step < 64; ++step) {
     float tMin = 0.0;
-    if (glass >= 0) tMin = exactFetch(u_exactScene, glass * kExactInstance + 9).x;
+    if (glass >= 0) tMin = exactFetch(u_exactScene, glass * kExactInstance + 6).x;
     ExactHit h = exactTrace(origin, dir, tMin, glass >= 0 ? -1 : leaving, glass);
     if (glass >= 0) {
       // Inside glass: leave through the far surface, or reflect inside it.
@@ -280,7 +243,7 @@ vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth)
       }
       vec3 N = exactNormal(h);
       vec3 facing = dot(dir, N) > 0.0 ? -N : N;
-      float n = exactFetch(u_exactScene, g * kExactInstance + 7).z;
+      float n = exactFetch(u_exactScene, g * kExactInstance + 4).z;
       vec3 out_ = refract(dir, facing, n);
       origin = origin + h.t * dir;
       if (dot(out_, out_) > 0.0) {
@@ -306,7 +269,7 @@ vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth)
       break;
     }
     int base = h.instance * kExactInstance;
-    vec4 look = exactFetch(u_exactScene, base + 6);
+    vec4 look = exactFetch(u_exactScene, base + 3);
     int material = int(look.w + 0.5);
     if (material != 0 && depth > kExactMaxBounces) {
       result = exactBackground(dir);
@@ -317,7 +280,7 @@ vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth)
       result = clamp(exactPhong(look.rgb, p, N), 0.0, 1.0);
       break;
     }
-    vec4 weightsOf = exactFetch(u_exactScene, base + 7);  // reflection, base, ior, fresnel
+    vec4 weightsOf = exactFetch(u_exactScene, base + 4);  // reflection, base, ior, fresnel
     vec3 toViewer = normalize(-dir);
     vec3 add = vec3(0.0);
     float weight = 1.0;
@@ -356,15 +319,15 @@ vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth)
         }
       }
     } else {  // cube-textured: from its probe centre along its object-space position
-      vec4 m0 = exactFetch(u_exactScene, base);
-      vec4 m1 = exactFetch(u_exactScene, base + 1);
-      vec4 m2 = exactFetch(u_exactScene, base + 2);
+      vec4 m0 = exactFetch(u_exactScene, base + 7);
+      vec4 m1 = exactFetch(u_exactScene, base + 8);
+      vec4 m2 = exactFetch(u_exactScene, base + 9);
       vec3 objectPosition = vec3(dot(m0, vec4(p, 1.0)), dot(m1, vec4(p, 1.0)), dot(m2, vec4(p, 1.0)));
       if (dot(objectPosition, objectPosition) == 0.0) {
         result = exactBackground(vec3(0.0, 0.0, 1.0));
         break;
       }
-      nextOrigin = exactFetch(u_exactScene, base + 8).xyz;
+      nextOrigin = exactFetch(u_exactScene, base + 5).xyz;
       nextDir = normalize(objectPosition);
     }
     adds[links] = add;

@@ -12,14 +12,10 @@
 //  - what auto picks under each budget, the table it measured, and how long the measuring took;
 //  - with --screenshot, the page with the error view on (the default mode), saved as a PNG.
 // Serves build/web/site with tools/serve.mjs on a free port.
-import { spawn } from 'node:child_process';
-import { createServer } from 'node:net';
-import { copyFileSync, existsSync, mkdirSync, readdirSync } from 'node:fs';
-import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
+import { copyFileSync, mkdirSync, readdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { freePort, launchChromium, repo, startServer } from './bench_lib.mjs';
 
-const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const site = join(repo, 'build/web/site');
 
 const COURSE = { captureAtOrigin: true, search: 'plain', depthBits: 16, glassSurfaces: 1 };
@@ -42,26 +38,6 @@ function parseArgs(argv) {
     else throw new Error(`unknown argument ${a}`);
   }
   return o;
-}
-
-function freePort() {
-  return new Promise((res, rej) => {
-    const s = createServer();
-    s.unref();
-    s.on('error', rej);
-    s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => res(port)); });
-  });
-}
-
-async function startServer(port) {
-  const child = spawn(process.execPath, [join(repo, 'tools/serve.mjs'), site, String(port)], { stdio: ['ignore', 'ignore', 'inherit'] });
-  const url = `http://127.0.0.1:${port}/`;
-  for (let i = 0; i < 100; ++i) {
-    try { if ((await fetch(url)).ok) return { child, url }; } catch { /* not yet */ }
-    await new Promise((r) => setTimeout(r, 100));
-  }
-  child.kill();
-  throw new Error('server did not answer');
 }
 
 const median = (v) => { const s = [...v].sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
@@ -147,12 +123,8 @@ async function autoPicks(page, budgets) {
 async function main() {
   const o = parseArgs(process.argv.slice(2));
   const port = await freePort();
-  const { child, url } = await startServer(port);
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
-    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           '--no-first-run', '--disable-default-apps'],
-  });
+  const { child, url } = await startServer(port, site);
+  const browser = await launchChromium();
   try {
     const scenes = [{ label: 'default scene', query: '?paused&t=2' }];
     if (o.heavy) {

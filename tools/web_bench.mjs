@@ -34,14 +34,12 @@
 // run alternately with this one (A B, then B A, ...), and the two summarised side by side.
 //
 // Either way: serves build/web/site with tools/serve.mjs on a free port, 800x800 viewport.
-import { spawn, spawnSync } from 'node:child_process';
-import { createServer } from 'node:net';
+import { spawnSync } from 'node:child_process';
 import { copyFileSync, existsSync, mkdirSync, readFileSync, readdirSync } from 'node:fs';
-import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { join, resolve } from 'node:path';
 import { chromium } from '@playwright/test';
+import { chromiumOptions, freePort, launchChromium, repo, startServer, summary } from './bench_lib.mjs';
 
-const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const site = join(repo, 'build/web/site');
 
 function parseArgs(argv) {
@@ -92,45 +90,6 @@ function parseArgs(argv) {
   return options;
 }
 
-function freePort() {
-  return new Promise((resolvePort, reject) => {
-    const server = createServer();
-    server.unref();
-    server.on('error', reject);
-    server.listen(0, '127.0.0.1', () => {
-      const { port } = server.address();
-      server.close(() => resolvePort(port));
-    });
-  });
-}
-
-async function startServer(port, root = site) {
-  const child = spawn(process.execPath, [join(repo, 'tools/serve.mjs'), root, String(port)], {
-    stdio: ['ignore', 'ignore', 'inherit'],
-  });
-  const url = `http://127.0.0.1:${port}/`;
-  for (let attempt = 0; attempt < 100; ++attempt) {
-    if (child.exitCode !== null) throw new Error(`serve.mjs exited with ${child.exitCode}`);
-    try {
-      if ((await fetch(url)).ok) return { child, url };
-    } catch { /* not listening yet */ }
-    await new Promise((r) => setTimeout(r, 100));
-  }
-  child.kill();
-  throw new Error(`server did not answer at ${url}`);
-}
-
-function percentile(values, p) {
-  const sorted = [...values].sort((a, b) => a - b);
-  const index = (sorted.length - 1) * p;
-  const lo = Math.floor(index), hi = Math.ceil(index);
-  return sorted[lo] + (sorted[hi] - sorted[lo]) * (index - lo);
-}
-
-function summary(values) {
-  return { p10: percentile(values, 0.1), median: percentile(values, 0.5), p90: percentile(values, 0.9) };
-}
-
 function distinct(values) {
   const set = [...new Set(values)].sort((a, b) => a - b);
   return set.length === 1 ? String(set[0]) : `${set[0]}..${set[set.length - 1]} (varies)`;
@@ -143,15 +102,10 @@ async function main() {
     throw new Error(`${site} has no index.html: build the web preset first (cmake --build --preset web)`);
   }
   const port = await freePort();
-  const { child, url } = await startServer(port);
+  const { child, url } = await startServer(port, site);
   let browser;
   try {
-    // Same launch options as playwright.config.mjs.
-    browser = await chromium.launch({
-      executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
-      args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
-             '--disable-sync', '--no-first-run', '--disable-default-apps'],
-    });
+    browser = await launchChromium();
     const page = await browser.newPage({ viewport: { width: options.width, height: options.height } });
     const problems = [];
     page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
@@ -321,11 +275,7 @@ const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 // One page in a fresh browser: load to first frame, frames, memory.
 async function measurePage(url, options) {
   // A server, so the browser's process id is known (its renderers are among its descendants).
-  const server = await chromium.launchServer({
-    executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
-    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
-           '--disable-sync', '--no-first-run', '--disable-default-apps', '--js-flags=--expose-gc'],
-  });
+  const server = await chromium.launchServer(chromiumOptions(['--js-flags=--expose-gc']));
   const browser = await chromium.connect(server.wsEndpoint());
   try {
     const page = await browser.newPage({ viewport: { width: options.width, height: options.height } });

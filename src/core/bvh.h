@@ -91,33 +91,67 @@ RayHit intersectScene(const SceneBvh& scene, const glm::vec3& origin, const glm:
                       float tMin = 0.0f, float tMax = std::numeric_limits<float>::infinity(),
                       int skip = -1, int only = -1);
 
-// ---- The textures the shader reads (RGBA32F, kBvhTextureWidth texels a row)
-// ----------------------
-inline constexpr int kBvhTextureWidth = 1024;
+// ---- The textures the shader reads ---------------------------------------------------------
+// The shader walks both levels in one loop, and each turn of it reads the same four texels
+// (kStepTexels) from one texture, the atlas, whatever it visits there: an interior node, a
+// triangle or a placed object. A software rasteriser (SwiftShader, llvmpipe) runs a fragment
+// shader on several pixels at once and executes every branch of a loop's body each turn, for
+// every pixel (a branch no pixel takes included), so a turn costs its whole body: nested loops
+// and fetches from several textures per turn would multiply.
+//
+// RGBA32F texels, kBvhTextureWidth a row; indices and counts are stored as floats (exact below
+// 2^24 texels).
+inline constexpr int kBvhTextureWidth = 1024;  // a power of two: the shader splits with a shift
+static_assert((kBvhTextureWidth & (kBvhTextureWidth - 1)) == 0,
+              "the shader splits a texel index with a shift and a mask");
+inline constexpr int kStepTexels = 4;  // what one turn of the shader's loop reads
+inline constexpr int kNodeTexels = 4;  // an interior node: both children, (min, ref) (max, count)
+inline constexpr int kTriangleTexels = 3;  // v0, v1 - v0, v2 - v0; v0.w = the triangle's slot
+inline constexpr int kSlotTexels = 4;      // a placed object: its inverse model's rows, its root
 
-// Every mesh's tree in three float textures: nodes (2 texels each: min, first; max, count, with
-// `first` made absolute), triangle positions and normals (3 texels each). Built when the set of
-// meshes changes.
+// Where a subtree starts in the atlas, as the shader follows it: an interior node (count 0) at
+// texel `texel`; a leaf (count > 0) of `count` triangles from texel `texel`; or, in the top level,
+// a placed object's slot (count kInstanceRef).
+struct PackedRef {
+  int texel = 0;
+  int count = 0;
+  bool operator==(const PackedRef&) const = default;
+};
+inline constexpr int kInstanceRef = -1;
+
+// Every mesh's tree, built when the set of meshes changes: its interior nodes, then its
+// triangles, in `texels`; the vertex normals (3 texels a triangle, by slot) in `normals`.
 struct BvhAtlas {
-  std::vector<float> nodes, positions, normals;  // RGBA texels
-  std::map<std::string, uint32_t> roots;         // each mesh's root node
+  struct Root {
+    PackedRef ref;
+    Bounds box;
+  };
+  std::vector<float> texels;   // RGBA
+  std::vector<float> normals;  // RGBA
+  std::map<std::string, Root> roots;
+  int triangles = 0;  // slots used in `normals`
   void add(const std::string& name, const MeshBvh& mesh);
 };
 
-// Per frame: every object's texels (kInstanceTexels each, by object index), then the top level's
-// nodes (2 texels each, from texel topNodes on; `first` relative to the root), then the top
-// level's items (1 texel each, x = the object index, from texel topOrder on).
+// Per frame, for the shader:
+//  - `traversal`: the texels the walk reads, to be placed in the atlas from texel `firstTexel`
+//    on: a header (the top level's box and root, kStepTexels), each object's slot (kSlotTexels;
+//    the inverse model's rows, then (root texel, root count, object index)), then the top
+//    level's interior nodes;
+//  - `shading`: kInstanceTexels per object, for what the walk found (normal matrix columns,
+//    colour and material, mix weights, probe centre, self epsilon, inverse model's rows).
 inline constexpr int kInstanceTexels = 10;
 struct PackedScene {
-  std::vector<float> texels;
-  int topNodes = 0;  // texel index of the top level's root
-  int topOrder = 0;  // texel index of its first item
+  std::vector<float> traversal;
+  std::vector<float> shading;
+  int header = 0;  // texel of the header (firstTexel)
   int instances = 0;
   bool empty = true;  // no instance has a mesh
 };
-// `roots`: each object's mesh root in the atlas (-1: not traced); `probeCentres`: where each
-// object's probe captures from (the cube-textured material traces from there).
-PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector<int>& roots,
-                      const std::vector<glm::vec3>& probeCentres);
+// `roots`: each object's mesh root in the atlas (count 0 and texel -1: not traced);
+// `probeCentres`: where each object's probe captures from (the cube-textured material traces
+// from there).
+PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector<PackedRef>& roots,
+                      const std::vector<glm::vec3>& probeCentres, int firstTexel);
 
 }  // namespace reflect

@@ -8,11 +8,14 @@
 namespace reflect {
 namespace {
 
-// RGBA32F texels, kBvhTextureWidth a row (at least one row, so every sampler has a texture).
-int uploadTexels(GLuint texture, const std::vector<float>& texels) {
-  const size_t count = texels.size() / 4;
-  const int rows = static_cast<int>(
-      std::max<size_t>(1, (count + kBvhTextureWidth - 1) / static_cast<size_t>(kBvhTextureWidth)));
+int rowsFor(size_t texels) {
+  return static_cast<int>((texels + kBvhTextureWidth - 1) / static_cast<size_t>(kBvhTextureWidth));
+}
+
+// RGBA32F texels, kBvhTextureWidth a row, `rows` rows (at least one, so every sampler has a
+// texture); `texels` fill the first rows, the rest are zero.
+void allocateTexels(GLuint texture, const std::vector<float>& texels, int rows) {
+  rows = std::max({rows, rowsFor(texels.size() / 4), 1});
   std::vector<float> padded(static_cast<size_t>(rows) * kBvhTextureWidth * 4, 0.0f);
   std::copy(texels.begin(), texels.end(), padded.begin());
   glBindTexture(GL_TEXTURE_2D, texture);
@@ -21,7 +24,17 @@ int uploadTexels(GLuint texture, const std::vector<float>& texels) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glBindTexture(GL_TEXTURE_2D, 0);
-  return rows;
+}
+
+// Rewrites whole rows from `firstRow` on with `texels` (zero past their end).
+void replaceRows(GLuint texture, int firstRow, const std::vector<float>& texels) {
+  const int rows = std::max(rowsFor(texels.size() / 4), 1);
+  std::vector<float> padded(static_cast<size_t>(rows) * kBvhTextureWidth * 4, 0.0f);
+  std::copy(texels.begin(), texels.end(), padded.begin());
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, firstRow, kBvhTextureWidth, rows, GL_RGBA, GL_FLOAT,
+                  padded.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 void bindUnit(GLint unit, GLenum target, GLuint texture) {
@@ -33,12 +46,11 @@ void bindUnit(GLint unit, GLenum target, GLuint texture) {
 
 Result<ExactTracer> ExactTracer::create() {
   ExactTracer t;
-  t.nodes_ = TextureHandle(genTexture());
-  t.positions_ = TextureHandle(genTexture());
+  t.atlas_ = TextureHandle(genTexture());
   t.normals_ = TextureHandle(genTexture());
   t.scene_ = TextureHandle(genTexture());
-  uploadTexels(t.scene_.id(), {});
-  t.uploadAtlas();
+  allocateTexels(t.scene_.id(), {}, 1);
+  t.uploadAtlas(1);
   if (!checkGlError("create exact tracer")) {
     return Result<ExactTracer>::failure("GL error while creating the exact mode's textures");
   }
@@ -59,23 +71,25 @@ std::string ExactTracer::setSkybox(const CubeFaces* faces) {
   return {};
 }
 
-void ExactTracer::uploadAtlas() {
+void ExactTracer::uploadAtlas(int frameRows) {
   BvhAtlas atlas;
   for (const auto& [name, bvh] : meshes_) {
     if (bvh) atlas.add(name, *bvh);
   }
-  uploadTexels(nodes_.id(), atlas.nodes);
-  uploadTexels(positions_.id(), atlas.positions);
-  uploadTexels(normals_.id(), atlas.normals);
+  // The meshes' rows, then the rows each frame rewrites (the top level and the placements).
+  meshRows_ = rowsFor(atlas.texels.size() / 4);
+  frameRows_ = std::max(frameRows, 1);
+  allocateTexels(atlas_.id(), atlas.texels, meshRows_ + frameRows_);
+  allocateTexels(normals_.id(), atlas.normals, 1);
   roots_ = std::move(atlas.roots);
   atlasDirty_ = false;
 }
 
 void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& plan,
                           const glm::vec3& eye) {
-  if (atlasDirty_) uploadAtlas();
+  if (atlasDirty_) uploadAtlas(frameRows_);
   std::vector<BvhInstance> instances(scene.objects.size());
-  std::vector<int> roots(scene.objects.size(), -1);
+  std::vector<PackedRef> roots(scene.objects.size(), PackedRef{-1, 0});
   std::vector<glm::vec3> centres(scene.objects.size(), glm::vec3(0.0f));
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
@@ -87,15 +101,17 @@ void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& p
     if (mesh != meshes_.end() && mesh->second && !mesh->second->tree.nodes.empty() &&
         root != roots_.end()) {
       instance.mesh = mesh->second;
-      roots[i] = static_cast<int>(root->second);
-      const BvhNode& box = mesh->second->tree.nodes[0];
-      centres[i] = transformBounds({box.min, box.max}, instance.model).centre();
+      roots[i] = root->second.ref;
+      centres[i] = transformBounds(root->second.box, instance.model).centre();
     }
     if (const ProbePlan* probe = plan.probeOf(static_cast<int>(i))) centres[i] = probe->centre;
   }
   const SceneBvh bvh = buildSceneBvh(std::move(instances));
-  packed_ = packScene(scene, bvh, roots, centres);
-  sceneRows_ = uploadTexels(scene_.id(), packed_.texels);
+  packed_ = packScene(scene, bvh, roots, centres, meshRows_ * kBvhTextureWidth);
+  const int needed = rowsFor(packed_.traversal.size() / 4);
+  if (needed > frameRows_) uploadAtlas(2 * needed);  // the mesh rows stay where they are
+  replaceRows(atlas_.id(), meshRows_, packed_.traversal);
+  allocateTexels(scene_.id(), packed_.shading, 1);
   clear_ = scene.clearColour;
   light_ = scene.light.position;
   phong_ = {scene.light.ambient, scene.light.diffuse, scene.light.specular, scene.light.shininess};
@@ -103,22 +119,19 @@ void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& p
 }
 
 void ExactTracer::bind(GLuint program) const {
-  bindUnit(kExactNodesUnit, GL_TEXTURE_2D, nodes_.id());
-  bindUnit(kExactPositionsUnit, GL_TEXTURE_2D, positions_.id());
+  bindUnit(kExactAtlasUnit, GL_TEXTURE_2D, atlas_.id());
   bindUnit(kExactNormalsUnit, GL_TEXTURE_2D, normals_.id());
   bindUnit(kExactSceneUnit, GL_TEXTURE_2D, scene_.id());
   bindUnit(kExactSkyUnit, GL_TEXTURE_CUBE_MAP, sky_ ? sky_->texture() : 0);
   glActiveTexture(GL_TEXTURE0);
   const auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
-  glUniform1i(at("u_exactNodes"), kExactNodesUnit);
-  glUniform1i(at("u_exactPositions"), kExactPositionsUnit);
+  glUniform1i(at("u_exactAtlas"), kExactAtlasUnit);
   glUniform1i(at("u_exactNormals"), kExactNormalsUnit);
   glUniform1i(at("u_exactScene"), kExactSceneUnit);
   glUniform1i(at("u_exactSky"), kExactSkyUnit);
   glUniform1i(at("u_exactHasSky"), sky_ ? 1 : 0);
   glUniform3f(at("u_exactClear"), clear_.r, clear_.g, clear_.b);
-  glUniform1i(at("u_exactTopNodes"), packed_.topNodes);
-  glUniform1i(at("u_exactTopOrder"), packed_.topOrder);
+  glUniform1i(at("u_exactHeader"), packed_.header);
   glUniform1i(at("u_exactEmpty"), packed_.empty ? 1 : 0);
   glUniform3f(at("u_exactLight"), light_.x, light_.y, light_.z);
   glUniform4f(at("u_exactPhong"), phong_.x, phong_.y, phong_.z, phong_.w);
@@ -131,8 +144,7 @@ void ExactTracer::bindObject(GLuint program, int object) const {
 }
 
 void ExactTracer::abandon() {
-  nodes_.abandon();
-  positions_.abandon();
+  atlas_.abandon();
   normals_.abandon();
   scene_.abandon();
   if (sky_) sky_->abandon();

@@ -21,11 +21,10 @@
 namespace reflect {
 
 // Texture units of the exact mode's samplers (after capture_state.h's).
-inline constexpr GLint kExactNodesUnit = kPeelBacksUnit + 1;
-inline constexpr GLint kExactPositionsUnit = kExactNodesUnit + 1;
-inline constexpr GLint kExactNormalsUnit = kExactNodesUnit + 2;
-inline constexpr GLint kExactSceneUnit = kExactNodesUnit + 3;
-inline constexpr GLint kExactSkyUnit = kExactNodesUnit + 4;
+inline constexpr GLint kExactAtlasUnit = kPeelBacksUnit + 1;
+inline constexpr GLint kExactNormalsUnit = kExactAtlasUnit + 1;
+inline constexpr GLint kExactSceneUnit = kExactAtlasUnit + 2;
+inline constexpr GLint kExactSkyUnit = kExactAtlasUnit + 3;
 // WebGL2 and GL ES 3.0 promise 16 units to a fragment shader.
 static_assert(kExactSkyUnit < 16,
               "the exact mode's samplers must fit the 16 units ES 3.0 promises");
@@ -52,15 +51,18 @@ class ExactTracer {
 
  private:
   ExactTracer() = default;
-  void uploadAtlas();
+  // Every mesh's tree, then `frameRows` rows for what prepare() writes each frame.
+  void uploadAtlas(int frameRows);
 
-  TextureHandle nodes_, positions_, normals_, scene_;
+  TextureHandle atlas_, normals_, scene_;
   std::unique_ptr<SkyboxPass> sky_;
   std::map<std::string, std::shared_ptr<const MeshBvh>> meshes_;
-  std::map<std::string, uint32_t> roots_;
+  std::map<std::string, BvhAtlas::Root> roots_;
   bool atlasDirty_ = true;
+  int meshRows_ = 0;   // the atlas's rows of mesh trees
+  int frameRows_ = 1;  // the rows after them, rewritten each frame
+
   PackedScene packed_;
-  int sceneRows_ = 0;
   glm::vec3 clear_{0.0f}, light_{0.0f}, eye_{0.0f};
   glm::vec4 phong_{0.0f};
   bool mark_ = false;

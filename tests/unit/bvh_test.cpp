@@ -1,8 +1,11 @@
 // core/bvh.h: the binned SAH build's structure, and the traversal against testing every triangle.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/bvh.h"
 #include "core/obj_loader.h"
@@ -135,19 +138,196 @@ TEST(Bvh, SkipAndOnly) {
   EXPECT_EQ(intersectScene(scene, o, -d).instance, -1);
 }
 
-TEST(Bvh, AtlasMakesIndicesAbsolute) {
-  const MeshData a = randomTriangles(50, 4), b = randomTriangles(70, 5);
-  const MeshBvh ta = buildMeshBvh(a), tb = buildMeshBvh(b);
+// The shader's walk (shaders/exact_trace.glsl's exactTrace), step for step, over the packed
+// texels: one loop over both levels, four texels read a turn.
+struct PackedWalk {
+  const std::vector<float>& texels;  // the atlas with the frame's texels in place
+  glm::vec4 at(int texel) const {
+    const size_t i = static_cast<size_t>(texel) * 4;
+    if (i + 4 > texels.size()) return glm::vec4(0.0f);  // the shader reads zeros past the end
+    return {texels[i], texels[i + 1], texels[i + 2], texels[i + 3]};
+  }
+  static float entry(const glm::vec4& lo, const glm::vec4& hi, const glm::vec3& o,
+                     const glm::vec3& inv, float tMin, float tMax) {
+    const glm::vec3 t0 = (glm::vec3(lo) - o) * inv, t1 = (glm::vec3(hi) - o) * inv;
+    const glm::vec3 a = glm::min(t0, t1), b = glm::max(t0, t1);
+    const float enter = std::max(std::max(a.x, a.y), std::max(a.z, tMin));
+    const float leave = std::min(std::min(b.x, b.y), std::min(b.z, tMax));
+    return enter <= leave ? enter : INFINITY;
+  }
+  static glm::vec3 inverse(const glm::vec3& d) {
+    glm::vec3 r;
+    for (int i = 0; i < 3; ++i)
+      r[i] = 1.0f / (std::abs(d[i]) < 1e-20f ? std::copysign(1e-20f, d[i]) : d[i]);
+    return r;
+  }
+  RayHit trace(int header, const glm::vec3& origin, const glm::vec3& direction, int skip = -1,
+               int only = -1, int* steps = nullptr) const {
+    RayHit best;
+    const glm::vec3 worldInv = inverse(direction);
+    const glm::vec4 h0 = at(header), h1 = at(header + 1);
+    if (entry(h0, h1, origin, worldInv, 0.0f, best.t) == INFINITY) return best;
+    int ref = static_cast<int>(h0.w), count = static_cast<int>(h1.w);
+    glm::vec3 o = origin, d = direction, inv = worldInv;
+    int instance = -1, base = -1;
+    std::vector<std::array<float, 3>> stack;  // ref, count, entry
+    for (int step = 0; step < 4096; ++step) {
+      if (steps) ++*steps;
+      const glm::vec4 a = at(ref), b = at(ref + 1), c = at(ref + 2), e = at(ref + 3);
+      bool done = false;
+      if (count == 0) {
+        const float tl = entry(a, b, o, inv, 0.0f, best.t), tr = entry(c, e, o, inv, 0.0f, best.t);
+        const bool leftFirst = tl <= tr;
+        if (std::max(tl, tr) != INFINITY) {
+          stack.push_back(leftFirst ? std::array<float, 3>{c.w, e.w, tr}
+                                    : std::array<float, 3>{a.w, b.w, tl});
+        }
+        ref = static_cast<int>(leftFirst ? a.w : c.w);
+        count = static_cast<int>(leftFirst ? b.w : e.w);
+        done = std::min(tl, tr) == INFINITY;
+      } else if (count > 0) {
+        float t, u, v;
+        const glm::vec3 v0(a);
+        if (intersectTriangle(o, d, v0, v0 + glm::vec3(b), v0 + glm::vec3(c), 0.0f, best.t, &t, &u,
+                              &v)) {
+          best.t = t;
+          best.instance = instance;
+          best.slot = static_cast<int>(a.w);
+        }
+        ref += kTriangleTexels;
+        done = --count == 0;
+      } else {
+        const int object = static_cast<int>(e.z);
+        if (object == skip || (only >= 0 && object != only) || e.x < 0.0f) {
+          done = true;
+        } else {
+          const glm::vec4 p(origin, 1.0f);
+          o = {glm::dot(a, p), glm::dot(b, p), glm::dot(c, p)};
+          d = {glm::dot(glm::vec3(a), direction), glm::dot(glm::vec3(b), direction),
+               glm::dot(glm::vec3(c), direction)};
+          inv = inverse(d);
+          instance = object;
+          base = static_cast<int>(stack.size());
+          ref = static_cast<int>(e.x);
+          count = static_cast<int>(e.y);
+        }
+      }
+      if (!done) continue;
+      while (!stack.empty() && stack.back()[2] > best.t) stack.pop_back();
+      if (stack.empty()) break;
+      ref = static_cast<int>(stack.back()[0]);
+      count = static_cast<int>(stack.back()[1]);
+      stack.pop_back();
+      if (static_cast<int>(stack.size()) < base) {
+        o = origin;
+        d = direction;
+        inv = worldInv;
+        instance = -1;
+        base = -1;
+      }
+    }
+    return best;
+  }
+};
+
+TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
+  const MeshData a = randomTriangles(300, 4), b = randomTriangles(3, 5);
+  const auto ta = std::make_shared<const MeshBvh>(buildMeshBvh(a));
+  const auto tb = std::make_shared<const MeshBvh>(buildMeshBvh(b));
   BvhAtlas atlas;
-  atlas.add("a", ta);
-  atlas.add("b", tb);
-  EXPECT_EQ(atlas.roots["a"], 0u);
-  EXPECT_EQ(atlas.roots["b"], ta.tree.nodes.size());
-  EXPECT_EQ(atlas.positions.size(), (50u + 70u) * 3u * 4u);
-  // b's root: an interior node whose children follow in b's part of the atlas.
-  const size_t root = atlas.roots["b"] * 8;
-  EXPECT_EQ(atlas.nodes[root + 7], 0.0f);
-  EXPECT_EQ(atlas.nodes[root + 3], static_cast<float>(ta.tree.nodes.size() + 1));
+  atlas.add("a", *ta);
+  atlas.add("b", *tb);
+  EXPECT_EQ(atlas.triangles, 303);
+  EXPECT_EQ(atlas.normals.size(), 303u * 3u * 4u);
+  EXPECT_EQ(atlas.roots["a"].ref.count, 0);  // an interior node
+  EXPECT_EQ(atlas.roots["b"].ref.count, 3);  // three triangles: the root is a leaf
+
+  // Five objects, two of them on mesh b, one untraced (no mesh), placed and turned.
+  Scene scene;
+  std::vector<BvhInstance> instances(5);
+  std::vector<PackedRef> roots(5, PackedRef{-1, 0});
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> at(-3.0f, 3.0f);
+  for (int i = 0; i < 5; ++i) {
+    scene.objects.push_back({});
+    if (i == 3) continue;
+    const bool onB = i == 1 || i == 4;
+    instances[static_cast<size_t>(i)].mesh = onB ? tb : ta;
+    roots[static_cast<size_t>(i)] = atlas.roots[onB ? "b" : "a"].ref;
+    glm::mat4 m =
+        glm::rotate(glm::mat4(1.0f), at(rng), glm::normalize(glm::vec3(at(rng), at(rng), 1)));
+    m[3] = glm::vec4(at(rng), at(rng), at(rng), 1.0f);
+    instances[static_cast<size_t>(i)].model =
+        glm::scale(m, glm::vec3(0.5f + 0.2f * static_cast<float>(i)));
+    instances[static_cast<size_t>(i)].inverse =
+        glm::inverse(instances[static_cast<size_t>(i)].model);
+  }
+  const SceneBvh bvh = buildSceneBvh(instances);
+  const int first = static_cast<int>(atlas.texels.size() / 4) + 7;  // any texel past the meshes
+  const PackedScene packed = packScene(scene, bvh, roots, {}, first);
+  EXPECT_EQ(packed.header, first);
+  EXPECT_EQ(packed.shading.size(), 5u * kInstanceTexels * 4u);
+  std::vector<float> texels = atlas.texels;
+  texels.resize(static_cast<size_t>(first) * 4, 0.0f);
+  texels.insert(texels.end(), packed.traversal.begin(), packed.traversal.end());
+  const PackedWalk walk{texels};
+
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  int hits = 0;
+  for (int r = 0; r < 3000; ++r) {
+    const glm::vec3 o(at(rng) * 2.0f, at(rng) * 2.0f, at(rng) * 2.0f);
+    // Aim at a vertex of a placed object, so most rays meet something.
+    const size_t aim = static_cast<size_t>(r) % 5 == 3 ? 0 : static_cast<size_t>(r) % 5;
+    const MeshData& aimed = aim == 1 || aim == 4 ? b : a;
+    const glm::vec3 vertex =
+        aimed.vertices[static_cast<size_t>(r * 7) % aimed.vertices.size()].position;
+    const glm::vec3 target(instances[aim].model * glm::vec4(vertex, 1.0f));
+    const glm::vec3 d = glm::normalize(target - o);
+    const int skip = r % 7 == 0 ? 2 : -1;
+    const int only = r % 11 == 0 ? 4 : -1;
+    const RayHit want = intersectScene(bvh, o, d, 0.0f, INFINITY, skip, only);
+    const RayHit got = walk.trace(packed.header, o, d, skip, only);
+    ASSERT_EQ(got.instance, want.instance) << "ray " << r;
+    if (want.instance < 0) continue;
+    ++hits;
+    EXPECT_EQ(got.t, want.t) << "ray " << r;
+    // The slot names the triangle in the normals' order: mesh a's, then b's.
+    const int offset = want.instance == 1 || want.instance == 4 ? 300 : 0;  // b after a
+    EXPECT_EQ(got.slot, want.slot + offset) << "ray " << r;
+  }
+  EXPECT_GT(hits, 600);  // aimed at vertices (on edges, some slip past): 782 meet one
+}
+
+TEST(Bvh, ALeafOfSeveralObjectsIsSplitIntoSlots) {
+  // Identical boxes past the depth limit would leave a top-level leaf of several objects; the
+  // packer gives each its own slot. Forty objects in one place, a ray through them all.
+  const auto mesh = std::make_shared<const MeshBvh>(buildMeshBvh(randomTriangles(20, 8)));
+  BvhAtlas atlas;
+  atlas.add("m", *mesh);
+  Scene scene;
+  std::vector<BvhInstance> instances(40);
+  for (BvhInstance& i : instances) {
+    scene.objects.push_back({});
+    i.mesh = mesh;
+  }
+  SceneBvh bvh = buildSceneBvh(instances);
+  // Force the worst case: one leaf holding every object.
+  bvh.top.nodes.resize(1);
+  bvh.top.nodes[0].first = 0;
+  bvh.top.nodes[0].count = 40;
+  const std::vector<PackedRef> roots(40, atlas.roots["m"].ref);
+  const int first = static_cast<int>(atlas.texels.size() / 4);
+  const PackedScene packed = packScene(scene, bvh, roots, {}, first);
+  std::vector<float> texels = atlas.texels;
+  texels.insert(texels.end(), packed.traversal.begin(), packed.traversal.end());
+  const PackedWalk walk{texels};
+  for (int r = 0; r < 200; ++r) {
+    const glm::vec3 o(0.013f * static_cast<float>(r) - 1.3f, 0.2f, 3.0f);
+    const RayHit want = intersectScene(bvh, o, glm::vec3(0, 0, -1));
+    const RayHit got = walk.trace(packed.header, o, glm::vec3(0, 0, -1));
+    EXPECT_EQ(got.t, want.t) << "ray " << r;
+    EXPECT_EQ(got.instance >= 0, want.instance >= 0) << "ray " << r;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,85 @@
+// What both peer pages do around their rendition: the renderer on #canvas, the models from
+// ?assets=PREFIX (default: the site's models/ beside this folder), the animation clock and
+// window.peer, the interface tools/peer_bench.mjs drives (as the project's window.demo):
+//   ready                a promise: models loaded and the first frame drawn
+//   frame(dt)            advance by dt seconds, render, wait for the GPU: { ms }
+//   setTime(t)           the animation time of the next frame
+//   readPixels()         render and read the canvas: { width, height, data } (RGBA, bottom row first)
+// With ?bench in the URL nothing else draws; otherwise the page animates itself with rAF.
+import { Color, LinearSRGBColorSpace, WebGLRenderer } from 'three';
+import { buildWorld, loadModels } from './scene.js';
+import { SCENE } from './scene_facts.js';
+
+// `mirrorMaterial`: the rendition's material for the sphere (made before the models are in; the
+// rendition fills its uniforms). `makeRendition({ renderer, world })`, called once the world is
+// built, returns { draw() }, which renders the frame world.pose() has set up.
+export function startPeer({ mirrorMaterial, makeRendition }) {
+  const params = new URLSearchParams(location.search);
+  const prefix = new URL(params.get('assets') || '../models/', location.href).href;
+  const canvas = document.getElementById('canvas');
+  // As the project's context: no antialiasing, no alpha, a depth buffer.
+  const renderer = new WebGLRenderer({ canvas, antialias: false, alpha: false, depth: true, stencil: false });
+  // The shaders write final values, as the project's do; linear output also keeps three from
+  // converting the clear colour to sRGB.
+  renderer.outputColorSpace = LinearSRGBColorSpace;
+  renderer.setClearColor(new Color(...SCENE.background), 1);
+  const gl = renderer.getContext();
+
+  let time = 0, world = null, rendition = null;
+  const render = () => {
+    world.pose(time);
+    rendition.draw();
+  };
+  const resize = () => {
+    renderer.setPixelRatio(window.devicePixelRatio);
+    renderer.setSize(canvas.clientWidth, canvas.clientHeight, false);
+    world.camera.aspect = canvas.clientWidth / canvas.clientHeight;
+    world.camera.updateProjectionMatrix();
+  };
+  const pixel = new Uint8Array(4);
+  // A read-back waits for the GPU to finish the frame, so a frame's time includes its GPU work.
+  const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+
+  const ready = (async () => {
+    world = buildWorld(await loadModels(prefix), mirrorMaterial);
+    rendition = makeRendition({ renderer, world });
+    resize();
+    render();
+    sync();
+  })();
+
+  window.peer = {
+    ready,
+    frame(dt = 0) {
+      const start = performance.now();
+      time += dt;
+      render();
+      sync();
+      return { ms: performance.now() - start };
+    },
+    setTime(t) { time = t; },
+    readPixels() {
+      render();  // the drawing buffer is not preserved after the page is composited
+      const { drawingBufferWidth: width, drawingBufferHeight: height } = gl;
+      const data = new Uint8Array(width * height * 4);
+      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, data);
+      return { width, height, data };
+    },
+  };
+
+  ready.then(() => {
+    if (params.has('bench')) return;
+    window.addEventListener('resize', resize);
+    let last = performance.now();
+    const loop = (now) => {
+      time += (now - last) / 1000;
+      last = now;
+      render();
+      requestAnimationFrame(loop);
+    };
+    requestAnimationFrame(loop);
+  }, (error) => {
+    document.getElementById('message').textContent = `could not start: ${error.message}`;
+    console.error(error);
+  });
+}
