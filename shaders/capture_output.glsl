@@ -1,4 +1,5 @@
-// What every fragment shader writes. In the main pass: the colour alone. In a capture, also:
+// What every fragment shader writes. In the main pass (CAPTURE_OUTPUT 0, a program of its own):
+// the colour alone. In a capture (CAPTURE_OUTPUT 1), also:
 //  - alpha: the Euclidean distance d from the probe centre as d / (d + 1), in near-plane units
 //    (the linear search reads it);
 //  - location 1: depth codes (depth_encoding.glsl) as the first level of the chains the
@@ -14,6 +15,12 @@
 //     depth range in the second layer.
 #include "depth_encoding.glsl"
 
+layout(location = 0) out vec4 fragColour;
+#if CAPTURE_OUTPUT == 0
+void writeOutputs(vec3 colour, vec3 worldPosition, vec3 normal, bool infinite) {
+  fragColour = vec4(colour, 1.0);
+}
+#else
 uniform int u_captureLayer;        // 0: main pass; 1, 2, 3: a capture's passes (above)
 uniform vec3 u_captureCentre;      // the probe centre being captured
 uniform vec3 u_captureAxis;        // the captured face's look direction
@@ -24,7 +31,6 @@ uniform int u_captureGuessDepth;   // 1: the far end takes kThickness (depth_enc
 uniform highp usampler2DArray u_peelDepths;  // the first layer's codes (passes 2 and 3)
 uniform highp usampler2DArray u_peelBacks;   // the backs pass 3 found (pass 2 peels behind)
 
-layout(location = 0) out vec4 fragColour;
 layout(location = 1) out uvec2 fragDepth;
 
 // Codes at most this far behind the first layer's count as the same surface when peeling (two
@@ -67,3 +73,4 @@ void writeOutputs(vec3 colour, vec3 worldPosition, vec3 normal, bool infinite) {
   fragColour = vec4(colour, infinite ? 1.0 : d / (d + 1.0));
   fragDepth = u_captureLayer == 3 ? uvec2(farCode) : uvec2(nearCode, farCode);
 }
+#endif

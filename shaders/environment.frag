@@ -5,12 +5,13 @@
 // refraction (glass) instead.
 //
 // Where a ray meets the live probe's surroundings is found by the search SEARCH picks when the
-// program is built (a runtime switch would not do: software rasterisers run both sides of a
-// branch): 0 the course's plain lookup along the ray's direction, 1 the linear search of
-// linear_search.glsl, 2 the hierarchical search of depth_search.glsl, 3 no lookup at all: the
-// exact mode of exact_trace.glsl (one hook at the top of main). u_search turns it off per
-// draw (a skybox environment, or a probe whose surroundings are all far enough that the plain
-// lookup is within half a texel).
+// program is built (src/gfx/program_key.h; a runtime switch would not do: software rasterisers
+// run both sides of a branch): SEARCH_PLAIN the course's lookup along the ray's direction,
+// SEARCH_LINEAR the linear search of linear_search.glsl, SEARCH_HIERARCHICAL the walk of
+// depth_search.glsl, SEARCH_EXACT no lookup at all: the ray traced by exact_trace.glsl (one hook
+// at the top of main). A reflector that needs no search (a skybox environment, or a probe whose
+// surroundings are all far enough that the plain lookup is within half a texel) is drawn with
+// the SEARCH_PLAIN program.
 in vec3 v_worldPosition;
 in vec3 v_worldNormal;
 
@@ -18,7 +19,6 @@ uniform vec3 u_colour;
 uniform vec3 u_viewPosition;
 uniform float u_reflectionWeight;
 uniform float u_baseWeight;
-uniform int u_refracts;       // 0 mirror, 1 glass
 uniform float u_eta;          // n1 / n2 for refract(): air to the material
 uniform float u_fresnelF0;    // ((n - 1) / (n + 1))^2
 uniform int u_fresnel;        // 0 fixed mix, 1 Schlick
@@ -29,7 +29,6 @@ uniform samplerCube u_environment;
 uniform samplerCube u_environment2;  // the probe's second layer (depth_search.glsl, 2 layers)
 uniform vec3 u_probeCentre;
 uniform float u_distanceUnit;  // the capture's near plane (depths are stored in its units)
-uniform int u_search;          // 0: plain lookup for this draw
 uniform int u_outputDirection; // 1: write the looked-up direction instead (for measuring)
 
 #include "capture_output.glsl"
@@ -38,7 +37,7 @@ uniform int u_outputDirection; // 1: write the looked-up direction instead (for 
 #include "exact_trace.glsl"
 #include "glass_exit.glsl"
 
-#if SEARCH == 2
+#if SEARCH == SEARCH_HIERARCHICAL
 // The colour a probe stored around `p` (relative to its centre) in `layer`: the four nearest
 // texels of its face, weighed bilinearly, but only those that hold the same surface (a depth
 // within kThickness of p's): at a figure's outline the figure's texels do not bleed into the
@@ -78,15 +77,13 @@ vec3 surfaceColour(vec3 p, int layer) {
 // `direction` the direction it was looked up along.
 vec3 environmentAlong(vec3 origin, vec3 d, out vec3 direction) {
   direction = d;
-#if SEARCH == 1
-  if (u_search == 1) direction = linearSearch(origin, d);
-#elif SEARCH == 2
-  if (u_search == 1) {
-    SearchResult found = searchDepths((origin - u_probeCentre) / u_distanceUnit, d);
-    if (found.layer != 0) {
-      direction = found.point;
-      return surfaceColour(found.point, found.layer);
-    }
+#if SEARCH == SEARCH_LINEAR
+  direction = linearSearch(origin, d);
+#elif SEARCH == SEARCH_HIERARCHICAL
+  SearchResult found = searchDepths((origin - u_probeCentre) / u_distanceUnit, d);
+  if (found.layer != 0) {
+    direction = found.point;
+    return surfaceColour(found.point, found.layer);
   }
 #endif
   return texture(u_environment, direction).rgb;
@@ -115,7 +112,7 @@ void leaveGlassSphere(inout vec3 origin, inout vec3 d) {
 }
 
 void main() {
-#if SEARCH == 3  // hook: the exact mode traces every ray instead (exact_trace.glsl)
+#if SEARCH == SEARCH_EXACT  // hook: the exact mode traces every ray instead (exact_trace.glsl)
   exactMain();
   return;
 #endif
@@ -126,27 +123,27 @@ void main() {
   float schlick = u_fresnelF0 + (1.0 - u_fresnelF0) * pow(1.0 - clamp(dot(-I, N), 0.0, 1.0), 5.0);
   vec3 colour;
   vec3 measured = reflectedDirection;
-  if (u_refracts == 1) {
-    vec3 T = refract(I, N, u_eta);
-    // Past the critical angle refract() returns a zero vector, and sampling a cube map with it is
-    // undefined: all the light is reflected there.
-    bool total = dot(T, T) == 0.0;
-    vec3 refracted = reflected;
-    if (!total) {
-      vec3 origin = v_worldPosition;
+#if REFRACTS == 1
+  vec3 T = refract(I, N, u_eta);
+  // Past the critical angle refract() returns a zero vector, and sampling a cube map with it is
+  // undefined: all the light is reflected there.
+  bool total = dot(T, T) == 0.0;
+  vec3 refracted = reflected;
+  if (!total) {
+    vec3 origin = v_worldPosition;
 #if GLASS_EXIT == 1
-      if (u_twoSurfaces == 1) leaveGlassMesh(origin, T);
+    if (u_twoSurfaces == 1) leaveGlassMesh(origin, T);
 #else
-      if (u_twoSurfaces == 1) leaveGlassSphere(origin, T);
+    if (u_twoSurfaces == 1) leaveGlassSphere(origin, T);
 #endif
-      refracted = environmentAlong(origin, T, measured);
-    }
-    colour = u_fresnel == 1 ? mix(refracted, reflected, total ? 1.0 : schlick)
-                            : u_reflectionWeight * refracted + u_baseWeight * u_colour;
-  } else {
-    colour = u_fresnel == 1 ? mix(u_colour, reflected, schlick)
-                            : u_reflectionWeight * reflected + u_baseWeight * u_colour;
+    refracted = environmentAlong(origin, T, measured);
   }
+  colour = u_fresnel == 1 ? mix(refracted, reflected, total ? 1.0 : schlick)
+                          : u_reflectionWeight * refracted + u_baseWeight * u_colour;
+#else
+  colour = u_fresnel == 1 ? mix(u_colour, reflected, schlick)
+                          : u_reflectionWeight * reflected + u_baseWeight * u_colour;
+#endif
   if (u_outputDirection == 1) colour = normalize(measured);
   writeOutputs(colour, v_worldPosition, N, false);
 }

@@ -1,4 +1,4 @@
-// The exact mode (SEARCH 3, search: exact): a mirror or glass pixel's ray is traced against the
+// The exact mode (SEARCH_EXACT: search exact, or planned where the planner traces): a mirror or glass pixel's ray is traced against the
 // scene's triangles instead of looked up in a cube map, and what it meets is shaded as a capture
 // would shade it: Phong lit as seen from the main camera's eye, a mirror reflecting again, glass
 // crossed through both surfaces, a cube-textured object traced from its probe centre, the sky
@@ -20,7 +20,7 @@
 // A reference (ref, count) is an interior node (count 0), a leaf of `count` triangles, or in the
 // top level an object's slot (count -1). Rays go into each object's space unnormalised, so t is
 // the same parameter in both levels.
-#if SEARCH == 3
+#if SEARCH == SEARCH_EXACT
 // Tracing needs full precision whatever the shader's default (mediump would lose the triangles).
 precision highp float;
 precision highp int;
@@ -44,6 +44,7 @@ uniform int u_exactEmpty;     // 1: nothing to trace
 uniform vec3 u_exactLight;
 uniform vec4 u_exactPhong;    // ambient, diffuse, specular, shininess
 uniform vec3 u_exactEye;      // the main camera's eye: captures are lit as seen from it
+uniform float u_exactFar;     // the capture's far distance: the world a reflector sees ends there
 uniform int u_exactMark;      // 1: alpha 0 on this pass's pixels (the error view's reflector mask)
 
 highp vec4 exactFetch(highp sampler2D s, int i) {
@@ -176,6 +177,14 @@ ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only)
   return best;
 }
 
+// The world a reflector sees ends at its probe's far planes, as the main camera's ends at its
+// own: a surface farther than the capture's far distance along any axis from `centre` is not
+// there (reference_renderer.cpp's radiance()).
+bool exactBeyondFar(vec3 p, vec3 centre) {
+  vec3 away = abs(p - centre);
+  return max(away.x, max(away.y, away.z)) > u_exactFar;
+}
+
 vec3 exactBackground(vec3 d) {
   if (u_exactHasSky == 1) return texture(u_exactSky, d).rgb;
   return u_exactClear;
@@ -212,6 +221,21 @@ vec3 exactNormal(ExactHit h) {
   return normalize(normalMatrix * n);
 }
 
+#if EXACT_GENERAL == 0
+// What the ray origin + t dir sees when nothing it can meet is a mirror, glass or cube-textured
+// object (the program's variant: src/gfx/program_key.h): one trace, and the Phong surface it
+// meets or the sky. `truth`: the direction from the probe centre to what it meets, or its own
+// direction when it meets nothing.
+vec3 exactRadiance(vec3 origin, vec3 dir, int self, out vec3 truth) {
+  ExactHit h = exactTrace(origin, dir, 0.0, self, -1);
+  truth = dir;
+  vec3 p = origin + h.t * dir;
+  if (h.instance < 0 || exactBeyondFar(p, u_probeCentre)) return exactBackground(dir);
+  truth = normalize(p - u_probeCentre);
+  vec4 look = exactFetch(u_exactScene, h.instance * kExactInstance + 3);
+  return clamp(exactPhong(look.rgb, p, exactNormal(h)), 0.0, 1.0);
+}
+#else
 // What the ray origin + t dir (t > 0) sees, clamped as a capture texel is (the reference's
 // radiance): among the objects but `self`, or, with `inside`, first across glass object `self`
 // to where it leaves. `truth`: the direction from the probe centre to what the ray (once out of
@@ -260,6 +284,10 @@ vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth)
       continue;
     }
     vec3 p = origin + h.t * dir;
+    if (h.instance >= 0 && leaving >= 0 &&
+        exactBeyondFar(p, exactFetch(u_exactScene, leaving * kExactInstance + 5).xyz)) {
+      h.instance = -1;
+    }
     if (first) {
       first = false;
       truth = h.instance >= 0 ? normalize(p - u_probeCentre) : dir;
@@ -347,6 +375,8 @@ vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth)
   }
   return result;
 }
+#endif
+
 
 // environment.frag's main() with every environment traced: the reflected ray (a mirror; glass
 // with Fresnel or at total internal reflection), and glass's refracted ray from inside the object.
@@ -354,14 +384,27 @@ void exactMain() {
   vec3 N = normalize(v_worldNormal);
   vec3 I = normalize(v_worldPosition - u_viewPosition);
   float schlick = u_fresnelF0 + (1.0 - u_fresnelF0) * pow(1.0 - clamp(dot(-I, N), 0.0, 1.0), 5.0);
-  vec3 T = u_refracts == 1 ? refract(I, N, u_eta) : vec3(0.0);
+  vec3 measured;
+  vec3 colour;
+#if REFRACTS == 0
+  // A mirror: the reflected ray alone.
+#if EXACT_GENERAL == 0
+  vec3 reflected = exactRadiance(v_worldPosition, reflect(I, N), u_exactSelf, measured);
+#else
+  vec3 reflected = exactRadiance(v_worldPosition, reflect(I, N), u_exactSelf, false, measured);
+#endif
+  colour = u_fresnel == 1 ? mix(u_colour, reflected, schlick)
+                          : u_reflectionWeight * reflected + u_baseWeight * u_colour;
+#else
+  // Glass: the refracted ray through the object, and the reflected one where Fresnel weighs it in
+  // or the refraction is total.
+  vec3 T = refract(I, N, u_eta);
   bool total = dot(T, T) == 0.0;
   vec3 reflected = vec3(0.0);
   vec3 refracted = vec3(0.0);
-  vec3 measured = reflect(I, N);
+  measured = reflect(I, N);
   for (int ray = 0; ray < 2; ++ray) {
-    bool wanted = ray == 0 ? (u_refracts == 0 || u_fresnel == 1 || total)
-                           : (u_refracts == 1 && !total);
+    bool wanted = ray == 0 ? (u_fresnel == 1 || total) : !total;
     if (!wanted) continue;
     vec3 truth;
     vec3 c = exactRadiance(v_worldPosition, ray == 0 ? reflect(I, N) : normalize(T), u_exactSelf,
@@ -373,17 +416,14 @@ void exactMain() {
     }
     measured = truth;
   }
-  vec3 colour;
-  if (u_refracts == 1) {
-    if (total) refracted = reflected;
-    colour = u_fresnel == 1 ? mix(refracted, reflected, total ? 1.0 : schlick)
-                            : u_reflectionWeight * refracted + u_baseWeight * u_colour;
-  } else {
-    colour = u_fresnel == 1 ? mix(u_colour, reflected, schlick)
-                            : u_reflectionWeight * reflected + u_baseWeight * u_colour;
-  }
+  if (total) refracted = reflected;
+  colour = u_fresnel == 1 ? mix(refracted, reflected, total ? 1.0 : schlick)
+                          : u_reflectionWeight * refracted + u_baseWeight * u_colour;
+#endif
   if (u_outputDirection == 1) colour = normalize(measured);
   writeOutputs(colour, v_worldPosition, N, false);
-  if (u_exactMark == 1 && u_captureLayer == 0) fragColour.a = 0.0;
+#if CAPTURE_OUTPUT == 0
+  if (u_exactMark == 1) fragColour.a = 0.0;
+#endif
 }
 #endif

@@ -25,17 +25,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 // The exact mode needs no cube map but a cube-textured object's: the other probes capture
 // nothing.
-FramePlan withoutTracedProbes(FramePlan plan, const Scene& scene) {
-  for (ProbePlan& probe : plan.probes) {
-    bool cubeTextured = false;
-    for (int member : probe.members) {
-      cubeTextured |= scene.objects[static_cast<size_t>(member)].material == Material::CubeTextured;
-    }
-    if (!cubeTextured) probe.faces.clear();
-  }
-  return plan;
-}
-
 }  // namespace
 
 Demo::Demo(Scene scene) : scene_(std::move(scene)), camera_(scene_.camera) {}
@@ -408,9 +397,13 @@ std::string Demo::initGraphics() {
   return checkGlError("init graphics") ? std::string() : "GL error while creating resources";
 }
 
+bool Demo::mayTrace() const {
+  return accuracy_.search == Search::Exact || accuracy_.search == Search::Planned;
+}
+
 std::string Demo::setUpExact() {
   if (!renderer_) return {};
-  const bool traced = accuracy_.search == Search::Exact;
+  const bool traced = mayTrace();
   renderer_->setExactTracer(nullptr);
   if (!traced && !showError_) return {};  // what exists stays, unused, for the next time
   if (!exactTracer_) {
@@ -473,8 +466,15 @@ void Demo::renderLookupDirections(unsigned framebuffer, int width, int height) {
                         camera_.projection(static_cast<float>(width) / static_cast<float>(height)),
                         camera_.eye()};
   const std::vector<PlannedObject> objects = plannedObjects(clock_.seconds());
-  renderer_->drawMain(scene_, clock_.seconds(), FramePlanner::layout(objects, captureContext()),
-                      view, viewDraws(objects, width, height), framebuffer, width, height, true);
+  FramePlan plan = FramePlanner::layout(objects, captureContext());
+  // Each reflector the way the last frame drew it: traced, or from its probe.
+  std::erase_if(plan.probes, [&](const ProbePlan& probe) {
+    return std::any_of(lastTraced_.begin(), lastTraced_.end(),
+                       [&](const ProbeLayout& t) { return t.reflector == probe.reflector; });
+  });
+  plan.traced = lastTraced_;
+  renderer_->drawMain(scene_, clock_.seconds(), plan, view, viewDraws(objects, width, height),
+                      framebuffer, width, height, true);
 }
 
 std::vector<ScreenBox> Demo::screenBoxes(int width, int height) const {
@@ -489,10 +489,16 @@ std::vector<ScreenBox> Demo::screenBoxes(int width, int height) const {
 
 std::vector<DrawItem> Demo::viewDraws(const std::vector<PlannedObject>& objects, int width,
                                       int height) const {
+  const PlannerView view = plannerView(width, height);
+  return planViewDraws(objects, view.eye, view.pixelsPerTangent, plannerSettings_);
+}
+
+PlannerView Demo::plannerView(int width, int height) const {
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const float pixelsPerTangent =
-      0.5f * static_cast<float>(height) / std::tan(glm::radians(camera_.fovYDeg(aspect)) * 0.5f);
-  return planViewDraws(objects, camera_.eye(), pixelsPerTangent, plannerSettings_);
+  return PlannerView{
+      camera_.eye(),
+      0.5f * static_cast<float>(height) / std::tan(glm::radians(camera_.fovYDeg(aspect)) * 0.5f),
+      static_cast<float>(width) * static_cast<float>(height)};
 }
 
 void Demo::releaseGraphics() {
@@ -585,14 +591,14 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
                                accuracy_,
                                plannerSettings_.captureLod};
   const std::vector<PlannedObject> objects = plannedObjects(stats_.timeSeconds);
-  const FramePlan plan = planner_.plan(objects, context, plannerSettings_);
-  const bool traced = accuracy_.search == Search::Exact;
-  if (exactTracer_ && (traced || showError_)) {
+  const FramePlan plan =
+      planner_.plan(objects, context, plannerSettings_, plannerView(width, height));
+  lastTraced_ = plan.traced;
+  if (exactTracer_ && (!plan.traced.empty() || showError_)) {
     exactTracer_->prepare(scene_, stats_.timeSeconds, plan, camera_.eye());
   }
   gpuTimer_->begin(GpuTimer::kCapture);
-  Result<PassCounts> capture = renderer_->capture(
-      scene_, stats_.timeSeconds, traced ? withoutTracedProbes(plan, scene_) : plan, camera_.eye());
+  Result<PassCounts> capture = renderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
   gpuTimer_->end();
   if (!capture) {
     stats_.error = "capture failed: " + capture.error();
@@ -605,6 +611,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   if (waitForGpu) reflect::waitForGpu();
   stats_.captureMs = millisecondsSince(start);
   stats_.probes = static_cast<int>(plan.probes.size());
+  stats_.tracedReflectors = static_cast<int>(plan.traced.size());
   stats_.facesCaptured = plan.facesCaptured();
 
   const ViewParams view{camera_.view(),
@@ -627,6 +634,9 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   }
   stats_.mainDrawCalls = main.drawCalls;
   stats_.mainTriangles = main.triangles;
+  if (stats_.error.empty() && !renderer_->programError().empty()) {
+    stats_.error = "a shader did not build: " + renderer_->programError();
+  }
   if (errorView) renderErrorView(objects, view, draws, framebuffer);
   if (!firstFrameDrawn_) {
     // The first frame is on screen: now build what the meshes were drawn without.
@@ -642,8 +652,7 @@ void Demo::renderErrorView(const std::vector<PlannedObject>& objects, const View
   CaptureContext context = captureContext();
   context.accuracy.search = Search::Exact;
   context.captureLod = 0.0f;
-  const FramePlan plan =
-      withoutTracedProbes(exactPlanner_.plan(objects, context, PlannerSettings{}), scene_);
+  const FramePlan plan = exactPlanner_.plan(objects, context, PlannerSettings{});
   Result<PassCounts> capture =
       exactRenderer_->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
   if (!capture) exactPlanner_.invalidate();

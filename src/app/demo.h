@@ -204,6 +204,10 @@ class Demo {
   // The main pass's draws for a width x height viewport (view LOD, if on).
   std::vector<DrawItem> viewDraws(const std::vector<PlannedObject>& objects, int width,
                                   int height) const;
+  // What the planner knows of the camera for a width x height viewport.
+  PlannerView plannerView(int width, int height) const;
+  // Whether the settings may trace some reflector's rays (search exact or planned).
+  bool mayTrace() const;
   // The exact mode's tracer (in the exact mode and with the error view), the error view's
   // renderer and targets: made, or dropped, as the settings ask. Returns "" or a message.
   std::string setUpExact();
@@ -224,6 +228,9 @@ class Demo {
   LookCamera camera_;
   AnimationClock clock_;
   FramePlanner planner_;
+  // The reflectors the last frame traced: a pass that reads the frame's cubes again
+  // (renderLookupDirections) draws each the same way.
+  std::vector<ProbeLayout> lastTraced_;
   PlannerSettings plannerSettings_;
   AccuracySettings accuracy_;
   uint64_t skyboxContent_ = 0;  // contentHash(*skybox_): captures compare it by value

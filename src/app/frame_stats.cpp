@@ -10,6 +10,7 @@ nlohmann::json FrameStats::toJson() const {
                          {"gpuCaptureMs", gpuCaptureMs},
                          {"policy", policy},
                          {"probes", probes},
+                         {"tracedReflectors", tracedReflectors},
                          {"facesCaptured", facesCaptured},
                          {"drawCalls", drawCalls()},
                          {"triangles", triangles()},

@@ -17,7 +17,8 @@ struct FrameStats {
   double gpuFrameMs = -1;
   double gpuCaptureMs = -1;
   const char* policy = "when-changed";
-  int probes = 0;
+  int probes = 0;            // probes captured (or kept) this frame
+  int tracedReflectors = 0;  // reflectors whose rays were traced: no probe, no face
   int facesCaptured = 0;
   int captureDrawCalls = 0;
   size_t captureTriangles = 0;

@@ -12,6 +12,8 @@ const char* searchName(Search search) {
       return "hierarchical";
     case Search::Exact:
       return "exact";
+    case Search::Planned:
+      return "planned";
   }
   return "?";
 }
@@ -29,7 +31,9 @@ bool parseSearch(const std::string& name, Search* search) {
 std::string AccuracySettings::describe() const {
   std::string s = captureAtOrigin ? "origin" : "centre";
   s += std::string(", ") + searchName(search);
-  if (search == Search::Hierarchical) s += ", layers " + std::to_string(layers);
+  if (search == Search::Hierarchical || search == Search::Planned) {
+    s += ", layers " + std::to_string(layers);
+  }
   s += ", glass " + std::to_string(glassSurfaces);
   s += ", depth " + std::to_string(depthBits);
   s += mipmaps ? ", mipmapped" : ", linear";

@@ -22,17 +22,25 @@ enum class Search {
   // Every mirror and glass pixel's ray traced against the scene's triangles (two-level BVH,
   // core/bvh.h; shaders/exact_trace.glsl) and shaded as a capture would: no cube map at all.
   Exact,
+  // Per reflector, the frame planner picks the cheaper of the two ways its cost model weighs
+  // (core/method_cost.h): tracing the rays (Exact) or capturing a probe and searching it
+  // (Hierarchical). Tracing is exact, so where it is the cheaper it is also the better.
+  Planned,
 };
 
 const char* searchName(Search search);
 // Every search, in the settings table's order.
 inline constexpr Search kSearches[] = {Search::Plain, Search::Linear, Search::Hierarchical,
-                                       Search::Exact};
+                                       Search::Exact, Search::Planned};
 bool parseSearch(const std::string& name, Search* search);
+// The search a captured probe is searched with: planned captures for the hierarchical search.
+inline Search capturedSearch(Search search) {
+  return search == Search::Planned ? Search::Hierarchical : search;
+}
 
 struct AccuracySettings {
   bool captureAtOrigin = false;  // the course's capture point (0,0,0), not the reflector's centre
-  Search search = Search::Hierarchical;
+  Search search = Search::Planned;
   // Stored depth layers per probe (hierarchical search): 1, or 2, where the second holds the
   // nearest surface behind the first that faces the probe, so a ray that passes behind a figure
   // finds what is there. The planner gives a probe its second layer only where something in its

@@ -127,11 +127,12 @@ void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
     if (seen) nearest = std::min(nearest, distanceToBox(probe.centre, world));
   }
   for (int count : visible) occlusion |= count >= 2 || (sky && count >= 1);
-  const bool searches = context.accuracy.search != Search::Plain;
+  const Search search = capturedSearch(context.accuracy.search);
+  const bool searches = search != Search::Plain;
   probe.plainLookupSuffices =
       searches && (!searched || plainLookupWithinHalfTexel(reach, nearest, context.faceSize));
-  probe.layers = context.accuracy.search == Search::Hierarchical && context.accuracy.layers >= 2 &&
-                         occlusion && !probe.plainLookupSuffices
+  probe.layers = search == Search::Hierarchical && context.accuracy.layers >= 2 && occlusion &&
+                         !probe.plainLookupSuffices
                      ? 2
                      : 1;
 }
@@ -155,6 +156,21 @@ const ProbePlan* FramePlan::probeOf(int object) const {
   return nullptr;
 }
 
+bool FramePlan::traces(int object) const {
+  for (const ProbeLayout& t : traced) {
+    if (contains(t.members, object)) return true;
+  }
+  return false;
+}
+
+const ProbeLayout* FramePlan::layoutOf(int object) const {
+  if (const ProbePlan* probe = probeOf(object)) return probe;
+  for (const ProbeLayout& t : traced) {
+    if (contains(t.members, object)) return &t;
+  }
+  return nullptr;
+}
+
 int FramePlan::facesCaptured() const {
   int n = 0;
   for (const ProbePlan& p : probes) n += static_cast<int>(p.faces.size());
@@ -167,11 +183,13 @@ void FramePlanner::trackChanges(const std::vector<PlannedObject>& objects) {
     previous_ = objects;
     stateVersions_.assign(objects.size(), 1);
     contentVersions_.assign(objects.size(), 1);
+    movedNow_.assign(objects.size(), true);
     probes_.clear();
     return;
   }
   for (size_t i = 0; i < objects.size(); ++i) {
-    if (!sameState(objects[i], previous_[i])) {
+    movedNow_[i] = !sameState(objects[i], previous_[i]);
+    if (movedNow_[i]) {
       ++stateVersions_[i];
       previous_[i] = objects[i];
     }
@@ -180,6 +198,21 @@ void FramePlanner::trackChanges(const std::vector<PlannedObject>& objects) {
 
 namespace {
 
+// The world bounding sphere of an object's oriented box.
+glm::vec3 worldCentreOf(const PlannedObject& o) {
+  return glm::vec3(o.model * glm::vec4(o.localBounds.centre(), 1.0f));
+}
+float worldRadiusOf(const PlannedObject& o) {
+  const glm::vec3 halfExtent = 0.5f * (o.localBounds.max - o.localBounds.min);
+  const glm::mat3 m(o.model);
+  return glm::length(glm::abs(m[0]) * halfExtent.x + glm::abs(m[1]) * halfExtent.y +
+                     glm::abs(m[2]) * halfExtent.z);
+}
+
+bool traceable(const PlannedObject& o) {
+  return o.look.material == Material::Mirror || o.look.material == Material::Glass;
+}
+
 // The coarsest level whose triangle count still covers the object's projected disc, seen from
 // `centre`, at `trianglesPerPixel`; pixelsPerTangent converts the tangent of an angle to pixels
 // (half the face for a 90-degree cube face). Distances and sizes from the bounding sphere of the
@@ -187,11 +220,8 @@ namespace {
 int chooseLevel(const PlannedObject& o, const glm::vec3& centre, float pixelsPerTangent,
                 float trianglesPerPixel) {
   if (trianglesPerPixel <= 0.0f || o.levels.size() < 2) return 0;
-  const glm::vec3 worldCentre(o.model * glm::vec4(o.localBounds.centre(), 1.0f));
-  const glm::vec3 halfExtent = 0.5f * (o.localBounds.max - o.localBounds.min);
-  const glm::mat3 m(o.model);
-  const float radius = glm::length(glm::abs(m[0]) * halfExtent.x + glm::abs(m[1]) * halfExtent.y +
-                                   glm::abs(m[2]) * halfExtent.z);
+  const glm::vec3 worldCentre = worldCentreOf(o);
+  const float radius = worldRadiusOf(o);
   const float distance = glm::length(worldCentre - centre);
   if (distance <= radius) return 0;  // the probe is inside or touching it
   const float pixels = radius / distance * pixelsPerTangent;
@@ -205,6 +235,15 @@ int chooseLevel(const PlannedObject& o, const glm::vec3& centre, float pixelsPer
 }
 
 }  // namespace
+
+float screenPixels(const glm::vec3& centre, float radius, const PlannerView& view) {
+  if (view.pixelsPerTangent <= 0.0f) return 0.0f;
+  const float distance = glm::length(centre - view.eye);
+  if (distance <= radius) return view.pixels;  // the camera is inside it
+  const float tangent = radius / std::sqrt(distance * distance - radius * radius);
+  const float pixels = tangent * view.pixelsPerTangent;
+  return std::min(3.14159265f * pixels * pixels, view.pixels);
+}
 
 std::vector<DrawItem> planViewDraws(const std::vector<PlannedObject>& objects, const glm::vec3& eye,
                                     float pixelsPerTangent, const PlannerSettings& settings) {
@@ -299,11 +338,66 @@ std::vector<int> FramePlanner::chooseFaces(const std::vector<int>& stale,
   return stale;
 }
 
+MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                                 const CaptureContext& context, const PlannerSettings& settings,
+                                 const PlannerView& view) const {
+  MethodChoice c;
+  c.reflector = probe.reflector;
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const PlannedObject& o = objects[i];
+    if (!o.levels.empty()) c.trace.triangles += static_cast<double>(o.levels[0].triangles);
+    if (contains(probe.members, static_cast<int>(i))) {
+      c.trace.pixels += screenPixels(worldCentreOf(o), worldRadiusOf(o), view);
+    } else {
+      c.trace.general |= o.look.material != Material::Phong;
+    }
+  }
+  // Captured: the faces that show something moving are redrawn (every face, every frame, under
+  // the course's policy), each with one pass, or three where two layers are stored; then every
+  // mirror pixel searches.
+  const bool everyFrame = settings.policy == UpdatePolicy::EveryFrame;
+  const double texels = static_cast<double>(context.faceSize) * context.faceSize;
+  for (int face = 0; face < 6; ++face) {
+    const std::vector<DrawItem> draws = drawsFor(objects, probe.members, probe.centre, face,
+                                                 context, everyFrame, settings.captureLod);
+    bool moving = everyFrame;
+    double triangles = 0.0;
+    for (const DrawItem& d : draws) {
+      moving |= movedNow_[static_cast<size_t>(d.object)];
+      triangles += static_cast<double>(d.triangles);
+    }
+    if (!moving) continue;
+    const bool hides = draws.size() >= 2 || (context.skyboxContent != 0 && !draws.empty());
+    // Two layers: the nearest surfaces and their backs at the capture's detail, what they hide
+    // at kSecondLayerDetail of it.
+    const double passes = probe.layers == 2 && hides ? 2.0 + kSecondLayerDetail : 1.0;
+    c.capture.faces += 1.0;
+    c.capture.triangles += triangles * passes;
+    c.capture.texels += texels * (probe.layers == 2 && hides ? 3.0 : 1.0);
+  }
+  double share = 1.0;  // of the redraws a frame, under the policies that spread them
+  if (settings.policy == UpdatePolicy::TimeSliced && c.capture.faces > 0.0) {
+    share = std::min(1.0, std::clamp(settings.facesPerFrame, 1, 6) / c.capture.faces);
+  } else if (settings.policy == UpdatePolicy::EveryNFrames) {
+    share = 1.0 / std::max(settings.everyN, 1);
+  }
+  c.capture.faces *= share;
+  c.capture.triangles *= share;
+  c.capture.texels *= share;
+  c.capture.pixels = probe.plainLookupSuffices ? 0.0 : c.trace.pixels;
+  c.traceMs = traceCost(c.trace, costs_);
+  c.captureMs = captureCost(c.capture, costs_);
+  return c;
+}
+
 FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
-                             const CaptureContext& context, const PlannerSettings& settings) {
+                             const CaptureContext& context, const PlannerSettings& settings,
+                             const PlannerView& view) {
   trackChanges(objects);
   FramePlan plan;
+  choices_.clear();
   std::vector<int> recapturedForRealChange;
+  const Search search = context.accuracy.search;
   for (ProbeLayout& layout : probesOf(objects)) {
     ProbePlan probe{std::move(layout), {}};
     decideStorage(probe, objects, context);
@@ -317,6 +411,27 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       memoryIt->reflector = reflector;
     }
     ProbeMemory& memory = *memoryIt;
+
+    // Trace its rays, or capture it. A cube-textured member's look is its cube: captured.
+    const bool rays = std::all_of(members.begin(), members.end(), [&](int m) {
+      return traceable(objects[static_cast<size_t>(m)]);
+    });
+    Method method = Method::Capture;
+    if (rays && search == Search::Exact) method = Method::Trace;
+    if (rays && search == Search::Planned && view.pixelsPerTangent > 0.0f) {
+      MethodChoice choice = weigh(probe, objects, context, settings, view);
+      choice.method = chooseMethod(choice.traceMs, choice.captureMs, memory.method, costs_);
+      method = choice.method;
+      choices_.push_back(choice);
+    }
+    if (method != memory.method) {
+      for (FaceMemory& f : memory.faces) f.captured = false;  // a trace keeps no faces
+      memory.method = method;
+    }
+    if (method == Method::Trace) {
+      plan.traced.push_back(static_cast<ProbeLayout&>(probe));
+      continue;
+    }
     // The probe moved, a capture option changed or it stores other layers or none: no face is
     // valid any more.
     if (probe.centre != memory.centre || !(context == memory.context) ||
@@ -369,6 +484,15 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       recapturedForRealChange.insert(recapturedForRealChange.end(), members.begin(), members.end());
     }
     plan.probes.push_back(std::move(probe));
+  }
+  // The exact mode traces every mirror and glass, a static skybox's users too.
+  if (search == Search::Exact) {
+    for (size_t i = 0; i < objects.size(); ++i) {
+      const PlannedObject& o = objects[i];
+      if (!traceable(o) || plan.layoutOf(static_cast<int>(i))) continue;
+      plan.traced.push_back(
+          ProbeLayout{static_cast<int>(i), {static_cast<int>(i)}, worldCentreOf(o)});
+    }
   }
   // Mirrors whose cube changed look different from the next frame on.
   for (int r : recapturedForRealChange) ++contentVersions_[static_cast<size_t>(r)];

@@ -13,6 +13,7 @@
 
 #include "core/accuracy_settings.h"
 #include "core/mesh_data.h"
+#include "core/method_cost.h"
 #include "core/probe_layout.h"
 #include "core/scene.h"
 
@@ -146,12 +147,26 @@ float halfTexelAngle(int faceSize);
 bool plainLookupWithinHalfTexel(float reach, float nearest, int faceSize);
 
 // Everything a frame's passes need to know: the capture renders `faces`, and the main pass binds
-// each probed object to its probe's cube and centre from here.
+// each probed object to its probe's cube and centre from here, or traces its rays.
 struct FramePlan {
-  std::vector<ProbePlan> probes;  // one per probe, even when nothing is redrawn
+  std::vector<ProbePlan> probes;  // one per captured probe, even when nothing is redrawn
+  // Reflectors whose rays are traced this frame (search: exact, or planned where tracing is the
+  // cheaper): who they are and the centre their error is measured from. No probe, no face.
+  std::vector<ProbeLayout> traced;
   int facesCaptured() const;
-  // The probe object `object` samples, or null.
+  // The probe object `object` samples, or null (none, or its rays are traced).
   const ProbePlan* probeOf(int object) const;
+  bool traces(int object) const;
+  // Where `object`'s reflection is measured from: its probe's or its traced layout's centre.
+  const ProbeLayout* layoutOf(int object) const;
+};
+
+// What the planner knows of the main camera, to weigh tracing (a cost per pixel on screen)
+// against capturing. pixelsPerTangent 0: no view; search: planned then captures.
+struct PlannerView {
+  glm::vec3 eye{0.0f};
+  float pixelsPerTangent = 0.0f;  // half the viewport height over tan(fovY / 2)
+  float pixels = 0.0f;            // the viewport's width x height
 };
 
 // The main pass's draws: every object, each at the coarsest level that still has
@@ -160,10 +175,29 @@ struct FramePlan {
 std::vector<DrawItem> planViewDraws(const std::vector<PlannedObject>& objects, const glm::vec3& eye,
                                     float pixelsPerTangent, const PlannerSettings& settings);
 
+// Pixels on screen of a sphere of `radius` at `centre` (its projected disc, at most the
+// viewport); 0 without a view.
+float screenPixels(const glm::vec3& centre, float radius, const PlannerView& view);
+
+// The planner's estimate of a probe's two methods this frame, and what it picked.
+struct MethodChoice {
+  int reflector = 0;
+  Method method = Method::Capture;
+  TraceWork trace;
+  CaptureWork capture;
+  double traceMs = 0.0;
+  double captureMs = 0.0;
+};
+
 class FramePlanner {
  public:
   FramePlan plan(const std::vector<PlannedObject>& objects, const CaptureContext& context,
-                 const PlannerSettings& settings);
+                 const PlannerSettings& settings, const PlannerView& view = {});
+  // The coefficients search: planned weighs the methods with.
+  void setCosts(const MethodCosts& costs) { costs_ = costs; }
+  const MethodCosts& costs() const { return costs_; }
+  // What plan() weighed for each probe under search: planned, the last frame.
+  const std::vector<MethodChoice>& choices() const { return choices_; }
   // The probes alone, with no faces to capture and nothing remembered: for a pass that reads the
   // cubes a plan() already captured.
   static FramePlan layout(const std::vector<PlannedObject>& objects, const CaptureContext& context);
@@ -180,6 +214,7 @@ class FramePlanner {
   };
   struct ProbeMemory {
     int reflector = -1;
+    Method method = Method::Capture;
     glm::vec3 centre{0.0f};
     int layers = 1;
     bool plainLookupSuffices = false;  // (the capture then stores no depths)
@@ -194,6 +229,10 @@ class FramePlanner {
   Staleness faceStaleness(const ProbeMemory& probe, int face,
                           const std::vector<int>& visibleNow) const;
   void trackChanges(const std::vector<PlannedObject>& objects);
+  // Search: planned: what each method would cost `probe` this frame.
+  MethodChoice weigh(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                     const CaptureContext& context, const PlannerSettings& settings,
+                     const PlannerView& view) const;
   // The objects a face shows: with `whole`, every object at full detail (the course's capture);
   // otherwise those the face may see, culled by chunks, at the coarsest level with
   // `trianglesPerPixel` (0: full detail).
@@ -208,7 +247,10 @@ class FramePlanner {
   // show this mirror redraw once (one bounce), without two mirrors re-triggering each other.
   std::vector<uint32_t> contentVersions_;
   std::vector<ProbeMemory> probes_;
+  std::vector<bool> movedNow_;  // per object: its state changed this frame
   uint64_t frameIndex_ = 0;
+  MethodCosts costs_ = MethodCosts::softwareRenderer();
+  std::vector<MethodChoice> choices_;
 };
 
 }  // namespace reflect

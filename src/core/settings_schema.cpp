@@ -170,6 +170,16 @@ const std::vector<SettingField<PlannerSettings>>& plannerFields() {
   return fields;
 }
 
+namespace {
+
+std::vector<std::string> searchNames() {
+  std::vector<std::string> names;
+  for (Search s : kSearches) names.push_back(searchName(s));
+  return names;
+}
+
+}  // namespace
+
 const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
   using A = AccuracySettings;
   static const std::vector<SettingField<A>> fields = {
@@ -181,9 +191,9 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
               "how a mirror finds what its ray meets: plain (the course: along the ray's "
               "direction), linear (12 steps against stored distances), hierarchical (every texel "
               "the ray passes, through a min/max depth chain), exact (the ray traced against the "
-              "scene's triangles: no cube map)",
-              {searchName(Search::Plain), searchName(Search::Linear),
-               searchName(Search::Hierarchical), searchName(Search::Exact)}),
+              "scene's triangles: no cube map), planned (per reflector, the cheaper of exact and "
+              "hierarchical, by the planner's cost model)",
+              searchNames()),
        [](const A& s) { return json(searchName(s.search)); },
        [](A& s, const json& v) { parseSearch(v.get<std::string>(), &s.search); }},
       {integer("layers", "depth layers",

@@ -104,7 +104,7 @@ void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& p
       roots[i] = root->second.ref;
       centres[i] = transformBounds(root->second.box, instance.model).centre();
     }
-    if (const ProbePlan* probe = plan.probeOf(static_cast<int>(i))) centres[i] = probe->centre;
+    if (const ProbeLayout* probe = plan.layoutOf(static_cast<int>(i))) centres[i] = probe->centre;
   }
   const SceneBvh bvh = buildSceneBvh(std::move(instances));
   packed_ = packScene(scene, bvh, roots, centres, meshRows_ * kBvhTextureWidth);
@@ -113,6 +113,7 @@ void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& p
   replaceRows(atlas_.id(), meshRows_, packed_.traversal);
   allocateTexels(scene_.id(), packed_.shading, 1);
   clear_ = scene.clearColour;
+  far_ = scene.capture.far;
   light_ = scene.light.position;
   phong_ = {scene.light.ambient, scene.light.diffuse, scene.light.specular, scene.light.shininess};
   eye_ = eye;
@@ -136,6 +137,7 @@ void ExactTracer::bind(GLuint program) const {
   glUniform3f(at("u_exactLight"), light_.x, light_.y, light_.z);
   glUniform4f(at("u_exactPhong"), phong_.x, phong_.y, phong_.z, phong_.w);
   glUniform3f(at("u_exactEye"), eye_.x, eye_.y, eye_.z);
+  glUniform1f(at("u_exactFar"), far_);
   glUniform1i(at("u_exactMark"), mark_ ? 1 : 0);
 }
 

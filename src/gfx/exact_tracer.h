@@ -64,6 +64,7 @@ class ExactTracer {
 
   PackedScene packed_;
   glm::vec3 clear_{0.0f}, light_{0.0f}, eye_{0.0f};
+  float far_ = 100.0f;
   glm::vec4 phong_{0.0f};
   bool mark_ = false;
 };

@@ -40,24 +40,6 @@ using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
 Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
-  const bool mediump = accuracy.mediump;
-  const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
-  Result<ShaderProgram> phong = ShaderProgram::build("mesh.vert", "phong.frag", mediump, precision);
-  if (!phong) return Result<SceneRenderer>::failure(phong.error());
-  Result<EnvironmentProgram> environment =
-      buildEnvironment(static_cast<int>(accuracy.search), mediump, precision);
-  if (!environment) return Result<SceneRenderer>::failure(environment.error());
-  // Reflectors that need no search (a skybox, a probe whose surroundings are all far) are drawn
-  // by a program without one: a software rasteriser pays for a branch not taken.
-  const bool searches =
-      accuracy.search == Search::Linear || accuracy.search == Search::Hierarchical;
-  Result<EnvironmentProgram> plainEnvironment =
-      searches ? buildEnvironment(static_cast<int>(Search::Plain), mediump, precision)
-               : Result<EnvironmentProgram>(EnvironmentProgram{});
-  if (!plainEnvironment) return Result<SceneRenderer>::failure(plainEnvironment.error());
-  Result<ShaderProgram> cubeTextured =
-      ShaderProgram::build("mesh.vert", "cube_textured.frag", mediump, precision);
-  if (!cubeTextured) return Result<SceneRenderer>::failure(cubeTextured.error());
   Result<ShaderProgram> pyramidFirst =
       ShaderProgram::build("fullscreen.vert", "depth_pyramid.frag");
   if (!pyramidFirst) return Result<SceneRenderer>::failure(pyramidFirst.error());
@@ -65,31 +47,12 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   if (!reduce) return Result<SceneRenderer>::failure(reduce.error());
 
   SceneRenderer r;
-  const ShaderProgram& p = phong.value();
-  r.phong_ = PhongProgram{ShaderProgram{},
-                          CaptureUniforms::of(p),
-                          p.uniform("u_viewProjection"),
-                          p.uniform("u_model"),
-                          p.uniform("u_normalMatrix"),
-                          p.uniform("u_colour"),
-                          p.uniform("u_lightPosition"),
-                          p.uniform("u_viewPosition"),
-                          p.uniform("u_ambient"),
-                          p.uniform("u_diffuse"),
-                          p.uniform("u_specular"),
-                          p.uniform("u_shininess")};
-  r.phong_.program = phong.take();
-
-  r.environment_ = environment.take();
-  r.plainEnvironment_ = plainEnvironment.take();
-
-  const ShaderProgram& c = cubeTextured.value();
-  r.cubeTextured_ =
-      CubeTexturedProgram{ShaderProgram{}, CaptureUniforms::of(c), c.uniform("u_viewProjection"),
-                          c.uniform("u_model"), c.optionalUniform("u_normalMatrix")};
-  glUseProgram(c.id());
-  glUniform1i(c.uniform("u_environment"), kEnvironmentUnit);
-  r.cubeTextured_.program = cubeTextured.take();
+  r.accuracy_ = accuracy;
+  // The programs every scene's main pass needs are built now, so a shader that does not build
+  // fails here, loudly; the other variants when a draw first needs them.
+  for (const ProgramKey& key : {ProgramKey{}, ProgramKey{Look::Environment}}) {
+    if (!r.program(key)) return Result<SceneRenderer>::failure(r.programError_);
+  }
 
   const ShaderProgram& pf = pyramidFirst.value();
   glUseProgram(pf.id());
@@ -122,7 +85,6 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, r.emptyPyramid_.id());
   glActiveTexture(GL_TEXTURE0);
   r.emptyVertexArray_ = VertexArrayHandle(genVertexArray());
-  r.accuracy_ = accuracy;
   if (!checkGlError("create scene renderer")) {
     return Result<SceneRenderer>::failure("GL error while creating the scene renderer");
   }
@@ -163,39 +125,27 @@ const CubeCaptureTarget* SceneRenderer::probeTarget(int owner) const {
   return it == probes_.end() ? nullptr : &it->second;
 }
 
-void SceneRenderer::use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
+void SceneRenderer::use(const Program& p, const Scene& scene, const glm::mat4& viewProj,
                         const glm::vec3& viewPosition, const CaptureState& pass,
                         bool outputDirections) {
-  current_ = kind;
-  switch (kind) {
-    case ProgramKind::Phong:
-      glUseProgram(phong_.program.id());
-      phong_.capture.set(pass);
-      glUniformMatrix4fv(phong_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
-      glUniform3fv(phong_.lightPosition, 1, glm::value_ptr(scene.light.position));
-      glUniform3fv(phong_.viewPosition, 1, glm::value_ptr(viewPosition));
-      glUniform1f(phong_.ambient, scene.light.ambient);
-      glUniform1f(phong_.diffuse, scene.light.diffuse);
-      glUniform1f(phong_.specular, scene.light.specular);
-      glUniform1f(phong_.shininess, scene.light.shininess);
+  current_ = &p;
+  glUseProgram(p.program.id());
+  p.capture.set(pass);
+  glUniformMatrix4fv(p.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
+  glUniform3fv(p.viewPosition, 1, glm::value_ptr(viewPosition));
+  switch (p.key.look) {
+    case Look::Phong:
+      glUniform3fv(p.phong.lightPosition, 1, glm::value_ptr(scene.light.position));
+      glUniform1f(p.phong.ambient, scene.light.ambient);
+      glUniform1f(p.phong.diffuse, scene.light.diffuse);
+      glUniform1f(p.phong.specular, scene.light.specular);
+      glUniform1f(p.phong.shininess, scene.light.shininess);
       break;
-    case ProgramKind::Environment:
-    case ProgramKind::PlainEnvironment:
-    case ProgramKind::GlassEnvironment:
-    case ProgramKind::PlainGlassEnvironment: {
-      const EnvironmentProgram& env = activeEnvironment();
-      glUseProgram(env.program.id());
-      env.capture.set(pass);
-      glUniformMatrix4fv(env.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
-      glUniform3fv(env.viewPosition, 1, glm::value_ptr(viewPosition));
-      glUniform1i(env.outputDirection, outputDirections ? 1 : 0);
-      if (exact_) exact_->bind(env.program.id());  // the exact mode's scene
+    case Look::Environment:
+      glUniform1i(p.environment.outputDirection, outputDirections ? 1 : 0);
+      if (p.key.search == Search::Exact && exact_) exact_->bind(p.program.id());
       break;
-    }
-    case ProgramKind::CubeTextured:
-      glUseProgram(cubeTextured_.program.id());
-      cubeTextured_.capture.set(pass);
-      glUniformMatrix4fv(cubeTextured_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
+    case Look::CubeTextured:
       break;
   }
 }
@@ -205,49 +155,44 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
   const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
   const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
+  const Program& p = *current_;
   const glm::mat4 model = scene.modelMatrix(object, seconds);
+  setObjectMatrices(p.model, p.normalMatrix, model);
   // The object's size, for the third capture pass (capture_output.glsl).
   const Bounds world = transformBounds(buffer->bounds(), model);
-  const float extent = glm::length(world.max - world.min) / scene.capture.near;
-  switch (current_) {
-    case ProgramKind::Phong:
-      setObjectMatrices(phong_.model, phong_.normalMatrix, model);
-      glUniform3fv(phong_.colour, 1, glm::value_ptr(object.colour));
-      glUniform1f(phong_.capture.extent, extent);
+  glUniform1f(p.capture.extent, glm::length(world.max - world.min) / scene.capture.near);
+  switch (p.key.look) {
+    case Look::Phong:
+      glUniform3fv(p.phong.colour, 1, glm::value_ptr(object.colour));
       break;
-    case ProgramKind::Environment:
-    case ProgramKind::PlainEnvironment:
-    case ProgramKind::GlassEnvironment:
-    case ProgramKind::PlainGlassEnvironment: {
-      const EnvironmentProgram& env = activeEnvironment();
-      setObjectMatrices(env.model, env.normalMatrix, model);
+    case Look::Environment: {
+      const EnvironmentUniforms& env = p.environment;
       glUniform3fv(env.colour, 1, glm::value_ptr(object.colour));
-      glUniform1f(env.capture.extent, extent);
       glUniform1f(env.reflectionWeight, object.reflection);
       glUniform1f(env.baseWeight, object.base);
-      glUniform1i(env.refracts, object.material == Material::Glass ? 1 : 0);
       const float n = std::max(object.ior, 1e-3f);
       glUniform1f(env.eta, 1.0f / n);
       glUniform1f(env.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
       glUniform1i(env.fresnel, object.fresnel ? 1 : 0);
-      // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in
-      // closed form, otherwise through its interior map, with the GLASS_EXIT programs.
-      const MeshBuffer* full = mesh(object.mesh, 0);
-      const float radius = sphereRadiusIn(full, model);
-      const GlassInteriorMap* interior =
-          env.glassExit.map >= 0 ? glassExitOf(object, model) : nullptr;
-      if (interior) env.glassExit.set(*interior, model);
-      const bool twoSurfaces = accuracy_.glassSurfaces == 2 && (radius > 0.0f || interior);
-      glUniform1i(env.twoSurfaces, twoSurfaces ? 1 : 0);
-      const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
-      glUniform4f(env.glassSphere, centre.x, centre.y, centre.z, radius);
+      if (p.key.refracts) {
+        // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in
+        // closed form, otherwise through its interior map, with the GLASS_EXIT programs.
+        const MeshBuffer* full = mesh(object.mesh, 0);
+        const float radius = sphereRadiusIn(full, model);
+        const GlassInteriorMap* interior = p.key.glassExit ? glassExitOf(object, model) : nullptr;
+        if (interior) p.glassExit.set(*interior, model);
+        const bool twoSurfaces = accuracy_.glassSurfaces == 2 && (radius > 0.0f || interior);
+        glUniform1i(env.twoSurfaces, twoSurfaces ? 1 : 0);
+        const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
+        glUniform4f(env.glassSphere, centre.x, centre.y, centre.z, radius);
+      }
       bindEnvironment(scene, plan, item.object);
-      if (exact_) exact_->bindObject(env.program.id(), item.object);
+      if (p.key.search == Search::Exact && exact_) {
+        exact_->bindObject(p.program.id(), item.object);
+      }
       break;
     }
-    case ProgramKind::CubeTextured:
-      setObjectMatrices(cubeTextured_.model, cubeTextured_.normalMatrix, model);
-      glUniform1f(cubeTextured_.capture.extent, extent);
+    case Look::CubeTextured:
       bindEnvironment(scene, plan, item.object);
       break;
   }
@@ -261,38 +206,28 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
                                     const glm::vec3& viewPosition,
                                     const glm::vec3& environmentViewPosition,
                                     const CaptureState& pass, bool outputDirections) {
+  // One program switch per variant present, in the keys' order (Phong first).
+  std::vector<std::pair<ProgramKey, const DrawItem*>> keyed;
+  keyed.reserve(draws.size());
+  for (const DrawItem& d : draws) keyed.emplace_back(keyFor(scene, plan, d, pass, seconds), &d);
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   PassCounts counts;
-  // One program switch per material kind present: Phong first, then the environment users.
-  for (ProgramKind kind : {ProgramKind::Phong, ProgramKind::PlainEnvironment,
-                           ProgramKind::Environment, ProgramKind::PlainGlassEnvironment,
-                           ProgramKind::GlassEnvironment, ProgramKind::CubeTextured}) {
-    bool inUse = false;
-    for (const DrawItem& d : draws) {
-      const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
-      const Material m = object.material;
-      // A mirror seen in another probe's capture looks its own cube up plainly: that view is a
-      // second bounce, seen small and from the previous frame, and a search in every texel of
-      // it cost more than the rest of the frame (two-mirrors: 8.2x -> 3.7x the course's frame,
-      // -0.2 dB, +1 pixel off by more than 32 levels a frame; tools/scene_accuracy.sh).
-      const bool plain = plainEnvironment_.program.id() &&
-                         (pass.layer != 0 || !searchesFor(scene, plan, d.object));
-      const bool exits = m == Material::Glass &&
-                         glassExitOf(object, scene.modelMatrix(object, seconds)) != nullptr;
-      const ProgramKind wanted = m == Material::Phong          ? ProgramKind::Phong
-                                 : m == Material::CubeTextured ? ProgramKind::CubeTextured
-                                 : plain && exits              ? ProgramKind::PlainGlassEnvironment
-                                 : plain                       ? ProgramKind::PlainEnvironment
-                                 : exits                       ? ProgramKind::GlassEnvironment
-                                                               : ProgramKind::Environment;
-      if (wanted != kind) continue;
-      if (!inUse) {
-        use(kind, scene, viewProj,
-            kind == ProgramKind::Phong ? viewPosition : environmentViewPosition, pass,
-            outputDirections);
-      }
-      inUse = true;
-      counts += drawObject(scene, plan, d, seconds);
+  for (size_t i = 0; i < keyed.size();) {
+    size_t end = i;
+    while (end < keyed.size() && keyed[end].first == keyed[i].first) ++end;
+    ProgramKey key = keyed[i].first;
+    const Program* p = program(key);
+    if (!p && key.glassExit) {  // no interior-map program: glass leaves at one surface
+      key.glassExit = false;
+      p = program(key);
     }
+    if (p) {
+      use(*p, scene, viewProj, key.look == Look::Phong ? viewPosition : environmentViewPosition,
+          pass, outputDirections);
+      for (size_t k = i; k < end; ++k) counts += drawObject(scene, plan, *keyed[k].second, seconds);
+    }
+    i = end;
   }
   return counts;
 }
@@ -304,7 +239,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   const glm::mat4 projection = cubeFaceProjection(scene.capture.near, scene.capture.far);
-  const bool chain = accuracy_.search == Search::Hierarchical;
+  const bool chain = capturedSearch(accuracy_.search) == Search::Hierarchical;
   // Where nothing is drawn, the stored distance is the far plane's: the world ends there, as it
   // does for the main camera. (Measured on the default scene, this beat an infinite distance for
   // the linear search by 2 dB.) A skybox is drawn over it, infinitely far, and is seen along the
@@ -362,7 +297,8 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
         } else {
           t.bindFace(face.face, layer - 1);
           const unsigned codes[2] = {farCode, farCode};
-          t.clearFace(clear, accuracy_.search == Search::Linear ? farAlpha : 1.0f, codes);
+          t.clearFace(clear, capturedSearch(accuracy_.search) == Search::Linear ? farAlpha : 1.0f,
+                      codes);
         }
         // Passes 2 and 3 peel behind pass 1's depths, and pass 2 behind pass 3's backs.
         bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY,
@@ -423,13 +359,10 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Fra
 }
 
 void SceneRenderer::abandon() {
-  phong_.program.abandon();
-  environment_.program.abandon();
-  plainEnvironment_.program.abandon();
-  glassEnvironment_.program.abandon();
-  plainGlassEnvironment_.program.abandon();
+  for (auto& [key, p] : programs_) p.program.abandon();
+  programs_.clear();
+  current_ = nullptr;
   glassInteriors_.abandon();
-  cubeTextured_.program.abandon();
   pyramid_.first.abandon();
   pyramid_.reduce.abandon();
   emptyPyramid_.abandon();

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "gfx/cube_capture_target.h"
 #include "gfx/glass_interior_map.h"
 #include "gfx/mesh_buffer.h"
+#include "gfx/program_key.h"
 #include "gfx/shader_program.h"
 #include "gfx/skybox_pass.h"
 
@@ -78,43 +80,46 @@ class SceneRenderer {
   void abandon();
   // The exact mode's scene (search: exact), bound with the environment program; not owned.
   void setExactTracer(const ExactTracer* tracer) { exact_ = tracer; }
+  // The last program that failed to build, as "environment.frag (main, exact): ...", or "".
+  const std::string& programError() const { return programError_; }
+  // Programs built so far (each variant once), for tests.
+  size_t programCount() const { return programs_.size(); }
 
  private:
-  struct PhongProgram {
-    ShaderProgram program;
-    CaptureUniforms capture;
-    GLint viewProjection, model, normalMatrix, colour, lightPosition, viewPosition, ambient,
-        diffuse, specular, shininess;
+  struct PhongUniforms {
+    GLint colour = -1, lightPosition = -1, ambient = -1, diffuse = -1, specular = -1,
+          shininess = -1;
   };
-  struct EnvironmentProgram {
-    ShaderProgram program;
-    CaptureUniforms capture;
-    GLint viewProjection, model, normalMatrix, colour, viewPosition, reflectionWeight, baseWeight,
-        refracts, eta, fresnelF0, fresnel, twoSurfaces, glassSphere, probeCentre, distanceUnit,
-        search, outputDirection, layers, faceSize, topLevel, pyramidTile;
-    GlassExitUniforms glassExit;  // only with GLASS_EXIT 1
+  struct EnvironmentUniforms {
+    GLint colour = -1, reflectionWeight = -1, baseWeight = -1, eta = -1, fresnelF0 = -1,
+          fresnel = -1, twoSurfaces = -1, glassSphere = -1, probeCentre = -1, distanceUnit = -1,
+          outputDirection = -1, layers = -1, faceSize = -1, topLevel = -1, pyramidTile = -1;
   };
-  struct CubeTexturedProgram {
+  // One variant (program_key.h) and where its uniforms are; a uniform the variant does not use is
+  // -1, which GL ignores.
+  struct Program {
+    ProgramKey key;
     ShaderProgram program;
     CaptureUniforms capture;
-    GLint viewProjection, model, normalMatrix;
+    GLint viewProjection = -1, model = -1, normalMatrix = -1, viewPosition = -1;
+    PhongUniforms phong;
+    EnvironmentUniforms environment;
+    GlassExitUniforms glassExit;  // only with key.glassExit
   };
   struct PyramidProgramSet {
     ShaderProgram first, reduce;
     PyramidPrograms uses;
   };
-  // The Glass kinds are the environment programs built with GLASS_EXIT 1, for glass meshes that
-  // are not spheres (glass_exit.glsl).
-  enum class ProgramKind {
-    Phong,
-    PlainEnvironment,
-    Environment,
-    PlainGlassEnvironment,
-    GlassEnvironment,
-    CubeTextured
-  };
 
   SceneRenderer() = default;
+  static Result<Program> buildProgram(const ProgramKey& key, bool mediump);
+  // The program of `key`, built the first time it is asked for; null when it does not build (the
+  // error goes to stderr once).
+  const Program* program(const ProgramKey& key);
+  // The variant that draws `item` in `pass`: its look; for a mirror or glass, whether its rays
+  // are traced, its probe searched (and how) or looked up plainly.
+  ProgramKey keyFor(const Scene& scene, const FramePlan& plan, const DrawItem& item,
+                    const CaptureState& pass, double seconds) const;
   // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
   PassCounts drawItems(const Scene& scene, double seconds, const FramePlan& plan,
                        const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
@@ -122,37 +127,27 @@ class SceneRenderer {
                        const CaptureState& pass, bool outputDirections);
   PassCounts drawObject(const Scene& scene, const FramePlan& plan, const DrawItem& item,
                         double seconds);
-  void use(ProgramKind kind, const Scene& scene, const glm::mat4& viewProj,
+  void use(const Program& program, const Scene& scene, const glm::mat4& viewProj,
            const glm::vec3& viewPosition, const CaptureState& pass, bool outputDirections);
   // Binds object `index`'s environment (its probe's layers, or the sky) for the environment
-  // program and sets the search's uniforms.
+  // program in use and sets the search's uniforms.
   void bindEnvironment(const Scene& scene, const FramePlan& plan, int index);
   // Whether object `index`'s lookup searches its probe's depths (its probe is captured, is no
   // skybox, and not every surface it sees is far enough for the plain lookup).
   bool searchesFor(const Scene& scene, const FramePlan& plan, int index) const;
-  // The environment program in use: the configured search's, or the one without a search.
-  const EnvironmentProgram& activeEnvironment() const;
-  static Result<EnvironmentProgram> buildEnvironment(int search, bool mediump,
-                                                     const std::string& precision,
-                                                     bool glassExit = false);
-  // Makes the interior maps of the scene's glass meshes that are not spheres, and the programs
-  // that use them, the first time they are needed (glassSurfaces 2, a search that is no exact
-  // trace). A failure leaves those objects at one surface.
+  // Makes the interior maps of the scene's glass meshes that are not spheres the first time they
+  // are needed (glassSurfaces 2).
   void prepareGlassExits(const Scene& scene, double seconds);
   // The interior map `object`, placed by `model`, leaves through (nullptr: a sphere, no glass, one
   // surface, or no map).
   const GlassInteriorMap* glassExitOf(const SceneObject& object, const glm::mat4& model) const;
   const MeshBuffer* mesh(const std::string& name, int lod) const;
 
-  PhongProgram phong_;
-  EnvironmentProgram environment_;
-  EnvironmentProgram plainEnvironment_;  // SEARCH 0, only when the configured search searches
-  // The same two with GLASS_EXIT 1, built with the first glass mesh's interior map.
-  EnvironmentProgram glassEnvironment_;
-  EnvironmentProgram plainGlassEnvironment_;
+  std::map<ProgramKey, Program> programs_;
+  std::set<ProgramKey> failedPrograms_;
+  std::string programError_;
+  const Program* current_ = nullptr;
   GlassInteriorMaps glassInteriors_;
-  bool glassExitFailed_ = false;  // the GLASS_EXIT programs did not build: one surface
-  CubeTexturedProgram cubeTextured_;
   PyramidProgramSet pyramid_;
   std::unique_ptr<SkyboxPass> skybox_;
   // Bound to the depth units whenever nothing else is, so no program ever samples a texture the
@@ -163,7 +158,6 @@ class SceneRenderer {
   std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
   AccuracySettings accuracy_;
   std::map<std::string, std::vector<MeshBuffer>> meshes_;  // levels of detail by mesh name
-  ProgramKind current_ = ProgramKind::Phong;
   const ExactTracer* exact_ = nullptr;
 };
 

@@ -1,7 +1,7 @@
-// SceneRenderer's reflector half: the environment programs (one per search, built when the
-// renderer is made; the glass-exit variants when a non-sphere glass mesh first needs them), which
-// one is active, and what a reflector's draw binds: its probe's colour cubes and depth pyramid,
-// and the search's per-draw uniforms. The captures and draws are in scene_renderer.cpp.
+// SceneRenderer's programs and its reflectors: the shader variants by key (program_key.h), built
+// the first time a draw needs one; which variant draws an object in a pass; and what a
+// reflector's draw binds: its probe's colour cubes and depth pyramid, and the search's per-draw
+// uniforms. The captures and draws are in scene_renderer.cpp.
 #include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -32,104 +32,121 @@ void setFaceFrames(const ShaderProgram& p) {
 using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
-// The reflectors' program with the search SEARCH (environment.frag) and its uniforms.
-Result<SceneRenderer::EnvironmentProgram> SceneRenderer::buildEnvironment(
-    int search, bool mediump, const std::string& precision, bool glassExit) {
-  const std::string lookup = precision + "#define SEARCH " + std::to_string(search) +
-                             "\n#define DISTANCE_ITERATIONS 2\n#define GLASS_EXIT " +
-                             (glassExit ? "1" : "0") + "\n";
+Result<SceneRenderer::Program> SceneRenderer::buildProgram(const ProgramKey& key, bool mediump) {
+  const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
   Result<ShaderProgram> built =
-      ShaderProgram::build("mesh.vert", "environment.frag", mediump, lookup);
-  if (!built) return Result<EnvironmentProgram>::failure(built.error());
-  const ShaderProgram& e = built.value();
-  EnvironmentProgram env{ShaderProgram{},
-                         CaptureUniforms::of(e),
-                         e.uniform("u_viewProjection"),
-                         e.uniform("u_model"),
-                         e.uniform("u_normalMatrix"),
-                         e.uniform("u_colour"),
-                         e.uniform("u_viewPosition"),
-                         e.uniform("u_reflectionWeight"),
-                         e.uniform("u_baseWeight"),
-                         e.uniform("u_refracts"),
-                         e.uniform("u_eta"),
-                         e.uniform("u_fresnelF0"),
-                         e.uniform("u_fresnel"),
-                         e.optionalUniform("u_twoSurfaces"),
-                         e.optionalUniform("u_glassSphere"),
-                         e.optionalUniform("u_probeCentre"),
-                         e.optionalUniform("u_distanceUnit"),
-                         e.optionalUniform("u_search"),
-                         e.uniform("u_outputDirection"),
-                         e.optionalUniform("u_layers"),
-                         e.optionalUniform("u_faceSize"),
-                         e.optionalUniform("u_topLevel"),
-                         e.optionalUniform("u_pyramidTile"),
-                         GlassExitUniforms{}};
-  glUseProgram(e.id());
-  glUniform1i(e.optionalUniform("u_environment"), kEnvironmentUnit);
-  glUniform1i(e.optionalUniform("u_environment2"), kEnvironment2Unit);
-  glUniform1i(e.optionalUniform("u_pyramid"), kPyramidUnit);
-  if (search == static_cast<int>(Search::Hierarchical)) setFaceFrames(e);
-  if (glassExit) env.glassExit = GlassExitUniforms::of(e);
-  env.program = built.take();
-  return env;
+      ShaderProgram::build("mesh.vert", key.fragmentFile(), mediump, precision + key.defines());
+  if (!built) return Result<Program>::failure(built.error());
+  const ShaderProgram& p = built.value();
+  Program out;
+  out.key = key;
+  out.capture = CaptureUniforms::of(p);
+  out.viewProjection = p.uniform("u_viewProjection");
+  out.model = p.uniform("u_model");
+  out.normalMatrix = p.optionalUniform("u_normalMatrix");
+  out.viewPosition = p.optionalUniform("u_viewPosition");
+  glUseProgram(p.id());
+  switch (key.look) {
+    case Look::Phong:
+      out.phong = PhongUniforms{p.uniform("u_colour"),   p.uniform("u_lightPosition"),
+                                p.uniform("u_ambient"),  p.uniform("u_diffuse"),
+                                p.uniform("u_specular"), p.uniform("u_shininess")};
+      break;
+    case Look::Environment: {
+      const auto at = [&p](const char* name) { return p.optionalUniform(name); };
+      out.environment =
+          EnvironmentUniforms{at("u_colour"),       at("u_reflectionWeight"), at("u_baseWeight"),
+                              at("u_eta"),          at("u_fresnelF0"),        at("u_fresnel"),
+                              at("u_twoSurfaces"),  at("u_glassSphere"),      at("u_probeCentre"),
+                              at("u_distanceUnit"), at("u_outputDirection"),  at("u_layers"),
+                              at("u_faceSize"),     at("u_topLevel"),         at("u_pyramidTile")};
+      glUniform1i(at("u_environment"), kEnvironmentUnit);
+      glUniform1i(at("u_environment2"), kEnvironment2Unit);
+      glUniform1i(at("u_pyramid"), kPyramidUnit);
+      if (key.search == Search::Hierarchical) setFaceFrames(p);
+      if (key.glassExit) out.glassExit = GlassExitUniforms::of(p);
+      break;
+    }
+    case Look::CubeTextured:
+      glUniform1i(p.uniform("u_environment"), kEnvironmentUnit);
+      break;
+  }
+  glUseProgram(0);
+  out.program = built.take();
+  return out;
+}
+
+const SceneRenderer::Program* SceneRenderer::program(const ProgramKey& key) {
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return &it->second;
+  if (failedPrograms_.count(key)) return nullptr;
+  Result<Program> built = buildProgram(key, accuracy_.mediump);
+  if (!built) {
+    failedPrograms_.insert(key);
+    programError_ = key.describe() + ": " + built.error();
+    std::fprintf(stderr, "%s\n", programError_.c_str());
+    return nullptr;
+  }
+  return &programs_.emplace(key, built.take()).first->second;
+}
+
+ProgramKey SceneRenderer::keyFor(const Scene& scene, const FramePlan& plan, const DrawItem& item,
+                                 const CaptureState& pass, double seconds) const {
+  const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
+  ProgramKey key;
+  key.capture = pass.layer != 0;
+  if (object.material == Material::Phong) return key;
+  if (object.material == Material::CubeTextured) {
+    key.look = Look::CubeTextured;
+    return key;
+  }
+  key.look = Look::Environment;
+  key.refracts = object.material == Material::Glass;
+  if (plan.traces(item.object)) {
+    key.search = Search::Exact;
+    // Rays that can meet another mirror, glass or cube-textured object (or glass's own far
+    // side) need the general tracer; the rest meet Phong surfaces or the sky.
+    key.traceGeneral = key.refracts;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+      key.traceGeneral |=
+          i != static_cast<size_t>(item.object) && scene.objects[i].material != Material::Phong;
+    }
+    return key;
+  }
+  // A mirror seen in another probe's capture looks its own cube up plainly: that view is a
+  // second bounce, seen small and from the previous frame, and a search in every texel of it cost
+  // more than the rest of the frame (two-mirrors: 8.2x -> 3.7x the course's frame, -0.2 dB, +1
+  // pixel off by more than 32 levels a frame; tools/scene_accuracy.sh).
+  const bool searches = pass.layer == 0 && searchesFor(scene, plan, item.object);
+  key.search = searches ? capturedSearch(accuracy_.search) : Search::Plain;
+  key.glassExit =
+      key.refracts && glassExitOf(object, scene.modelMatrix(object, seconds)) != nullptr;
+  return key;
 }
 
 bool SceneRenderer::searchesFor(const Scene& scene, const FramePlan& plan, int index) const {
-  if (accuracy_.search == Search::Plain) return false;
+  const Search search = capturedSearch(accuracy_.search);
+  if (search == Search::Plain || search == Search::Exact) return false;
   if (scene.objects[static_cast<size_t>(index)].environment == Environment::Skybox) return false;
   const ProbePlan* probe = plan.probeOf(index);
   return probe && !probe->plainLookupSuffices && probes_.count(probe->reflector) > 0;
 }
 
-const SceneRenderer::EnvironmentProgram& SceneRenderer::activeEnvironment() const {
-  switch (current_) {
-    case ProgramKind::PlainEnvironment:
-      return plainEnvironment_;
-    case ProgramKind::GlassEnvironment:
-      return glassEnvironment_;
-    case ProgramKind::PlainGlassEnvironment:
-      return plainGlassEnvironment_;
-    default:
-      return environment_;
-  }
-}
-
 void SceneRenderer::prepareGlassExits(const Scene& scene, double seconds) {
-  if (accuracy_.glassSurfaces != 2 || accuracy_.search == Search::Exact || glassExitFailed_) {
-    return;
-  }
-  for (size_t i = 0; i < scene.objects.size(); ++i) {
-    const SceneObject& object = scene.objects[i];
+  if (accuracy_.glassSurfaces != 2 || accuracy_.search == Search::Exact) return;
+  for (const SceneObject& object : scene.objects) {
     if (object.material != Material::Glass) continue;
     const MeshBuffer* full = mesh(object.mesh, 0);
     if (!full || sphereRadiusIn(full, scene.modelMatrix(object, seconds)) > 0.0f) {
       continue;  // no mesh yet, or a sphere: its exit has a closed form
     }
-    if (!glassInteriors_.mapFor(object.mesh, *full)) continue;
-    if (glassEnvironment_.program.id()) continue;
-    const bool mediump = accuracy_.mediump;
-    const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
-    Result<EnvironmentProgram> built =
-        buildEnvironment(static_cast<int>(accuracy_.search), mediump, precision, true);
-    const bool searches = plainEnvironment_.program.id() != 0;
-    Result<EnvironmentProgram> plain =
-        searches ? buildEnvironment(static_cast<int>(Search::Plain), mediump, precision, true)
-                 : Result<EnvironmentProgram>(EnvironmentProgram{});
-    if (!built || !plain) {
-      std::fprintf(stderr, "glass exit: %s\n", (built ? plain : built).error().c_str());
-      glassExitFailed_ = true;  // do not try again every frame
-      return;
-    }
-    glassEnvironment_ = built.take();
-    plainGlassEnvironment_ = plain.take();
+    glassInteriors_.mapFor(object.mesh, *full);
   }
 }
 
 const GlassInteriorMap* SceneRenderer::glassExitOf(const SceneObject& object,
                                                    const glm::mat4& model) const {
-  if (!glassEnvironment_.program.id() || object.material != Material::Glass) return nullptr;
+  if (accuracy_.glassSurfaces != 2 || object.material != Material::Glass) return nullptr;
   const MeshBuffer* full = mesh(object.mesh, 0);
   if (!full || sphereRadiusIn(full, model) > 0.0f) return nullptr;
   return glassInteriors_.find(object.mesh);
@@ -141,10 +158,10 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   GLuint pyramid = emptyPyramid_.id();
   int layers = 1, faceSize = 1, topLevel = 0;
   glm::vec3 centre(0.0f);
+  if (const ProbeLayout* layout = plan.layoutOf(index)) centre = layout->centre;
   if (object.environment == Environment::Skybox) {
     colour = skybox_ ? skybox_->texture() : 0;
   } else if (const ProbePlan* probe = plan.probeOf(index)) {
-    centre = probe->centre;
     auto it = probes_.find(probe->reflector);
     if (it != probes_.end()) {
       const CubeCaptureTarget& t = it->second;
@@ -158,18 +175,14 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
       topLevel = t.topLevel();
     }
   }
-  if (current_ == ProgramKind::CubeTextured) {
-    bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, colour);
-    return;
-  }
   bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, colour);
+  if (current_->key.look == Look::CubeTextured) return;
   bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, colour2 ? colour2 : colour);
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
   glActiveTexture(GL_TEXTURE0);
-  const EnvironmentProgram& env = activeEnvironment();
+  const EnvironmentUniforms& env = current_->environment;
   glUniform3fv(env.probeCentre, 1, glm::value_ptr(centre));
   glUniform1f(env.distanceUnit, scene.capture.near);
-  glUniform1i(env.search, searchesFor(scene, plan, index) ? 1 : 0);
   glUniform1i(env.layers, layers);
   glUniform1i(env.faceSize, faceSize);
   glUniform1i(env.topLevel, topLevel);

@@ -17,14 +17,27 @@ constexpr float kCube[] = {
 
 }  // namespace
 
+Result<SkyboxPass::Program> SkyboxPass::build(bool capture) {
+  Result<ShaderProgram> built =
+      ShaderProgram::build("skybox.vert", "skybox.frag", false,
+                           capture ? "#define CAPTURE_OUTPUT 1\n" : "#define CAPTURE_OUTPUT 0\n");
+  if (!built) return Result<Program>::failure(built.error());
+  Program p;
+  p.viewRotationProjection = built.value().uniform("u_viewRotationProjection");
+  p.skybox = built.value().uniform("u_skybox");
+  p.capture = CaptureUniforms::of(built.value());
+  p.program = built.take();
+  return p;
+}
+
 Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
-  Result<ShaderProgram> program = ShaderProgram::build("skybox.vert", "skybox.frag");
-  if (!program) return Result<SkyboxPass>::failure(program.error());
+  Result<Program> main = build(false);
+  if (!main) return Result<SkyboxPass>::failure(main.error());
+  Result<Program> capture = build(true);
+  if (!capture) return Result<SkyboxPass>::failure(capture.error());
   SkyboxPass pass;
-  pass.viewRotationProjection_ = program.value().uniform("u_viewRotationProjection");
-  pass.skybox_ = program.value().uniform("u_skybox");
-  pass.capture_ = CaptureUniforms::of(program.value());
-  pass.program_ = program.take();
+  pass.main_ = main.take();
+  pass.capture_ = capture.take();
 
   pass.texture_ = TextureHandle(genTexture());
   glBindTexture(GL_TEXTURE_CUBE_MAP, pass.texture_.id());
@@ -58,10 +71,11 @@ void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view,
   const glm::mat4 rotationOnly(glm::mat3{view});
   const glm::mat4 viewRotationProjection = projection * rotationOnly;
   glDepthFunc(GL_LEQUAL);
-  glUseProgram(program_.id());
-  glUniformMatrix4fv(viewRotationProjection_, 1, GL_FALSE, glm::value_ptr(viewRotationProjection));
-  glUniform1i(skybox_, kEnvironmentUnit);
-  capture_.set(pass);
+  const Program& p = pass.layer == 0 ? main_ : capture_;
+  glUseProgram(p.program.id());
+  glUniformMatrix4fv(p.viewRotationProjection, 1, GL_FALSE, glm::value_ptr(viewRotationProjection));
+  glUniform1i(p.skybox, kEnvironmentUnit);
+  p.capture.set(pass);
   glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
   glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
   glBindVertexArray(vao_.id());
@@ -70,7 +84,8 @@ void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view,
 }
 
 void SkyboxPass::abandon() {
-  program_.abandon();
+  main_.program.abandon();
+  capture_.program.abandon();
   texture_.abandon();
   vao_.abandon();
   vertices_.abandon();

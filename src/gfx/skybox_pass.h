@@ -23,10 +23,16 @@ class SkyboxPass {
   void abandon();
 
  private:
-  ShaderProgram program_;
-  GLint viewRotationProjection_ = -1;
-  GLint skybox_ = -1;
-  CaptureUniforms capture_;
+  // Two variants (capture_output.glsl): the main pass writes the colour alone, a capture its
+  // distance and depth codes as well.
+  struct Program {
+    ShaderProgram program;
+    GLint viewRotationProjection = -1;
+    GLint skybox = -1;
+    CaptureUniforms capture;
+  };
+  static Result<Program> build(bool capture);
+  Program main_, capture_;
   TextureHandle texture_;
   VertexArrayHandle vao_;
   BufferHandle vertices_;

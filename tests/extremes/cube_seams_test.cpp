@@ -120,7 +120,7 @@ TEST(CubeSeams, EdgeAndCornerLookupsBlendOnlyTheFacesThatMeetThere) {
     scene.objects.push_back(
         extremes::phongObject("quad.obj", wallPlacement(face), kWallColours[face]));
   }
-  auto demo = testing::makeDemo(scene);
+  auto demo = testing::makeCapturingDemo(scene);
   ASSERT_TRUE(renderFrameAt(*demo, 0.0, 32, 32));  // runs the capture
 
   // Face centres first: each is exactly its wall.
@@ -160,7 +160,7 @@ TEST(CubeSeams, UniformEnvironmentHasNoSeams) {
   Scene scene;
   scene.clearColour = glm::vec3(0.2f, 0.4f, 0.6f);  // exactly (51, 102, 153)
   scene.objects.push_back(mirrorAtOrigin());
-  auto demo = testing::makeDemo(scene);
+  auto demo = testing::makeCapturingDemo(scene);
   ASSERT_TRUE(renderFrameAt(*demo, 0.0, 32, 32));
   std::vector<glm::vec3> directions;
   for (const Lookup& l : edgeAndCornerLookups()) directions.push_back(l.direction);

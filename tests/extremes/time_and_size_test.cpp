@@ -113,7 +113,7 @@ int textureFaceSize(GLuint cube) {
 
 TEST(SizeExtremes, OneTexelCubeMapRendersAFiniteMirror) {
   Scene scene = makeDynamicReflectionScene();
-  auto demo = testing::makeDemo(scene);
+  auto demo = testing::makeCapturingDemo(scene);
   ASSERT_EQ(demo->setCubeFaceSize(1), "");
   ASSERT_EQ(demo->initGraphics(), "");
   auto image = renderFrameAt(*demo, 0.0, 65, 65);
@@ -144,7 +144,7 @@ TEST(SizeExtremes, CubeSizeOutsideTheLimitsIsClampedAndReported) {
     EXPECT_EQ(unrendered.setCubeFaceSize(Demo::kMaxCubeFaceSize), "");
   }
   for (int requested : {0, -7}) {
-    auto demo = testing::makeDemo(scene);
+    auto demo = testing::makeCapturingDemo(scene);
     EXPECT_NE(demo->setCubeFaceSize(requested), "") << "no message for face size " << requested;
     ASSERT_EQ(demo->initGraphics(), "");
     ASSERT_TRUE(renderFrameAt(*demo, 0.0, 16, 16));
@@ -177,7 +177,7 @@ TEST(SizeExtremes, ClampedCubeTargetKeepsTheFacesItAlreadyCaptured) {
   sliced.facesPerFrame = 2;
   std::map<int, int> facesRight;
   for (int requested : {1, 0}) {
-    auto demo = testing::makeDemo(scene);
+    auto demo = testing::makeCapturingDemo(scene);
     demo->setPlannerSettings(sliced);
     demo->setCubeFaceSize(requested);
     ASSERT_EQ(demo->initGraphics(), "");

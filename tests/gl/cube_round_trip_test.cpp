@@ -63,7 +63,7 @@ TEST(CubeRoundTrip, MarkerInDirectionDIsWhatTheCubeReturnsForD) {
     marker.colour = colours[i];
     scene.objects.push_back(marker);
   }
-  auto demo = testing::makeDemo(scene);
+  auto demo = testing::makeCapturingDemo(scene);
   auto frame = renderFrameAt(*demo, 0.0, 64, 64);  // runs the capture
   ASSERT_TRUE(frame) << frame.error();
 
@@ -78,7 +78,7 @@ TEST(CubeRoundTrip, MarkerInDirectionDIsWhatTheCubeReturnsForD) {
 
 TEST(CubeRoundTrip, TheReflectorNeverAppearsInItsOwnCubeMap) {
   Scene scene = markerScene();  // only the (white) mirror sphere, around the probe centre
-  auto demo = testing::makeDemo(scene);
+  auto demo = testing::makeCapturingDemo(scene);
   ASSERT_TRUE(renderFrameAt(*demo, 0.0, 64, 64));
   std::vector<glm::vec3> lookups;
   for (int i = 0; i < kMaxDirections; ++i) {

@@ -79,7 +79,7 @@ void checkPyramid(const CubeCaptureTarget& probe, int layer, unsigned faces = 0x
 }
 
 void checkScene(Scene scene, int layersExpected) {
-  auto demo = testing::makeDemo(scene);
+  auto demo = testing::makeCapturingDemo(scene);
   auto target = OffscreenTarget::create(64, 64);
   ASSERT_TRUE(target);
   demo->frame(0.0, target.value().framebuffer(), 64, 64, true);
@@ -104,7 +104,7 @@ TEST(DepthPyramid, AFaceSizeThatIsNoPowerOfTwoLeavesThePaddingEmpty) {
 TEST(DepthPyramid, WhereNothingWasDrawnTheCodeIsTheFarPlanesAsTheCSideComputesIt) {
   Scene scene = makeDynamicReflectionScene();
   scene.capture.faceSize = 16;
-  auto demo = testing::makeDemo(scene);
+  auto demo = testing::makeCapturingDemo(scene);
   auto target = OffscreenTarget::create(16, 16);
   ASSERT_TRUE(target);
   demo->frame(0.0, target.value().framebuffer(), 16, 16, true);
@@ -124,7 +124,7 @@ TEST(DepthPyramid, WhereNothingWasDrawnTheCodeIsTheFarPlanesAsTheCSideComputesIt
 TEST(DepthPyramid, OnlyTheFacesRecapturedAreRebuilt) {
   Scene scene = makeDynamicReflectionScene();
   scene.capture.faceSize = 32;
-  auto demo = testing::makeDemo(scene);
+  auto demo = testing::makeCapturingDemo(scene);
   auto target = OffscreenTarget::create(32, 32);
   ASSERT_TRUE(target);
   const glm::uvec2 mark(12345u, 54321u);

@@ -39,6 +39,14 @@ std::unique_ptr<Demo> makeDemo(Scene scene) {
   return demo;
 }
 
+std::unique_ptr<Demo> makeCapturingDemo(Scene scene) {
+  auto demo = makeDemo(std::move(scene));
+  AccuracySettings capturing;
+  capturing.search = Search::Hierarchical;
+  EXPECT_EQ(demo->setAccuracySettings(capturing), "");
+  return demo;
+}
+
 std::string saveOutput(const RgbaImage& image, const std::string& fileName) {
   std::filesystem::create_directories(OUTPUT_DIR);
   const std::string path = std::string(OUTPUT_DIR) + "/" + fileName;

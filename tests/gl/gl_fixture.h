@@ -12,6 +12,9 @@ namespace reflect::testing {
 
 // A Demo of `scene` with the project's models loaded and its GL resources created.
 std::unique_ptr<Demo> makeDemo(Scene scene);
+// The same, its mirrors drawn from a captured probe searched by the hierarchical search (the
+// default, search: planned, traces them where that is the cheaper): for tests of the capture.
+std::unique_ptr<Demo> makeCapturingDemo(Scene scene);
 // Writes `image` to the test output folder (for looking at) and returns the path.
 std::string saveOutput(const RgbaImage& image, const std::string& fileName);
 

@@ -18,6 +18,7 @@ std::unique_ptr<Demo> demoOf(const std::string& nameOrPath, int glassSurfaces = 
   EXPECT_TRUE(scene) << scene.error();
   auto demo = testing::makeDemo(scene ? scene.take() : Scene{});
   AccuracySettings settings;
+  settings.search = Search::Hierarchical;  // the interior map serves the captured probe
   settings.glassSurfaces = glassSurfaces;
   EXPECT_EQ(demo->setAccuracySettings(settings), "");
   return demo;

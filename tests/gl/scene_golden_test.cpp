@@ -28,11 +28,24 @@ TEST(DefaultScene, MatchesGoldenAtTwoTimes) {
 }
 
 TEST(DefaultScene, FrameStatsCountTheWork) {
+  // The default (search: planned) traces the mirror here: no probe, no face is counted.
   auto demo = testing::makeDemo(makeDynamicReflectionScene());
+  ASSERT_TRUE(renderFrameAt(*demo, 1.0, 64, 64));
+  const FrameStats& s = demo->lastStats();
+  EXPECT_EQ(s.tracedReflectors, 1);
+  EXPECT_EQ(s.facesCaptured, 0);
+  EXPECT_EQ(s.probes, 0);
+  EXPECT_EQ(s.captureDrawCalls, 0);
+  EXPECT_EQ(s.mainDrawCalls, 4);
+}
+
+TEST(DefaultScene, CapturedFrameStatsCountTheWork) {
+  auto demo = testing::makeCapturingDemo(makeDynamicReflectionScene());
   ASSERT_TRUE(renderFrameAt(*demo, 1.0, 64, 64));
   const FrameStats& s = demo->lastStats();
   EXPECT_EQ(s.facesCaptured, 6);  // the first frame captures every face
   EXPECT_EQ(s.probes, 1);
+  EXPECT_EQ(s.tracedReflectors, 0);
   EXPECT_EQ(s.mainDrawCalls, 4);
   EXPECT_EQ(s.cubeFaceSize, 256);
   EXPECT_GT(s.triangles(), 0u);

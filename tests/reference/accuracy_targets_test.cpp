@@ -73,8 +73,10 @@ AccuracySettings withSearch(Search search) {
   return s;
 }
 
+// Issue 11's targets are the cube-map search's: the hierarchical search, pinned (the default,
+// search: planned, traces the default scene's mirror where that is the cheaper).
 TEST(AccuracyTargets, DefaultSceneHoldsItsWorstTimeAndMeanFloors) {
-  const std::vector<TimeError> shipped = measure("ex12-2", AccuracySettings{});
+  const std::vector<TimeError> shipped = measure("ex12-2", withSearch(Search::Hierarchical));
   ASSERT_EQ(shipped.size(), kHeldOutTimes.size());
   for (size_t i = 0; i < shipped.size(); ++i) {
     EXPECT_GE(shipped[i].psnrDb, 36.0) << "t=" << kHeldOutTimes[i];
@@ -85,7 +87,7 @@ TEST(AccuracyTargets, DefaultSceneHoldsItsWorstTimeAndMeanFloors) {
 }
 
 TEST(AccuracyTargets, DefaultSceneHasFewVisiblyWrongPixels) {
-  const std::vector<TimeError> shipped = measure("ex12-2", AccuracySettings{});
+  const std::vector<TimeError> shipped = measure("ex12-2", withSearch(Search::Hierarchical));
   const std::vector<TimeError> linear = measure("ex12-2", withSearch(Search::Linear));
   const std::vector<TimeError> course = measure("ex12-2", courseSettings());
   ASSERT_EQ(shipped.size(), kHeldOutTimes.size());
@@ -99,7 +101,8 @@ TEST(AccuracyTargets, DefaultSceneHasFewVisiblyWrongPixels) {
 }
 
 TEST(AccuracyTargets, GlassThroughTwoSurfacesBeatsTheCoursesRefraction) {
-  const std::vector<TimeError> twoSurfaces = measure("glass-sphere", AccuracySettings{});
+  const std::vector<TimeError> twoSurfaces =
+      measure("glass-sphere", withSearch(Search::Hierarchical));
   const std::vector<TimeError> course = measure("glass-sphere", courseSettings());
   ASSERT_EQ(twoSurfaces.size(), kHeldOutTimes.size());
   ASSERT_EQ(course.size(), kHeldOutTimes.size());

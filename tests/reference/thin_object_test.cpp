@@ -177,7 +177,9 @@ struct ThinCounts {
 ThinCounts measureThin(const std::string& name, const Scene& scene, const Box& thinBox) {
   ThinCounts counts;
   auto demo = testing::makeDemo(scene);
-  EXPECT_EQ(demo->setAccuracySettings(AccuracySettings{}), "");  // the default: hierarchical
+  AccuracySettings hierarchical;  // the cube-map search under test (planned may trace instead)
+  hierarchical.search = Search::Hierarchical;
+  EXPECT_EQ(demo->setAccuracySettings(hierarchical), "");
   Result<RgbaImage> raster = renderFrameAt(*demo, 0.0, kSize, kSize);
   EXPECT_TRUE(raster) << raster.error();
   Result<ReferenceFrame> reference = referenceFor(*demo, 0.0, kSize, kSize);

@@ -271,7 +271,7 @@ TEST(CliOptions, SettingsAreCheckedAsThePageChecksThem) {
             "--view-lod: much is not a number from 0 to 1000");
   EXPECT_EQ(errorOf({"render", "--layers", "3"}), "--layers: 3 is not in 1..2");
   EXPECT_EQ(errorOf({"render", "--search", "binary"}),
-            "--search: \"binary\" is not one of plain, linear, hierarchical, exact");
+            "--search: \"binary\" is not one of plain, linear, hierarchical, exact, planned");
   EXPECT_EQ(errorOf({"render", "--depth-bits", "20"}), "--depth-bits: 20 is not one of 16, 24");
   EXPECT_EQ(errorOf({"render", "--mipmaps=maybe"}), "--mipmaps: maybe is not true or false");
   // The page's message for the same value, for comparison.

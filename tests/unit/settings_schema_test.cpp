@@ -84,7 +84,7 @@ TEST(SettingsSchema, TheTableForThePageListsEveryNameOnceWithItsDefault) {
   EXPECT_EQ(schema["material"][0]["choices"],
             json::parse(R"(["phong", "mirror", "glass", "cube-textured"])"));
   EXPECT_EQ(schema["accuracy"][1]["name"], "search");
-  EXPECT_EQ(schema["accuracy"][1]["default"], "hierarchical");
+  EXPECT_EQ(schema["accuracy"][1]["default"], "planned");
   EXPECT_EQ(schema["accuracy"][2]["max"], 2);
 }
 

@@ -1,0 +1,58 @@
+#include "gfx/program_key.h"
+
+#include <cctype>
+
+namespace reflect {
+namespace {
+
+std::string define(const std::string& name, int value) {
+  return "#define " + name + " " + std::to_string(value) + "\n";
+}
+
+// "SEARCH_HIERARCHICAL"
+std::string searchMacro(Search search) {
+  std::string name = "SEARCH_";
+  for (const char* c = searchName(search); *c; ++c) {
+    name += *c == '-' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+  }
+  return name;
+}
+
+}  // namespace
+
+const char* ProgramKey::fragmentFile() const {
+  switch (look) {
+    case Look::Phong:
+      return "phong.frag";
+    case Look::Environment:
+      return "environment.frag";
+    case Look::CubeTextured:
+      return "cube_textured.frag";
+  }
+  return "phong.frag";
+}
+
+std::string ProgramKey::defines() const {
+  std::string out = define("CAPTURE_OUTPUT", capture ? 1 : 0);
+  if (look != Look::Environment) return out;
+  for (Search s : kSearches) out += define(searchMacro(s), static_cast<int>(s));
+  out += "#define SEARCH " + searchMacro(search) + "\n";
+  out += define("DISTANCE_ITERATIONS", 2);
+  out += define("REFRACTS", refracts ? 1 : 0);
+  out += define("GLASS_EXIT", glassExit ? 1 : 0);
+  out += define("EXACT_GENERAL", traceGeneral ? 1 : 0);
+  return out;
+}
+
+std::string ProgramKey::describe() const {
+  std::string s = std::string(fragmentFile()) + " (" + (capture ? "capture" : "main");
+  if (look == Look::Environment) {
+    s += std::string(", ") + searchName(search);
+    if (refracts) s += ", refracts";
+    if (glassExit) s += ", glass exit";
+    if (traceGeneral) s += ", general";
+  }
+  return s + ")";
+}
+
+}  // namespace reflect
