@@ -142,6 +142,8 @@ class Demo {
   AnimationClock& clock() { return clock_; }
   const Scene& scene() const { return scene_; }
   const FrameStats& lastStats() const { return stats_; }
+  // What the planner weighed for each probe in the last frame (search: planned).
+  const std::vector<MethodChoice>& methodChoices() const { return planner_.choices(); }
   const PlannerSettings& plannerSettings() const { return plannerSettings_; }
   const AccuracySettings& accuracySettings() const { return accuracy_; }
   // Rebuilds the GL resources when they exist (programs and capture targets depend on it).

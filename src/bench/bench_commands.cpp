@@ -32,6 +32,7 @@ int benchFramesDefault(BenchMode mode) {
     case BenchMode::Sweep:
       return SweepOptions{}.frames;
     case BenchMode::Budget:
+    case BenchMode::Costs:
       return 30;
     case BenchMode::LodSweep:
       return LodSweepOptions{}.frames;
@@ -53,6 +54,8 @@ int benchWarmupDefault(BenchMode mode) {
       return 0;
     case BenchMode::Budget:
       return 5;
+    case BenchMode::Costs:
+      return 3;
     case BenchMode::LodSweep:
       return LodSweepOptions{}.warmup;
   }

@@ -41,6 +41,7 @@ enum class BenchMode {
   SinglePolicy,
   Growth,
   Sweep,
+  Costs,
   LodSweep,
   ViewLodSweep,
   Budget

@@ -447,6 +447,13 @@ void defineBench(Command& c, CliOptions& o) {
            o.viewLodSweep = on == "true";
            return std::string();
          });
+  c.flag("--costs",
+         "mode: what the planner's cost model is fitted to: frames drawn as Phong, traced, "
+         "captured and searched, and searched alone, with the planner's counts, as ms a unit",
+         kOptions, [&o](const std::string& on) {
+           o.costs = on == "true";
+           return std::string();
+         });
   c.flag("--sweep",
          "mode: every accuracy setting (capture point, distance-corrected lookup, face size, "
          "depth bits, filtering, RGBA16F, precision): frame ms and error against the ray-traced "
@@ -543,6 +550,7 @@ bool isCommand(const std::string& name) {
 BenchMode CliOptions::benchMode() const {
   if (budgetSet) return BenchMode::Budget;
   if (sweep) return BenchMode::Sweep;
+  if (costs) return BenchMode::Costs;
   if (lodSweep) return BenchMode::LodSweep;
   if (viewLodSweep) return BenchMode::ViewLodSweep;
   if (growth) return BenchMode::Growth;
@@ -621,10 +629,10 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
         "bench: --budget is a mode of its own; give it without --sweep or --growth");
   }
   if (command == "bench") {
-    if (int(o.growth) + int(o.sweep) + int(o.lodSweep) + int(o.viewLodSweep) > 1) {
+    if (int(o.growth) + int(o.sweep) + int(o.lodSweep) + int(o.viewLodSweep) + int(o.costs) > 1) {
       return Out::failure(
-          "bench: --growth, --sweep, --lod-sweep and --view-lod-sweep are separate modes; give "
-          "one of them");
+          "bench: --growth, --sweep, --costs, --lod-sweep and --view-lod-sweep are separate "
+          "modes; give one of them");
     }
     for (const char* output : {"--csv", "--svg"}) {
       if (definition->given(output) && !o.sweep) {

@@ -43,6 +43,7 @@ struct CliOptions {
   int accuracyFrames = 60;        // bench: frames compared with every-frame
   bool growth = false;            // bench: frame time against reflectors and triangles
   bool sweep = false;             // bench: accuracy settings against the ray-traced reference
+  bool costs = false;             // bench: the planner's cost model's units, measured
   bool lodSweep = false;          // bench: capture LOD values against full detail
   bool viewLodSweep = false;      // bench: view LOD values against the full-detail view
   std::vector<double> times;      // the sweeps: the scene times measured (empty: their own)

@@ -11,6 +11,7 @@
 #include "bench/accuracy.h"
 #include "bench/bench_commands.h"
 #include "bench/budget_bench.h"
+#include "bench/cost_calibration.h"
 #include "bench/process_memory.h"
 #include "core/image.h"
 #include "gfx/offscreen_target.h"
@@ -163,6 +164,8 @@ std::string runBenchCommand(const CliOptions& o) {
       return runSweepCommand(options, factory);
     case BenchMode::Budget:
       return runBudgetCommand(options, factory);
+    case BenchMode::Costs:
+      return runCostCalibration(options, factory);
     case BenchMode::LodSweep:
       return runLodSweepCommand(options, factory);
     case BenchMode::ViewLodSweep:
