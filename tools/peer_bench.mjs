@@ -184,6 +184,13 @@ async function measure(browser, base, spec, o) {
   const { context, page, api, problems } = await openPage(browser, base, spec, o);
   try {
     const firstDrawMs = await page.evaluate(() => window.__firstDrawMs);
+    // The project page's load in parts (performance marks of web/wasm_bridge.js, scene_loader.js).
+    const parts = spec.peer ? null : await page.evaluate(() => {
+      const at = (name) => performance.getEntriesByName(name, 'mark')[0];
+      const committed = at('reflect:scene-committed');
+      return { wasm: at('reflect:wasm-ready')?.startTime, models: at('reflect:models-in')?.startTime,
+               committed: committed?.startTime, bvhMs: committed?.detail?.bvhMs };
+    });
     const frames = await page.evaluate(({ name, warmup, count }) => {
       const api = window[name];
       for (let i = 0; i < warmup; ++i) api.frame(1 / 60);
@@ -203,7 +210,7 @@ async function measure(browser, base, spec, o) {
       const d = window.demo;
       return `${d.accuracy().describe}; policy ${d.planner().policy}, capture LOD ${d.planner().captureLod}`;
     });
-    return { firstDrawMs, frame: summary(frames), canvas, settings, problems };
+    return { firstDrawMs, parts, frame: summary(frames), canvas, settings, problems };
   } finally {
     await context.close();
   }
@@ -243,6 +250,11 @@ async function bench(browser, base, pages, o) {
       console.log(`round ${round} ${spec.label.padEnd(26)} frame ${fmt(r.frame.median, 7)} ms ` +
                   `(p10 ${fmt(r.frame.p10, 0)}, p90 ${fmt(r.frame.p90, 0)}), first frame ${fmt(r.firstDrawMs, 6)} ms, ` +
                   `canvas ${r.canvas}` + (round === 1 && r.settings ? `; ${r.settings}` : ''));
+      if (r.parts?.committed !== undefined) {
+        const p = r.parts;
+        console.log(`  load: wasm ready ${fmt(p.wasm, 0)} ms, models in ${fmt(p.models, 0)}, scene made ` +
+                    `${fmt(p.committed, 0)} (of which the trees ${fmt(p.bvhMs, 0)}), first draw ${fmt(r.firstDrawMs, 0)}`);
+      }
       for (const p of r.problems) console.log(`  note: ${p}`);
     }
   }

@@ -194,7 +194,10 @@ export async function loadScene(bridge, url, {
   }
 
   beforeCommit?.();
+  // Load to first frame in parts (tools/peer_bench.mjs --load reads them): models in, scene made.
+  performance.mark('reflect:models-in');
   const result = bridge.commitScene({ cubeSize });
+  performance.mark('reflect:scene-committed', { detail: { bvhMs: result.bvhMs ?? 0 } });
   if (result.error) throw new Error(result.error);
   if (result.notice) showMessage(result.notice, 'info');
   return files.title;

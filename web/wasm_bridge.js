@@ -9,6 +9,7 @@
 export async function createBridge(canvas) {
   // index.html starts the module early, for this canvas; made here otherwise.
   const Module = await (window.reflectModule || createReflectModule({ canvas }));
+  performance.mark('reflect:wasm-ready');
   const text = ['string'];
   const withData = ['string', 'number', 'number'];
   const exports = {

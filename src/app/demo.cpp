@@ -70,7 +70,7 @@ std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   // The exact mode's tree: built now only while that mode (or the error view) is set up, else
   // when it is (setUpExact), so a load that never traces pays nothing.
   bvhs_.erase(name);
-  if (exactTracer_) exactTracer_->setMesh(name, bvhFor(name, *entry.base));
+  if (exactTracer_) exactTracer_->setMesh(name, bvhFor(name, entry.base));
   auto it = meshes_.find(name);
   if (it != meshes_.end()) {
     if (it->second.pending.valid()) abandoned_.push_back(std::move(it->second.pending));
@@ -181,10 +181,13 @@ void Demo::uploadLevels(const std::string& name, const MeshEntry& entry) {
   }
 }
 
-std::shared_ptr<const MeshBvh> Demo::bvhFor(const std::string& name, const MeshData& mesh) {
+std::shared_ptr<const MeshBvh> Demo::bvhFor(const std::string& name,
+                                            std::shared_ptr<const MeshData> mesh) {
   auto it = bvhs_.find(name);
   if (it != bvhs_.end()) return it->second;
-  auto bvh = std::make_shared<const MeshBvh>(buildMeshBvh(mesh));
+  const auto start = std::chrono::steady_clock::now();
+  auto bvh = std::make_shared<const MeshBvh>(buildMeshBvh(std::move(mesh)));
+  bvhBuildMs_ += millisecondsSince(start);
   bvhs_[name] = bvh;
   return bvh;
 }
@@ -410,8 +413,7 @@ std::string Demo::setUpExact() {
     Result<ExactTracer> tracer = ExactTracer::create();
     if (!tracer) return tracer.error();
     exactTracer_ = std::make_unique<ExactTracer>(tracer.take());
-    for (const auto& [name, entry] : meshes_)
-      exactTracer_->setMesh(name, bvhFor(name, *entry.base));
+    for (const auto& [name, entry] : meshes_) exactTracer_->setMesh(name, bvhFor(name, entry.base));
     std::string error = exactTracer_->setSkybox(skyboxFaces());
     if (!error.empty()) return error;
   }

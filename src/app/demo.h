@@ -142,6 +142,8 @@ class Demo {
   AnimationClock& clock() { return clock_; }
   const Scene& scene() const { return scene_; }
   const FrameStats& lastStats() const { return stats_; }
+  // Time spent building the exact mode's trees so far (load-time accounting).
+  double bvhBuildMs() const { return bvhBuildMs_; }
   // What the planner weighed for each probe in the last frame (search: planned).
   const std::vector<MethodChoice>& methodChoices() const { return planner_.choices(); }
   const PlannerSettings& plannerSettings() const { return plannerSettings_; }
@@ -198,7 +200,8 @@ class Demo {
   MeshEntry* entryAt(const std::string& name, uint32_t revision, std::string* problem);
   // Uploads every level of `name` to the renderer (level 0 first: it drops the old levels).
   // Mesh `name`'s tree for the exact mode, built from `mesh` on first need.
-  std::shared_ptr<const MeshBvh> bvhFor(const std::string& name, const MeshData& mesh);
+  std::shared_ptr<const MeshBvh> bvhFor(const std::string& name,
+                                        std::shared_ptr<const MeshData> mesh);
   void uploadLevels(const std::string& name, const MeshEntry& entry);
   std::vector<PlannedObject> plannedObjects(double seconds) const;
   // Everything besides the objects that the captures depend on, as values.
@@ -245,6 +248,7 @@ class Demo {
   std::unique_ptr<ErrorView> errorView_;
   FramePlanner exactPlanner_;
   bool showError_ = false;
+  double bvhBuildMs_ = 0.0;
 };
 
 }  // namespace reflect

@@ -78,22 +78,23 @@ std::string runCostCalibration(const BenchCommandOptions& o, const BenchDemoFact
   for (int frame = 0; frame < warmup + frames; ++frame) {
     for (size_t i = 0; i < kSettings; ++i) {
       const double dt = settings[i].animated || frame == 0 ? 1.0 / 60.0 : 0.0;
-      const FrameStats& s =
-          demos[i]->frame(dt, target.value().framebuffer(), width, height, true);
+      const FrameStats& s = demos[i]->frame(dt, target.value().framebuffer(), width, height, true);
       if (frame >= warmup) ms[i].push_back(s.frameMs);
     }
   }
   double m[kSettings];
   for (size_t i = 0; i < kSettings; ++i) m[i] = median(ms[i]);
 
-  std::printf("cost calibration: scene %s%s%s, %dx%d, %d frames a setting after %d warm-up, "
-              "interleaved\n",
-              o.scene.c_str(), o.assets.empty() ? "" : ", models from ", o.assets.c_str(), width,
-              height, frames, warmup);
-  std::printf("  planner's counts: %.0f mirror pixels, %.0f scene triangles (%.2f levels), "
-              "a frame captured as it moves: %.2f faces, %.0f triangles, %.0f texels\n",
-              c.trace.pixels, c.trace.triangles, std::log2(std::max(c.trace.triangles, 1.0)),
-              c.capture.faces, c.capture.triangles, c.capture.texels);
+  std::printf(
+      "cost calibration: scene %s%s%s, %dx%d, %d frames a setting after %d warm-up, "
+      "interleaved\n",
+      o.scene.c_str(), o.assets.empty() ? "" : ", models from ", o.assets.c_str(), width, height,
+      frames, warmup);
+  std::printf(
+      "  planner's counts: %.0f mirror pixels, %.0f scene triangles (%.2f levels), "
+      "a frame captured as it moves: %.2f faces, %.0f triangles, %.0f texels\n",
+      c.trace.pixels, c.trace.triangles, std::log2(std::max(c.trace.triangles, 1.0)),
+      c.capture.faces, c.capture.triangles, c.capture.texels);
   for (size_t i = 0; i < kSettings; ++i) {
     std::printf("  %-26s median %8.2f ms\n", settings[i].name, m[i]);
   }
@@ -104,11 +105,11 @@ std::string runCostCalibration(const BenchCommandOptions& o, const BenchDemoFact
   std::printf("  trace:   %.3g ms a mirror pixel (traced - phong), %.3g ms a pixel per level\n",
               trace, trace / std::max(std::log2(std::max(c.trace.triangles, 2.0)), 1.0));
   std::printf("  search:  %.3g ms a mirror pixel (searched alone - phong)\n", search);
-  std::printf("  capture: %.3g ms a frame as the scene moves (captured - searched alone): "
-              "%.3g ms a face, or %.3g ms a triangle, or %.3g ms a texel, if it were all one\n",
-              capture, capture / std::max(c.capture.faces, 1e-9),
-              capture / std::max(c.capture.triangles, 1.0),
-              capture / std::max(c.capture.texels, 1.0));
+  std::printf(
+      "  capture: %.3g ms a frame as the scene moves (captured - searched alone): "
+      "%.3g ms a face, or %.3g ms a triangle, or %.3g ms a texel, if it were all one\n",
+      capture, capture / std::max(c.capture.faces, 1e-9),
+      capture / std::max(c.capture.triangles, 1.0), capture / std::max(c.capture.texels, 1.0));
   return {};
 }
 

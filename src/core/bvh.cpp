@@ -27,18 +27,17 @@ float halfArea(const Bounds& b) {
 
 struct Builder {
   const std::vector<Bounds>& boxes;
-  std::vector<glm::vec3> centroids;
+  // An item's centroid, from its box each time: a figure of the course's weight would keep
+  // 1.9 MB of them through the build, and WebAssembly's heap keeps its largest size.
+  glm::vec3 centroid(uint32_t item) const { return boxes[item].centre(); }
   Bvh& out;
   int maxLeaf;
 
-  void build(size_t nodeIndex, uint32_t first, uint32_t count, int depth) {
+  // `bounds`: the items' boxes together; `centres`: their centroids' bounds (the caller knows
+  // both: the root's from one pass, a child's from its side of the parent's bins).
+  void build(size_t nodeIndex, uint32_t first, uint32_t count, int depth, const Bounds& bounds,
+             const Bounds& centres) {
     out.depth = std::max(out.depth, depth);
-    Bounds bounds = emptyBounds(), centres = emptyBounds();
-    for (uint32_t i = first; i < first + count; ++i) {
-      const uint32_t item = out.order[i];
-      grow(bounds, boxes[item]);
-      grow(centres, {centroids[item], centroids[item]});
-    }
     out.nodes[nodeIndex].min = bounds.min;
     out.nodes[nodeIndex].max = bounds.max;
     const auto leaf = [&] {
@@ -47,64 +46,94 @@ struct Builder {
     };
     if (count <= static_cast<uint32_t>(maxLeaf) || depth >= kBvhMaxDepth) return leaf();
 
+    // One pass bins every item on the three axes at once.
+    struct Bin {
+      Bounds box = emptyBounds(), centres = emptyBounds();
+      uint32_t count = 0;
+    };
+    std::array<std::array<Bin, kBins>, 3> bins;
+    glm::vec3 scale(0.0f);
+    for (int axis = 0; axis < 3; ++axis) {
+      const float extent = centres.max[axis] - centres.min[axis];
+      scale[axis] = extent > 0.0f ? kBins / extent : 0.0f;
+    }
+    const auto binOf = [&](const glm::vec3& c, int axis) {
+      return std::min(kBins - 1, static_cast<int>((c[axis] - centres.min[axis]) * scale[axis]));
+    };
+    for (uint32_t i = first; i < first + count; ++i) {
+      const uint32_t item = out.order[i];
+      const glm::vec3 c = centroid(item);
+      for (int axis = 0; axis < 3; ++axis) {
+        if (scale[axis] == 0.0f) continue;
+        Bin& b = bins[static_cast<size_t>(axis)][static_cast<size_t>(binOf(c, axis))];
+        ++b.count;
+        grow(b.box, boxes[item]);
+        grow(b.centres, {c, c});
+      }
+    }
+
     // The cheapest of the bins' split planes on the three axes (surface area heuristic).
     float bestCost = kInfinity;
     int bestAxis = -1, bestSplit = 0;
     for (int axis = 0; axis < 3; ++axis) {
-      const float lo = centres.min[axis], extent = centres.max[axis] - lo;
-      if (!(extent > 0.0f)) continue;
-      std::array<Bounds, kBins> binBounds;
-      std::array<uint32_t, kBins> binCount{};
-      binBounds.fill(emptyBounds());
-      const float scale = kBins / extent;
-      for (uint32_t i = first; i < first + count; ++i) {
-        const uint32_t item = out.order[i];
-        const int b = std::min(kBins - 1, static_cast<int>((centroids[item][axis] - lo) * scale));
-        ++binCount[static_cast<size_t>(b)];
-        grow(binBounds[static_cast<size_t>(b)], boxes[item]);
-      }
+      if (scale[axis] == 0.0f) continue;
+      const std::array<Bin, kBins>& b = bins[static_cast<size_t>(axis)];
       std::array<float, kBins> rightCost{};
       Bounds right = emptyBounds();
       uint32_t rightCount = 0;
-      for (int b = kBins - 1; b > 0; --b) {
-        grow(right, binBounds[static_cast<size_t>(b)]);
-        rightCount += binCount[static_cast<size_t>(b)];
-        rightCost[static_cast<size_t>(b)] = rightCount ? halfArea(right) * rightCount : 0.0f;
+      for (int k = kBins - 1; k > 0; --k) {
+        grow(right, b[static_cast<size_t>(k)].box);
+        rightCount += b[static_cast<size_t>(k)].count;
+        rightCost[static_cast<size_t>(k)] = rightCount ? halfArea(right) * rightCount : 0.0f;
       }
       Bounds left = emptyBounds();
       uint32_t leftCount = 0;
-      for (int b = 0; b < kBins - 1; ++b) {
-        grow(left, binBounds[static_cast<size_t>(b)]);
-        leftCount += binCount[static_cast<size_t>(b)];
+      for (int k = 0; k < kBins - 1; ++k) {
+        grow(left, b[static_cast<size_t>(k)].box);
+        leftCount += b[static_cast<size_t>(k)].count;
         if (leftCount == 0 || leftCount == count) continue;
-        const float cost = halfArea(left) * leftCount + rightCost[static_cast<size_t>(b + 1)];
+        const float cost = halfArea(left) * leftCount + rightCost[static_cast<size_t>(k + 1)];
         if (cost < bestCost) {
           bestCost = cost;
           bestAxis = axis;
-          bestSplit = b;
+          bestSplit = k;
         }
       }
     }
     uint32_t middle = 0;
+    Bounds leftBox = emptyBounds(), leftCentres = emptyBounds();
+    Bounds rightBox = emptyBounds(), rightCentres = emptyBounds();
     if (bestAxis >= 0) {
-      const float lo = centres.min[bestAxis];
-      const float scale = kBins / (centres.max[bestAxis] - lo);
       auto* begin = out.order.data() + first;
       auto* split = std::partition(begin, begin + count, [&](uint32_t item) {
-        return std::min(kBins - 1, static_cast<int>((centroids[item][bestAxis] - lo) * scale)) <=
-               bestSplit;
+        return binOf(centroid(item), bestAxis) <= bestSplit;
       });
       middle = static_cast<uint32_t>(split - begin);
+      for (int k = 0; k < kBins; ++k) {
+        const Bin& b = bins[static_cast<size_t>(bestAxis)][static_cast<size_t>(k)];
+        grow(k <= bestSplit ? leftBox : rightBox, b.box);
+        grow(k <= bestSplit ? leftCentres : rightCentres, b.centres);
+      }
     }
-    if (middle == 0 || middle == count) middle = count / 2;  // one centroid for all: halve them
+    if (middle == 0 || middle == count) {  // one centroid for all: halve them
+      middle = count / 2;
+      leftBox = leftCentres = rightBox = rightCentres = emptyBounds();
+      for (uint32_t i = first; i < first + count; ++i) {
+        const uint32_t item = out.order[i];
+        const bool isLeft = i < first + middle;
+        grow(isLeft ? leftBox : rightBox, boxes[item]);
+        const glm::vec3 c = centroid(item);
+        grow(isLeft ? leftCentres : rightCentres, {c, c});
+      }
+    }
 
     const size_t left = out.nodes.size();
     out.nodes.emplace_back();
     out.nodes.emplace_back();
     out.nodes[nodeIndex].first = static_cast<uint32_t>(left);
     out.nodes[nodeIndex].count = 0;
-    build(left, first, middle, depth + 1);
-    build(left + 1, first + middle, count - middle, depth + 1);
+    build(left, first, middle, depth + 1, leftBox, leftCentres);
+    build(left + 1, first + middle, count - middle, depth + 1, rightBox, rightCentres);
   }
 };
 
@@ -181,36 +210,42 @@ Bvh buildBvh(const std::vector<Bounds>& boxes, int maxLeaf) {
   if (boxes.empty()) return out;
   out.order.resize(boxes.size());
   for (size_t i = 0; i < boxes.size(); ++i) out.order[i] = static_cast<uint32_t>(i);
-  Builder builder{boxes, {}, out, std::max(maxLeaf, 1)};
-  builder.centroids.reserve(boxes.size());
-  for (const Bounds& b : boxes) builder.centroids.push_back(b.centre());
-  out.nodes.reserve(boxes.size() * 2);
+  Builder builder{boxes, out, std::max(maxLeaf, 1)};
+  // About 0.62 nodes a triangle with leaves of up to 4: one allocation, no regrowth.
+  out.nodes.reserve(boxes.size() * 7 / 10 + 1);
   out.nodes.emplace_back();
-  builder.build(0, 0, static_cast<uint32_t>(boxes.size()), 1);
+  Bounds bounds = emptyBounds(), centres = emptyBounds();
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    grow(bounds, boxes[i]);
+    const glm::vec3 c = builder.centroid(static_cast<uint32_t>(i));
+    grow(centres, {c, c});
+  }
+  builder.build(0, 0, static_cast<uint32_t>(boxes.size()), 1, bounds, centres);
+  out.nodes.shrink_to_fit();
   return out;
 }
 
-MeshBvh buildMeshBvh(const MeshData& mesh) {
-  const size_t count = mesh.triangleCount();
-  std::vector<Bounds> boxes(count);
-  for (size_t i = 0; i < count; ++i) {
-    const glm::vec3& a = mesh.vertices[mesh.indices[i * 3]].position;
-    const glm::vec3& b = mesh.vertices[mesh.indices[i * 3 + 1]].position;
-    const glm::vec3& c = mesh.vertices[mesh.indices[i * 3 + 2]].position;
-    boxes[i] = {glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c))};
-  }
+MeshBvh buildMeshBvh(std::shared_ptr<const MeshData> mesh) {
   MeshBvh m;
-  m.tree = buildBvh(boxes);
-  m.positions.reserve(count * 3);
-  m.normals.reserve(count * 3);
-  m.triangles = m.tree.order;
-  for (uint32_t triangle : m.tree.order) {
-    for (int k = 0; k < 3; ++k) {
-      const Vertex& v = mesh.vertices[mesh.indices[static_cast<size_t>(triangle) * 3 + k]];
-      m.positions.push_back(v.position);
-      m.normals.push_back(v.normal);
+  if (!mesh) return m;
+  const size_t count = mesh->triangleCount();
+  {
+    std::vector<Bounds> boxes(count);
+    for (size_t i = 0; i < count; ++i) {
+      const glm::vec3& a = mesh->vertices[mesh->indices[i * 3]].position;
+      const glm::vec3& b = mesh->vertices[mesh->indices[i * 3 + 1]].position;
+      const glm::vec3& c = mesh->vertices[mesh->indices[i * 3 + 2]].position;
+      boxes[i] = {glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c))};
+    }
+    m.tree = buildBvh(boxes);
+  }
+  m.corners.resize(count * 3);
+  for (size_t s = 0; s < count; ++s) {
+    for (size_t k = 0; k < 3; ++k) {
+      m.corners[s * 3 + k] = mesh->indices[static_cast<size_t>(m.tree.order[s]) * 3 + k];
     }
   }
+  m.mesh = std::move(mesh);
   return m;
 }
 
@@ -268,12 +303,12 @@ RayHit intersectScene(const SceneBvh& scene, const glm::vec3& origin, const glm:
       traverse(mesh.tree, o, d, tMin, best.t, [&](uint32_t firstTriangle, uint32_t triangles) {
         for (uint32_t s = firstTriangle; s < firstTriangle + triangles; ++s) {
           float t, u, v;
-          if (intersectTriangle(o, d, mesh.positions[s * 3], mesh.positions[s * 3 + 1],
-                                mesh.positions[s * 3 + 2], tMin, best.t, &t, &u, &v)) {
+          if (intersectTriangle(o, d, mesh.corner(s, 0).position, mesh.corner(s, 1).position,
+                                mesh.corner(s, 2).position, tMin, best.t, &t, &u, &v)) {
             best.t = t;
             best.instance = index;
             best.slot = static_cast<int>(s);
-            best.triangle = static_cast<int>(mesh.triangles[s]);
+            best.triangle = static_cast<int>(mesh.tree.order[s]);
             best.u = u;
             best.v = v;
           }
@@ -299,40 +334,90 @@ void pushChild(std::vector<float>& t, const Bounds& box, const PackedRef& ref) {
 
 }  // namespace
 
-void BvhAtlas::add(const std::string& name, const MeshBvh& mesh) {
-  const std::vector<BvhNode>& nodes = mesh.tree.nodes;
-  if (nodes.empty()) return;
-  // Interior nodes first, each kNodeTexels, in the tree's order; then the triangles.
-  const int base = static_cast<int>(texels.size() / 4);
-  std::vector<int> nodeTexel(nodes.size(), -1);
-  int interior = 0;
+void BvhAtlas::add(const std::string& name, std::shared_ptr<const MeshBvh> mesh) {
+  if (!mesh || mesh->tree.nodes.empty()) return;
+  const std::vector<BvhNode>& nodes = mesh->tree.nodes;
+  Part part;
+  part.base = texels_;
+  part.firstSlot = triangles_;
+  part.nodeTexel.assign(nodes.size(), -1);
   for (size_t i = 0; i < nodes.size(); ++i) {
-    if (nodes[i].count == 0) nodeTexel[i] = base + kNodeTexels * interior++;
+    if (nodes[i].count > 0) continue;
+    part.nodeTexel[i] = static_cast<int>(part.base + kNodeTexels * part.interiorNodes.size());
+    part.interiorNodes.push_back(static_cast<uint32_t>(i));
   }
-  const int firstTriangle = base + kNodeTexels * interior;
-  const auto refOf = [&](size_t i) {
-    const BvhNode& n = nodes[i];
-    if (n.count > 0) {
-      return PackedRef{firstTriangle + kTriangleTexels * static_cast<int>(n.first),
-                       static_cast<int>(n.count)};
+  part.triangles = part.base + kNodeTexels * part.interiorNodes.size();
+  part.mesh = std::move(mesh);
+  texels_ = part.triangles + kTriangleTexels * part.mesh->triangleCount();
+  triangles_ += static_cast<int>(part.mesh->triangleCount());
+  roots_[name] = {refOf(part, 0), {nodes[0].min, nodes[0].max}};
+  parts_.push_back(std::move(part));
+}
+
+PackedRef BvhAtlas::refOf(const Part& part, uint32_t node) const {
+  const BvhNode& n = part.mesh->tree.nodes[node];
+  if (n.count > 0) {
+    return PackedRef{static_cast<int>(part.triangles + kTriangleTexels * n.first),
+                     static_cast<int>(n.count)};
+  }
+  return PackedRef{part.nodeTexel[node], 0};
+}
+
+namespace {
+
+void putTexel(float* out, const glm::vec3& v, float w) {
+  out[0] = v.x;
+  out[1] = v.y;
+  out[2] = v.z;
+  out[3] = w;
+}
+
+}  // namespace
+
+void BvhAtlas::writeTexels(size_t first, size_t count, float* out) const {
+  std::fill(out, out + 4 * count, 0.0f);
+  const size_t end = first + count;
+  for (const Part& part : parts_) {
+    const size_t partEnd = part.triangles + kTriangleTexels * part.mesh->triangleCount();
+    if (partEnd <= first || part.base >= end) continue;
+    const std::vector<BvhNode>& nodes = part.mesh->tree.nodes;
+    for (size_t t = std::max(first, part.base); t < std::min(end, partEnd); ++t) {
+      float* texel = out + 4 * (t - first);
+      if (t < part.triangles) {  // an interior node: (min, ref), (max, count) of each child
+        const size_t k = (t - part.base) / kNodeTexels, within = (t - part.base) % kNodeTexels;
+        const uint32_t child = nodes[part.interiorNodes[k]].first + (within >= 2 ? 1 : 0);
+        const PackedRef ref = refOf(part, child);
+        if (within % 2 == 0) {
+          putTexel(texel, nodes[child].min, static_cast<float>(ref.texel));
+        } else {
+          putTexel(texel, nodes[child].max, static_cast<float>(ref.count));
+        }
+      } else {  // a triangle: v0 (w: its slot), v1 - v0, v2 - v0
+        const size_t s = (t - part.triangles) / kTriangleTexels;
+        const int k = static_cast<int>((t - part.triangles) % kTriangleTexels);
+        const glm::vec3& v0 = part.mesh->corner(s, 0).position;
+        if (k == 0) {
+          putTexel(texel, v0, static_cast<float>(part.firstSlot + static_cast<int>(s)));
+        } else {
+          putTexel(texel, part.mesh->corner(s, k).position - v0, 0.0f);
+        }
+      }
     }
-    return PackedRef{nodeTexel[i], 0};
-  };
-  for (const BvhNode& n : nodes) {
-    if (n.count > 0) continue;
-    for (uint32_t child : {n.first, n.first + 1}) {
-      pushChild(texels, {nodes[child].min, nodes[child].max}, refOf(child));
+  }
+}
+
+void BvhAtlas::writeNormals(size_t first, size_t count, float* out) const {
+  std::fill(out, out + 4 * count, 0.0f);
+  const size_t end = first + count;
+  for (const Part& part : parts_) {
+    const size_t partFirst = 3 * static_cast<size_t>(part.firstSlot);
+    const size_t partEnd = partFirst + 3 * part.mesh->triangleCount();
+    for (size_t t = std::max(first, partFirst); t < std::min(end, partEnd); ++t) {
+      const size_t s = (t - partFirst) / 3;
+      putTexel(out + 4 * (t - first),
+               part.mesh->corner(s, static_cast<int>((t - partFirst) % 3)).normal, 0.0f);
     }
   }
-  for (size_t s = 0; s < mesh.triangleCount(); ++s) {
-    const glm::vec3& v0 = mesh.positions[s * 3];
-    pushTexel(texels, v0, static_cast<float>(triangles + static_cast<int>(s)));
-    pushTexel(texels, mesh.positions[s * 3 + 1] - v0, 0.0f);
-    pushTexel(texels, mesh.positions[s * 3 + 2] - v0, 0.0f);
-    for (int k = 0; k < 3; ++k) pushTexel(normals, mesh.normals[s * 3 + k], 0.0f);
-  }
-  roots[name] = {refOf(0), {nodes[0].min, nodes[0].max}};
-  triangles += static_cast<int>(mesh.triangleCount());
 }
 
 namespace {

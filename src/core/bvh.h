@@ -47,15 +47,19 @@ inline constexpr int kBvhMaxDepth = 32;
 // depth limit or identical centroids leave no split).
 Bvh buildBvh(const std::vector<Bounds>& boxes, int maxLeaf = 4);
 
-// A mesh's tree, in object space, with its triangles stored in leaf order.
+// A mesh's tree, in object space. It keeps no copy of the vertices (a figure of the course's
+// weight would hold them twice): it shares the mesh's, and keeps its triangles' corners in leaf
+// order, so the mesh's index list may be reordered later (its chunks are) without it.
 struct MeshBvh {
-  Bvh tree;
-  std::vector<glm::vec3> positions;  // 3 per triangle, leaf order
-  std::vector<glm::vec3> normals;    // 3 per triangle (the vertices' normals)
-  std::vector<uint32_t> triangles;   // the mesh's triangle index for each stored triangle
-  size_t triangleCount() const { return triangles.size(); }
+  Bvh tree;                              // tree.order: the mesh's triangle index at each slot
+  std::shared_ptr<const MeshData> mesh;  // for the vertices
+  std::vector<uint32_t> corners;         // 3 vertex indices a slot, leaf order
+  size_t triangleCount() const { return tree.order.size(); }
+  const Vertex& corner(size_t slot, int k) const {
+    return mesh->vertices[corners[slot * 3 + static_cast<size_t>(k)]];
+  }
 };
-MeshBvh buildMeshBvh(const MeshData& mesh);
+MeshBvh buildMeshBvh(std::shared_ptr<const MeshData> mesh);
 
 // Möller-Trumbore: t in (tMin, tMax) and the barycentrics (u at v1, v at v2), or false.
 bool intersectTriangle(const glm::vec3& origin, const glm::vec3& direction, const glm::vec3& v0,
@@ -119,18 +123,40 @@ struct PackedRef {
 };
 inline constexpr int kInstanceRef = -1;
 
-// Every mesh's tree, built when the set of meshes changes: its interior nodes, then its
-// triangles, in `texels`; the vertex normals (3 texels a triangle, by slot) in `normals`.
-struct BvhAtlas {
+// Every mesh's tree, one after another: its interior nodes, then its triangles; and the vertex
+// normals, 3 texels a triangle slot, in a texture of their own. The texels are written on demand
+// in any range (writeTexels), so an upload goes a block of rows at a time and never holds the
+// whole atlas (the 157k-triangle figure's is 10 MB, its normals 7.5 MB).
+class BvhAtlas {
+ public:
   struct Root {
     PackedRef ref;
     Bounds box;
   };
-  std::vector<float> texels;   // RGBA
-  std::vector<float> normals;  // RGBA
-  std::map<std::string, Root> roots;
-  int triangles = 0;  // slots used in `normals`
-  void add(const std::string& name, const MeshBvh& mesh);
+  // Places `mesh`'s tree after the ones added before.
+  void add(const std::string& name, std::shared_ptr<const MeshBvh> mesh);
+  size_t texelCount() const { return texels_; }
+  size_t normalTexelCount() const { return 3 * static_cast<size_t>(triangles_); }
+  int triangles() const { return triangles_; }
+  const std::map<std::string, Root>& roots() const { return roots_; }
+  // Texels [first, first + count) as RGBA floats into out (4 a texel); zeros past the end.
+  void writeTexels(size_t first, size_t count, float* out) const;
+  void writeNormals(size_t first, size_t count, float* out) const;
+
+ private:
+  struct Part {
+    std::shared_ptr<const MeshBvh> mesh;
+    size_t base = 0;                      // its first texel
+    size_t triangles = 0;                 // texel of its first triangle
+    int firstSlot = 0;                    // its first triangle's slot in the normals
+    std::vector<uint32_t> interiorNodes;  // the tree's interior nodes, in the atlas's order
+    std::vector<int> nodeTexel;           // per tree node: its texel (interior) or -1
+  };
+  PackedRef refOf(const Part& part, uint32_t node) const;
+  std::vector<Part> parts_;
+  std::map<std::string, Root> roots_;
+  size_t texels_ = 0;
+  int triangles_ = 0;
 };
 
 // Per frame, for the shader:

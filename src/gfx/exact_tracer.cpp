@@ -1,6 +1,7 @@
 #include "gfx/exact_tracer.h"
 
 #include <algorithm>
+#include <functional>
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/frustum.h"
@@ -23,6 +24,26 @@ void allocateTexels(GLuint texture, const std::vector<float>& texels, int rows) 
                padded.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+// A texture of `rows` rows filled a block of rows at a time by `write(firstTexel, texels, out)`,
+// so no copy of the whole atlas is ever held (WebAssembly's heap keeps its largest size).
+void allocateRows(GLuint texture, int rows,
+                  const std::function<void(size_t, size_t, float*)>& write) {
+  constexpr int kBlockRows = 64;
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kBvhTextureWidth, rows, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  std::vector<float> block(static_cast<size_t>(kBlockRows) * kBvhTextureWidth * 4);
+  for (int row = 0; row < rows; row += kBlockRows) {
+    const int count = std::min(kBlockRows, rows - row);
+    write(static_cast<size_t>(row) * kBvhTextureWidth,
+          static_cast<size_t>(count) * kBvhTextureWidth, block.data());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, row, kBvhTextureWidth, count, GL_RGBA, GL_FLOAT,
+                    block.data());
+  }
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
@@ -73,15 +94,17 @@ std::string ExactTracer::setSkybox(const CubeFaces* faces) {
 
 void ExactTracer::uploadAtlas(int frameRows) {
   BvhAtlas atlas;
-  for (const auto& [name, bvh] : meshes_) {
-    if (bvh) atlas.add(name, *bvh);
-  }
+  for (const auto& [name, bvh] : meshes_) atlas.add(name, bvh);
   // The meshes' rows, then the rows each frame rewrites (the top level and the placements).
-  meshRows_ = rowsFor(atlas.texels.size() / 4);
+  meshRows_ = rowsFor(atlas.texelCount());
   frameRows_ = std::max(frameRows, 1);
-  allocateTexels(atlas_.id(), atlas.texels, meshRows_ + frameRows_);
-  allocateTexels(normals_.id(), atlas.normals, 1);
-  roots_ = std::move(atlas.roots);
+  allocateRows(atlas_.id(), meshRows_ + frameRows_, [&](size_t first, size_t count, float* out) {
+    atlas.writeTexels(first, count, out);
+  });
+  allocateRows(
+      normals_.id(), std::max(rowsFor(atlas.normalTexelCount()), 1),
+      [&](size_t first, size_t count, float* out) { atlas.writeNormals(first, count, out); });
+  roots_ = atlas.roots();
   atlasDirty_ = false;
 }
 

@@ -59,7 +59,8 @@ double agreement(const Scene& scene, const std::map<std::string, MeshData>& mesh
   std::map<std::string, std::shared_ptr<const MeshBvh>> trees;
   for (const auto& [name, mesh] : meshes) {
     const auto start = std::chrono::steady_clock::now();
-    trees[name] = std::make_shared<const MeshBvh>(buildMeshBvh(mesh));
+    trees[name] =
+        std::make_shared<const MeshBvh>(buildMeshBvh(std::make_shared<const MeshData>(mesh)));
     std::printf("%s: %zu triangles, BVH of %zu nodes, depth %d, built in %.1f ms\n", name.c_str(),
                 mesh.triangleCount(), trees[name]->tree.nodes.size(), trees[name]->tree.depth,
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

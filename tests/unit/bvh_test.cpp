@@ -28,6 +28,17 @@ MeshData randomTriangles(int count, uint32_t seed) {
   return m;
 }
 
+std::shared_ptr<const MeshData> shared(const MeshData& mesh) {
+  return std::make_shared<const MeshData>(mesh);
+}
+
+// Every texel of an atlas, as the upload writes them.
+std::vector<float> allTexels(const BvhAtlas& atlas) {
+  std::vector<float> texels(atlas.texelCount() * 4);
+  atlas.writeTexels(0, atlas.texelCount(), texels.data());
+  return texels;
+}
+
 // Every item in exactly one leaf, every child inside its parent, the depth within the stack.
 void expectWellFormed(const Bvh& bvh, size_t items) {
   std::vector<int> seen(items, 0);
@@ -48,9 +59,16 @@ void expectWellFormed(const Bvh& bvh, size_t items) {
 
 TEST(Bvh, EveryTriangleInOneLeaf) {
   const MeshData mesh = randomTriangles(5000, 1);
-  const MeshBvh bvh = buildMeshBvh(mesh);
+  const MeshBvh bvh = buildMeshBvh(shared(mesh));
   expectWellFormed(bvh.tree, mesh.triangleCount());
-  EXPECT_EQ(bvh.positions.size(), mesh.triangleCount() * 3);
+  EXPECT_EQ(bvh.corners.size(), mesh.triangleCount() * 3);
+  // Each slot's corners are its triangle's, in the mesh's own order.
+  for (size_t s = 0; s < bvh.triangleCount(); s += 97) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(bvh.corners[s * 3 + static_cast<size_t>(k)],
+                mesh.indices[static_cast<size_t>(bvh.tree.order[s]) * 3 + static_cast<size_t>(k)]);
+    }
+  }
   EXPECT_LT(bvh.tree.depth, 30);
 }
 
@@ -71,7 +89,7 @@ TEST(Bvh, EmptyAndSingle) {
 TEST(Bvh, TraversalFindsTheNearestTriangleAsBruteForce) {
   const MeshData mesh = randomTriangles(3000, 2);
   std::vector<BvhInstance> instances(2);
-  instances[0].mesh = std::make_shared<const MeshBvh>(buildMeshBvh(mesh));
+  instances[0].mesh = std::make_shared<const MeshBvh>(buildMeshBvh(shared(mesh)));
   instances[1].mesh = instances[0].mesh;
   instances[1].model = glm::mat4(glm::mat3(2.0f));  // scaled, and rotated below
   instances[1].model = glm::mat4(glm::vec4(0, 0, -2, 0), glm::vec4(0, 2, 0, 0),
@@ -123,7 +141,7 @@ TEST(Bvh, SkipAndOnly) {
                    {{-1, 1, 0}, {0, 0, 1}}};
   quad.indices = {0, 1, 2, 0, 2, 3};
   std::vector<BvhInstance> instances(2);
-  instances[0].mesh = std::make_shared<const MeshBvh>(buildMeshBvh(quad));
+  instances[0].mesh = std::make_shared<const MeshBvh>(buildMeshBvh(shared(quad)));
   instances[1].mesh = instances[0].mesh;
   instances[1].model = glm::mat4(1.0f);
   instances[1].model[3] = glm::vec4(0, 0, -1, 1);
@@ -232,15 +250,23 @@ struct PackedWalk {
 
 TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
   const MeshData a = randomTriangles(300, 4), b = randomTriangles(3, 5);
-  const auto ta = std::make_shared<const MeshBvh>(buildMeshBvh(a));
-  const auto tb = std::make_shared<const MeshBvh>(buildMeshBvh(b));
+  const auto ta = std::make_shared<const MeshBvh>(buildMeshBvh(shared(a)));
+  const auto tb = std::make_shared<const MeshBvh>(buildMeshBvh(shared(b)));
   BvhAtlas atlas;
-  atlas.add("a", *ta);
-  atlas.add("b", *tb);
-  EXPECT_EQ(atlas.triangles, 303);
-  EXPECT_EQ(atlas.normals.size(), 303u * 3u * 4u);
-  EXPECT_EQ(atlas.roots["a"].ref.count, 0);  // an interior node
-  EXPECT_EQ(atlas.roots["b"].ref.count, 3);  // three triangles: the root is a leaf
+  atlas.add("a", ta);
+  atlas.add("b", tb);
+  EXPECT_EQ(atlas.triangles(), 303);
+  EXPECT_EQ(atlas.normalTexelCount(), 303u * 3u);
+  EXPECT_EQ(atlas.roots().at("a").ref.count, 0);  // an interior node
+  EXPECT_EQ(atlas.roots().at("b").ref.count, 3);  // three triangles: the root is a leaf
+  // Written in any pieces, the texels are the same.
+  const std::vector<float> whole = allTexels(atlas);
+  std::vector<float> pieces(whole.size());
+  for (size_t first = 0; first < atlas.texelCount(); first += 37) {
+    const size_t count = std::min<size_t>(37, atlas.texelCount() - first);
+    atlas.writeTexels(first, count, pieces.data() + 4 * first);
+  }
+  EXPECT_EQ(pieces, whole);
 
   // Five objects, two of them on mesh b, one untraced (no mesh), placed and turned.
   Scene scene;
@@ -253,7 +279,7 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
     if (i == 3) continue;
     const bool onB = i == 1 || i == 4;
     instances[static_cast<size_t>(i)].mesh = onB ? tb : ta;
-    roots[static_cast<size_t>(i)] = atlas.roots[onB ? "b" : "a"].ref;
+    roots[static_cast<size_t>(i)] = atlas.roots().at(onB ? "b" : "a").ref;
     glm::mat4 m =
         glm::rotate(glm::mat4(1.0f), at(rng), glm::normalize(glm::vec3(at(rng), at(rng), 1)));
     m[3] = glm::vec4(at(rng), at(rng), at(rng), 1.0f);
@@ -263,11 +289,11 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
         glm::inverse(instances[static_cast<size_t>(i)].model);
   }
   const SceneBvh bvh = buildSceneBvh(instances);
-  const int first = static_cast<int>(atlas.texels.size() / 4) + 7;  // any texel past the meshes
+  const int first = static_cast<int>(atlas.texelCount()) + 7;  // any texel past the meshes
   const PackedScene packed = packScene(scene, bvh, roots, {}, first);
   EXPECT_EQ(packed.header, first);
   EXPECT_EQ(packed.shading.size(), 5u * kInstanceTexels * 4u);
-  std::vector<float> texels = atlas.texels;
+  std::vector<float> texels = allTexels(atlas);
   texels.resize(static_cast<size_t>(first) * 4, 0.0f);
   texels.insert(texels.end(), packed.traversal.begin(), packed.traversal.end());
   const PackedWalk walk{texels};
@@ -301,9 +327,9 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
 TEST(Bvh, ALeafOfSeveralObjectsIsSplitIntoSlots) {
   // Identical boxes past the depth limit would leave a top-level leaf of several objects; the
   // packer gives each its own slot. Forty objects in one place, a ray through them all.
-  const auto mesh = std::make_shared<const MeshBvh>(buildMeshBvh(randomTriangles(20, 8)));
+  const auto mesh = std::make_shared<const MeshBvh>(buildMeshBvh(shared(randomTriangles(20, 8))));
   BvhAtlas atlas;
-  atlas.add("m", *mesh);
+  atlas.add("m", mesh);
   Scene scene;
   std::vector<BvhInstance> instances(40);
   for (BvhInstance& i : instances) {
@@ -315,10 +341,10 @@ TEST(Bvh, ALeafOfSeveralObjectsIsSplitIntoSlots) {
   bvh.top.nodes.resize(1);
   bvh.top.nodes[0].first = 0;
   bvh.top.nodes[0].count = 40;
-  const std::vector<PackedRef> roots(40, atlas.roots["m"].ref);
-  const int first = static_cast<int>(atlas.texels.size() / 4);
+  const std::vector<PackedRef> roots(40, atlas.roots().at("m").ref);
+  const int first = static_cast<int>(atlas.texelCount());
   const PackedScene packed = packScene(scene, bvh, roots, {}, first);
-  std::vector<float> texels = atlas.texels;
+  std::vector<float> texels = allTexels(atlas);
   texels.insert(texels.end(), packed.traversal.begin(), packed.traversal.end());
   const PackedWalk walk{texels};
   for (int r = 0; r < 200; ++r) {

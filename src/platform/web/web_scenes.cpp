@@ -282,7 +282,10 @@ EMSCRIPTEN_KEEPALIVE const char* rf_commit_scene(const char* request) {
   if (state().demo) state().demo->releaseGraphics();
   state().demo = std::move(pending.demo);
   pending = {};
-  return replyDone(notice);
+  // The trees' share of the commit, for load-time accounting (tools/peer_bench.mjs --load).
+  nlohmann::json out = {{"bvhMs", state().demo->bvhBuildMs()}};
+  if (!notice.empty()) out["notice"] = notice;
+  return reply(out);
 }
 
 // The current scene: {"name", "title", "meshes": [...], "cubeFaceSize": the capture's face size,
