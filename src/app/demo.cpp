@@ -613,7 +613,9 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   if (waitForGpu) reflect::waitForGpu();
   stats_.captureMs = millisecondsSince(start);
   stats_.probes = static_cast<int>(plan.probes.size());
-  stats_.tracedReflectors = static_cast<int>(plan.traced.size());
+  stats_.tracedReflectors = 0;
+  for (const ProbeLayout& t : plan.traced)
+    stats_.tracedReflectors += static_cast<int>(t.members.size());
   stats_.facesCaptured = plan.facesCaptured();
 
   const ViewParams view{camera_.view(),

@@ -49,6 +49,26 @@ double percentile(std::vector<double> values, double p) {
   return values[lo] + (values[hi] - values[lo]) * (rank - static_cast<double>(lo));
 }
 
+std::vector<TimedFrames> timeInBlocks(const std::vector<Demo*>& demos, unsigned framebuffer,
+                                      int width, int height, int frames,
+                                      const std::function<double(size_t)>& dt, int perBlock) {
+  std::vector<TimedFrames> out(demos.size());
+  perBlock = std::max(perBlock, 1);
+  for (int done = 0; done < frames; done += perBlock) {
+    const int block = std::min(perBlock, frames - done);
+    for (size_t i = 0; i < demos.size(); ++i) {
+      demos[i]->frame(dt(i), framebuffer, width, height, true);  // settles, untimed
+      for (int f = 0; f < block; ++f) {
+        const double cpuBefore = processCpuMs();
+        const FrameStats& s = demos[i]->frame(dt(i), framebuffer, width, height, true);
+        out[i].ms.push_back(s.frameMs);
+        out[i].cpuMs.push_back(processCpuMs() - cpuBefore);
+      }
+    }
+  }
+  return out;
+}
+
 double median(std::vector<double> values) {
   return percentile(std::move(values), 0.5);
 }

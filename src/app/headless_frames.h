@@ -2,6 +2,7 @@
 // compare with golden PNGs, and what `reflect bench` times.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "app/demo.h"
@@ -25,6 +26,19 @@ struct BenchResult {
 };
 // Renders warmup + frames frames at 60 Hz scene time steps, waiting for the GPU after each.
 Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, int frames);
+
+// Several demos timed in one context, taking turns a block of frames at a time: each block's
+// first frame is drawn untimed, then `perBlock` frames are timed, until each demo has `frames`.
+// (Frame by frame in turn, a cheap setting drawn between expensive ones measured up to three times
+// its own time in llvmpipe: the traced default 17 ms between the course's and the hierarchical
+// search's frames against 5.7 ms alone; in blocks, 6.0 ms.) `dt(demo)` is each frame's time step.
+// Returns, per demo, the timed frames' wall ms and process CPU ms.
+struct TimedFrames {
+  std::vector<double> ms, cpuMs;
+};
+std::vector<TimedFrames> timeInBlocks(const std::vector<Demo*>& demos, unsigned framebuffer,
+                                      int width, int height, int frames,
+                                      const std::function<double(size_t)>& dt, int perBlock = 5);
 
 double median(std::vector<double> values);
 // CPU time this process has used so far, in milliseconds.

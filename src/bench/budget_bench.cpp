@@ -26,14 +26,14 @@ Result<BudgetBenchResult> runBudgetBench(const BenchDemoFactory& makeDemo, doubl
     demos.push_back(demo.take());
     if (demos.size() == result.candidates.size()) break;
   }
+  std::vector<Demo*> timed;
+  for (auto& d : demos) timed.push_back(d.get());
+  const auto step = [](size_t) { return 1.0 / 60.0; };
+  timeInBlocks(timed, target.value().framebuffer(), width, height, warmup, step);
+  const std::vector<TimedFrames> timings =
+      timeInBlocks(timed, target.value().framebuffer(), width, height, frames, step);
   std::vector<std::vector<double>> ms(demos.size());
-  for (int frame = 0; frame < warmup + frames; ++frame) {
-    for (size_t i = 0; i < demos.size(); ++i) {
-      const FrameStats& s =
-          demos[i]->frame(1.0 / 60.0, target.value().framebuffer(), width, height, true);
-      if (frame >= warmup) ms[i].push_back(s.frameMs);
-    }
-  }
+  for (size_t i = 0; i < demos.size(); ++i) ms[i] = timings[i].ms;
   for (size_t i = 0; i < demos.size(); ++i) {
     BudgetCandidate& c = result.candidates[i];
     c.frameMs = median(ms[i]);

@@ -74,14 +74,19 @@ std::string runCostCalibration(const BenchCommandOptions& o, const BenchDemoFact
   }
   Result<OffscreenTarget> target = OffscreenTarget::create(width, height);
   if (!target) return target.error();
+  std::vector<Demo*> timed;
+  for (auto& d : demos) timed.push_back(d.get());
+  bool first = true;  // the still setting holds its first frame's time
+  const auto step = [&](size_t i) {
+    const double dt = settings[i].animated || first ? 1.0 / 60.0 : 0.0;
+    if (i == kSettings - 1) first = false;
+    return dt;
+  };
+  timeInBlocks(timed, target.value().framebuffer(), width, height, warmup, step);
+  const std::vector<TimedFrames> timings =
+      timeInBlocks(timed, target.value().framebuffer(), width, height, frames, step);
   std::vector<std::vector<double>> ms(kSettings);
-  for (int frame = 0; frame < warmup + frames; ++frame) {
-    for (size_t i = 0; i < kSettings; ++i) {
-      const double dt = settings[i].animated || frame == 0 ? 1.0 / 60.0 : 0.0;
-      const FrameStats& s = demos[i]->frame(dt, target.value().framebuffer(), width, height, true);
-      if (frame >= warmup) ms[i].push_back(s.frameMs);
-    }
-  }
+  for (size_t i = 0; i < kSettings; ++i) ms[i] = timings[i].ms;
   double m[kSettings];
   for (size_t i = 0; i < kSettings; ++i) m[i] = median(ms[i]);
 

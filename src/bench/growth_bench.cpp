@@ -96,8 +96,9 @@ Result<std::string> runGrowthBench(const std::string& modelDirectory, const Grow
         demo.waitForLevels();
         auto r = benchFrames(demo, o.width, o.height, o.warmup, o.frames);
         if (!r) return Result<std::string>::failure(r.error());
-        std::snprintf(line, sizeof line, " %.1f ms (%d probes, %.0f faces) |",
-                      median(r.value().frameMs), demo.lastStats().probes, r.value().facesPerFrame);
+        std::snprintf(line, sizeof line, " %.1f ms (%d probes, %.0f faces, %d traced) |",
+                      median(r.value().frameMs), demo.lastStats().probes, r.value().facesPerFrame,
+                      demo.lastStats().tracedReflectors);
         out += line;
         std::fprintf(stderr, ".");
       }

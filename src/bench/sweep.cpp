@@ -19,22 +19,27 @@ std::vector<SweepSetting> sweepSettings() {
   course.depthBits = 16;
   course.search = Search::Plain;
   course.glassSurfaces = 1;
-  const AccuracySettings shipped;     // the default: hierarchical search, two layers
-  AccuracySettings centre = shipped;  // plain lookup from the reflector's centre
+  const AccuracySettings shipped;  // the default: planned (traced or captured, per reflector)
+  AccuracySettings hierarchical;   // the cube-map search with two layers (the default before)
+  hierarchical.search = Search::Hierarchical;
+  AccuracySettings centre = hierarchical;  // plain lookup from the reflector's centre
   centre.search = Search::Plain;
-  AccuracySettings linear = shipped;  // the search this project shipped before
+  AccuracySettings linear = hierarchical;  // the search this project shipped first
   linear.search = Search::Linear;
-  AccuracySettings oneLayer = shipped;
+  AccuracySettings oneLayer = hierarchical;
   oneLayer.layers = 1;
 
-  std::vector<SweepSetting> s = {
-      {"original", course, 256},   {"default", shipped, 256},
-      {"centre", centre, 256},     {"linear", linear, 256},
-      {"layers-1", oneLayer, 256}, {"exact", AccuracySettings{.search = Search::Exact}, 256}};
+  std::vector<SweepSetting> s = {{"original", course, 256},
+                                 {"default", shipped, 256},
+                                 {"hierarchical", hierarchical, 256},
+                                 {"centre", centre, 256},
+                                 {"linear", linear, 256},
+                                 {"layers-1", oneLayer, 256},
+                                 {"exact", AccuracySettings{.search = Search::Exact}, 256}};
   for (int size : {32, 64, 128, 512, 1024})
     s.push_back({"size-" + std::to_string(size), centre, size});
   for (int size : {64, 128, 512})
-    s.push_back({"default-size-" + std::to_string(size), shipped, size});
+    s.push_back({"hierarchical-size-" + std::to_string(size), hierarchical, size});
   AccuracySettings a = centre;
   a.depthBits = 16;
   s.push_back({"depth-16", a, 256});
@@ -44,12 +49,15 @@ std::vector<SweepSetting> sweepSettings() {
   a = centre;
   a.halfFloat = true;
   s.push_back({"rgba16f", a, 256});
-  a = shipped;
+  a = hierarchical;
   a.halfFloat = true;
-  s.push_back({"default-rgba16f", a, 256});
+  s.push_back({"hierarchical-rgba16f", a, 256});
   a = centre;
   a.mediump = true;
   s.push_back({"mediump", a, 256});
+  a = hierarchical;
+  a.mediump = true;
+  s.push_back({"hierarchical-mediump", a, 256});
   a = shipped;
   a.mediump = true;
   s.push_back({"default-mediump", a, 256});
@@ -74,19 +82,20 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     demos.push_back(demo.take());
   }
 
-  // Timing, interleaved frame by frame.
+  // Timing: the settings take turns a block of frames at a time (headless_frames.h), after a
+  // warm-up block each.
   Result<OffscreenTarget> target = OffscreenTarget::create(o.width, o.height);
   if (!target) return Out::failure(target.error());
+  std::vector<Demo*> timed;
+  for (auto& d : demos) timed.push_back(d.get());
+  const auto step = [](size_t) { return 1.0 / 60.0; };
+  timeInBlocks(timed, target.value().framebuffer(), o.width, o.height, 3, step);
+  const std::vector<TimedFrames> frames =
+      timeInBlocks(timed, target.value().framebuffer(), o.width, o.height, o.frames, step);
   std::vector<std::vector<double>> ms(settings.size()), cpu(settings.size());
-  for (int frame = 0; frame < o.frames + 3; ++frame) {
-    for (size_t i = 0; i < demos.size(); ++i) {
-      const double cpuBefore = processCpuMs();
-      const FrameStats& s =
-          demos[i]->frame(1.0 / 60.0, target.value().framebuffer(), o.width, o.height, true);
-      if (frame < 3) continue;
-      ms[i].push_back(s.frameMs);
-      cpu[i].push_back(processCpuMs() - cpuBefore);
-    }
+  for (size_t i = 0; i < settings.size(); ++i) {
+    ms[i] = frames[i].ms;
+    cpu[i] = frames[i].cpuMs;
   }
 
   // One reference per time and capture point, shared by every setting that captures there.

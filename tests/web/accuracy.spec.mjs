@@ -58,13 +58,13 @@ test('choosing "original" sets the course settings, changes the reflection and s
   await expect.poll(() => query(page)).toContain('&acc=original');
 
   // A row with another cube size reloads the scene at that size.
-  await choose(page, 'default-size-64');
+  await choose(page, 'hierarchical-size-64');
   await idle(page);
   expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
-  expect((await accuracy(page)).describe).toBe(ROWS['default-size-64'].setting);
+  expect((await accuracy(page)).describe).toBe(ROWS['hierarchical-size-64'].setting);
   await expect(readout).toContainText('on the Pareto front');
   await expect.poll(() => query(page)).toContain('cube=64&');
-  await expect.poll(() => query(page)).toContain('&acc=default-size-64');
+  await expect.poll(() => query(page)).toContain('&acc=hierarchical-size-64');
 
   // A combination the sweep did not measure.
   expect(await page.evaluate(() => window.demo.setAccuracy({ mipmaps: true }))).toBe('');

@@ -181,7 +181,7 @@ test('an ?assets= model with undefined normals loads, its warning shown as an in
   await page.evaluate(() => window.demo.lodReady());
   expect(await page.evaluate(() => window.demo.lodLevels('sonic.obj')?.[0])).toBe(1);
   // A measured mode at another cube size reloads the same scene and its files.
-  await page.evaluate(() => window.demo.setAccuracy('default-size-64'));
+  await page.evaluate(() => window.demo.setAccuracy('hierarchical-size-64'));
   await page.evaluate(() => window.demo.idle());
   expect((await page.evaluate(() => window.demo.frame(0))).cubeFaceSize).toBe(64);
   expect(await shown()).toHaveLength(1);
