@@ -17,7 +17,7 @@ echo "| scene | setting | frame ms (median) | ratio | mean PSNR dB | worst PSNR 
 echo "|---|---|---|---|---|---|---|"
 for scene in $scenes; do
   "$reflect" bench --sweep --only original,default,hierarchical,exact --scene "$scene" --size "$size" \
-    --times "$times" --frames 20 |
+    --times "$times" --frames 40 |
     awk -F'|' -v scene="$scene" '
       # Sweep rows: | name | setting | face | ms (p10-p90) | CPU | PSNR (worst) | >32 (worst) | ...
       $2 ~ /^ (original|default|hierarchical|exact) $/ {

@@ -642,6 +642,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
     stats_.error = "a shader did not build: " + renderer_->programError();
   }
   if (errorView) renderErrorView(objects, view, draws, framebuffer);
+  lastPlan_ = plan;
   if (!firstFrameDrawn_) {
     // The first frame is on screen: now build what the meshes were drawn without.
     firstFrameDrawn_ = true;

@@ -142,6 +142,8 @@ class Demo {
   AnimationClock& clock() { return clock_; }
   const Scene& scene() const { return scene_; }
   const FrameStats& lastStats() const { return stats_; }
+  // What the last frame planned: its probes and their faces, the reflectors it traced.
+  const FramePlan& lastPlan() const { return lastPlan_; }
   // Time spent building the exact mode's trees so far (load-time accounting).
   double bvhBuildMs() const { return bvhBuildMs_; }
   // What the planner weighed for each probe in the last frame (search: planned).
@@ -236,6 +238,7 @@ class Demo {
   // The reflectors the last frame traced: a pass that reads the frame's cubes again
   // (renderLookupDirections) draws each the same way.
   std::vector<ProbeLayout> lastTraced_;
+  FramePlan lastPlan_;
   PlannerSettings plannerSettings_;
   AccuracySettings accuracy_;
   uint64_t skyboxContent_ = 0;  // contentHash(*skybox_): captures compare it by value

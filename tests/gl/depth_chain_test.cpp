@@ -146,15 +146,21 @@ TEST(DepthPyramid, OnlyTheFacesRecapturedAreRebuilt) {
         readCodes(probe->pyramid(), false, 0, probe->topLevel(), 6, 1);
     const int kept = static_cast<int>(std::count(top.begin(), top.end(), mark));
     std::printf("frame %d: %d faces captured, %d marks kept\n", frame, stats.facesCaptured, kept);
+    // The faces the plan captured, as a mask.
+    unsigned planned = 0;
+    ASSERT_EQ(demo->lastPlan().probes.size(), 1u);
+    for (const FacePlan& f : demo->lastPlan().probes[0].faces) planned |= 1u << f.face;
     if (frame == 0) {
       EXPECT_EQ(stats.facesCaptured, 6);  // the first frame: no mark yet, every face drawn
       EXPECT_EQ(kept, 0);
     } else {
       EXPECT_EQ(kept, 6 - stats.facesCaptured) << "frame " << frame;
       partialFrames += stats.facesCaptured > 0 && stats.facesCaptured < 6;
-      // The faces rebuilt (no mark left) bound their texels at every level.
+      // The faces rebuilt (no mark left) are exactly the faces captured, and they bound their
+      // texels at every level.
       unsigned rebuilt = 0;
       for (size_t f = 0; f < 6; ++f) rebuilt |= top[f] == mark ? 0u : 1u << f;
+      EXPECT_EQ(rebuilt, planned) << "frame " << frame;
       for (int layer = 0; layer < probe->format().layers; ++layer) {
         checkPyramid(*probe, layer, rebuilt);
       }

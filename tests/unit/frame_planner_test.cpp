@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/frame_planner.h"
@@ -270,6 +271,48 @@ TEST(FramePlanner, EveryNFramesCapturesOnlyOnItsFrames) {
     faces.push_back(planner.plan(scene, {}, everyThird).facesCaptured());
   }
   EXPECT_EQ(faces, (std::vector<int>{6, 0, 0, 1, 0, 0, 1}));
+}
+
+// With everything moving, every face is stale every frame: a policy that spreads the redraws must
+// still reach each face within its bound (maxStalenessFrames), and not starve any.
+void expectNoFaceStarves(PlannerSettings settings) {
+  FramePlanner planner;
+  std::array<int, 6> last;
+  last.fill(-1);  // "captured" just before the first frame: staleness counts from the start
+  for (int frame = 0; frame < 24; ++frame) {
+    std::vector<PlannedObject> scene = {mirrorAt({0, 0, 0})};
+    const float wobble = 0.01f * static_cast<float>(frame);
+    for (const glm::vec3& d : {glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0),
+                               glm::vec3(0, -1, 0), glm::vec3(0, 0, 1), glm::vec3(0, 0, -1)}) {
+      scene.push_back(boxAt(5.0f * d + glm::vec3(wobble)));  // one in front of each face, moving
+    }
+    const FramePlan plan = planner.plan(scene, {}, settings);
+    for (int f : facesOf(plan.probes[0])) last[static_cast<size_t>(f)] = frame;
+    for (int f = 0; f < 6; ++f) {
+      EXPECT_LE(frame - last[static_cast<size_t>(f)], settings.maxStalenessFrames())
+          << policyName(settings.policy) << ": face " << f << " at frame " << frame;
+    }
+  }
+}
+
+TEST(FramePlanner, NoFaceStarvesWhenEverythingMoves) {
+  for (int k = 1; k <= 6; ++k) {
+    PlannerSettings sliced;
+    sliced.policy = UpdatePolicy::TimeSliced;
+    sliced.facesPerFrame = k;
+    expectNoFaceStarves(sliced);
+  }
+  for (int n : {1, 2, 3, 4, 7}) {
+    PlannerSettings everyN;
+    everyN.policy = UpdatePolicy::EveryNFrames;
+    everyN.everyN = n;
+    expectNoFaceStarves(everyN);
+  }
+  for (UpdatePolicy exact : {UpdatePolicy::EveryFrame, UpdatePolicy::WhenChanged}) {
+    PlannerSettings s;
+    s.policy = exact;
+    expectNoFaceStarves(s);  // bound 0: every face, every frame
+  }
 }
 
 TEST(FramePlanner, PolicyNamesRoundTrip) {
