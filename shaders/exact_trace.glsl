@@ -24,12 +24,14 @@
 // Tracing needs full precision whatever the shader's default (mediump would lose the triangles).
 precision highp float;
 precision highp int;
-const int kExactWidthShift = 10;    // log2(kBvhTextureWidth)
-const int kExactInstance = 10;      // kInstanceTexels
-const int kExactStack = 66;         // two levels of kBvhMaxDepth, and a leaf of objects split
+// From the C++ that writes the atlas and holds the rays' limits (gfx/program_key.cpp).
+const int kExactWidthShift = EXACT_WIDTH_SHIFT;     // kBvhTextureWidthShift
+const int kExactInstance = EXACT_INSTANCE_TEXELS;   // kInstanceTexels
+const int kExactTriangle = EXACT_TRIANGLE_TEXELS;   // kTriangleTexels
+const int kExactStack = EXACT_STACK;                // two levels of kBvhMaxDepth, and some
+const int kExactMaxBounces = EXACT_MAX_BOUNCES;     // core/trace_limits.h's kMaxBounces
+const int kExactMaxInternal = EXACT_MAX_INTERNAL;   // and kMaxInternalReflections
 const int kExactSteps = 4096;       // a bound on one walk's turns (a walk takes tens)
-const int kExactMaxBounces = 4;     // reference_renderer.h's kMaxBounces
-const int kExactMaxInternal = 8;    // and kMaxInternalReflections
 const float kExactFar = 3.0e38;     // no hit
 
 uniform highp sampler2D u_exactAtlas;
@@ -141,7 +143,7 @@ ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only)
         best.u = u;
         best.v = v;
       }
-      ref += 3;  // kTriangleTexels
+      ref += kExactTriangle;
       --count;
       done = count == 0;
     } else {  // an object: a, b, c = its inverse model's rows, e = (root, count, object)

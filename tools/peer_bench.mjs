@@ -3,7 +3,7 @@
 // headless Chromium (Debian's, SwiftShader WebGL2). Not a test: it prints numbers and exits 0.
 //
 //   node tools/peer_bench.mjs [--heavy] [--rounds N] [--frames N] [--warmup N] [--size WxH]
-//                             [--site DIR] [--pages KEY,KEY,...] [--query EXTRA]
+//                             [--site DIR] [--pages KEY,KEY,...] [--query EXTRA] [--scene NAME]
 //   node tools/peer_bench.mjs --screenshots DIR [--time T] [--heavy] [--pages ...] [--size WxH]
 //   node tools/peer_bench.mjs --serve [--heavy] [--site DIR]
 //
@@ -32,6 +32,7 @@ const PROJECT_PAGES = [
   { key: 'default', label: 'project default', query: '' },
   { key: 'exact', label: 'project exact', query: 'search=exact' },
   { key: 'course', label: 'project course setting', query: 'acc=original&policy=every-frame&captureLod=0' },
+  { key: 'hierarchical', label: 'project hierarchical', query: 'search=hierarchical' },
 ];
 // The peers (tools/peers/), each driven through window.peer.
 const PEER_PAGES = [
@@ -47,7 +48,7 @@ const PAGES = [...PROJECT_PAGES, ...PEER_PAGES, ...BASE_PAGES];
 function parseArgs(argv) {
   const o = { heavy: false, rounds: 2, frames: 20, warmup: 5, width: 800, height: 800,
               site: join(repo, 'build/web/site'), pages: PAGES.map((p) => p.key), query: '',
-              screenshots: null, time: 0, serve: false, against: null };
+              screenshots: null, time: 0, serve: false, against: null, scene: null };
   for (let i = 0; i < argv.length; ++i) {
     const arg = argv[i];
     const value = () => {
@@ -65,6 +66,7 @@ function parseArgs(argv) {
     else if (arg === '--time') o.time = Number(value());
     else if (arg === '--serve') o.serve = true;
     else if (arg === '--against') o.against = resolve(value());
+    else if (arg === '--scene') o.scene = value();
     else if (arg === '--size') {
       const m = /^(\d+)x(\d+)$/.exec(value());
       if (!m) throw new Error('--size wants WIDTHxHEIGHT');
@@ -84,6 +86,9 @@ function parseArgs(argv) {
   if (!Number.isFinite(o.time)) throw new Error('--time wants a number of seconds');
   if (!o.against) o.pages = o.pages.filter((key) => !key.startsWith('base-'));
   else if (!argv.includes('--pages')) o.pages = PAGES.map((p) => p.key);
+  if (o.scene && !/^[\w.-]+$/.test(o.scene)) throw new Error('--scene wants a shipped scene name');
+  // The peers render the default scene only.
+  if (o.scene) o.pages = o.pages.filter((key) => !PEER_PAGES.some((p) => p.key === key));
   const unknown = o.pages.filter((key) => !PAGES.some((p) => p.key === key));
   if (unknown.length) throw new Error(`unknown page ${unknown.join(', ')}; pages: ${PAGES.map((p) => p.key).join(', ')}`);
   return o;
@@ -134,7 +139,8 @@ function assemble(o) {
 function pageUrl(page, o, extra = []) {
   const parts = page.peer
     ? [o.serve ? '' : 'bench', o.heavy ? 'assets=../heavy-bench/' : '']
-    : [o.heavy ? `assets=${page.base ? '../' : ''}heavy-bench/` : '', page.query, o.query];
+    : [o.heavy ? `assets=${page.base ? '../' : ''}heavy-bench/` : '', o.scene ? `scene=${o.scene}` : '', page.query,
+       o.query];
   return `${page.path || 'index.html'}?${[...parts, ...extra].filter(Boolean).join('&')}`;
 }
 

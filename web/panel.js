@@ -50,6 +50,19 @@ export function buildPanel(GUI, session, actions) {
   gui.add(view, 'scene', sceneOptions).name('scene').onChange((v) => session.loadScene(v).catch(() => {}))
     .domElement.id = 'control-scene';
 
+  // A named preset: the course's scheme one pick away (its settings then show in the folders).
+  const presetNames = (schema.presets || []).map((p) => p.name);
+  if (presetNames.length) {
+    view.preset = '';
+    const c = gui.add(view, 'preset', ['', ...presetNames]).name('preset').onChange((v) => {
+      if (v) session.applyPreset(v);
+      view.preset = '';
+      refresh();
+    });
+    c.domElement.id = 'control-preset';
+    c.domElement.title = schema.presets.map((p) => `${p.name}: ${p.help}`).join('\n');
+  }
+
   const capture = gui.addFolder('Capture');
   const cubeOptions = [...CUBE_SIZES];
   const addCube = () => {

@@ -188,6 +188,14 @@ export class Session {
     return error;
   }
   setAccuracy(changes) { return this.report(this.bridge.setAccuracy(changes)); }
+  // A named preset (the schema's presets: the course's scheme, the shipped defaults): its planner
+  // and accuracy settings at once. Returns "" or the problem.
+  applyPreset(name) {
+    const preset = (this.schema.presets || []).find((p) => p.name === name);
+    if (!preset) return this.report(`${name}: not a preset (${(this.schema.presets || []).map((p) => p.name).join(', ')})`);
+    this.modes.chosen = null;
+    return this.setAccuracy(preset.accuracy) || this.setPlanner(preset.planner);
+  }
   setMaterial(index, changes) { return this.report(this.bridge.setMaterial({ index, changes })); }
   // Show error, auto and its budget (the 'view' listeners: the panel, the address bar, auto).
   setView(changes) { return this.report(this.bridge.setView(changes), 'view'); }

@@ -4,6 +4,7 @@
 //
 //   scene=NAME|URL  cube=PIXELS (the capture's face size; default: the scene file's)
 //   policy=…&facesPerFrame=…&everyN=…&captureLod=…&viewLod=…   (the planner's settings)
+//   preset=NAME (a named preset's planner and accuracy settings; the link's own keys override it)
 //   acc=ROW (a measured accuracy mode: a row name of sweep.csv, with its cube size unless cube=)
 //   captureAtOrigin=…&search=…&…   (accuracy settings, written when no row has them)
 //   mat=INDEX:NAME=VALUE,…;…   (changed material settings; INDEX is the object's place from 0)
@@ -102,6 +103,17 @@ export function parseQuery(search, schema) {
   for (const group of ['planner', 'accuracy', 'view']) {
     for (const info of schema[group] || []) {
       if (params.has(info.name)) state[group][info.name] = fromText(info, params.get(info.name));
+    }
+  }
+  if (params.has('preset')) {
+    // A preset's settings under the link's own: the keys the link gives win.
+    const name = params.get('preset');
+    const preset = (schema.presets || []).find((p) => p.name === name);
+    if (!preset) {
+      problems.push(`preset=${name}: not a preset (${(schema.presets || []).map((p) => p.name).join(', ')}); ignored`);
+    } else {
+      state.planner = { ...preset.planner, ...state.planner };
+      state.accuracy = { ...preset.accuracy, ...state.accuracy };
     }
   }
   for (const [old, name] of Object.entries(RENAMED)) {

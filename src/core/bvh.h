@@ -105,9 +105,8 @@ RayHit intersectScene(const SceneBvh& scene, const glm::vec3& origin, const glm:
 //
 // RGBA32F texels, kBvhTextureWidth a row; indices and counts are stored as floats (exact below
 // 2^24 texels).
-inline constexpr int kBvhTextureWidth = 1024;  // a power of two: the shader splits with a shift
-static_assert((kBvhTextureWidth & (kBvhTextureWidth - 1)) == 0,
-              "the shader splits a texel index with a shift and a mask");
+inline constexpr int kBvhTextureWidthShift = 10;  // the shader splits a texel index with a shift
+inline constexpr int kBvhTextureWidth = 1 << kBvhTextureWidthShift;
 inline constexpr int kStepTexels = 4;  // what one turn of the shader's loop reads
 inline constexpr int kNodeTexels = 4;  // an interior node: both children, (min, ref) (max, count)
 inline constexpr int kTriangleTexels = 3;  // v0, v1 - v0, v2 - v0; v0.w = the triangle's slot

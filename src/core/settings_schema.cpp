@@ -1,5 +1,7 @@
 #include "core/settings_schema.h"
 
+#include "core/presets.h"
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -318,7 +320,8 @@ json settingsSchemaJson() {
   return {{"planner", schemaOf(plannerFields())},
           {"accuracy", schemaOf(accuracyFields())},
           {"material", schemaOf(materialFields())},
-          {"view", schemaOf(viewFields())}};
+          {"view", schemaOf(viewFields())},
+          {"presets", presetsJson()}};
 }
 
 }  // namespace reflect

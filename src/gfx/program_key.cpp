@@ -2,6 +2,9 @@
 
 #include <cctype>
 
+#include "core/bvh.h"
+#include "core/trace_limits.h"
+
 namespace reflect {
 namespace {
 
@@ -41,6 +44,16 @@ std::string ProgramKey::defines() const {
   out += define("REFRACTS", refracts ? 1 : 0);
   out += define("GLASS_EXIT", glassExit ? 1 : 0);
   out += define("EXACT_GENERAL", traceGeneral ? 1 : 0);
+  if (search == Search::Exact) {
+    // The atlas's layout and the rays' limits, from the C++ that writes and checks them.
+    out += define("EXACT_WIDTH_SHIFT", kBvhTextureWidthShift);
+    out += define("EXACT_INSTANCE_TEXELS", kInstanceTexels);
+    out += define("EXACT_TRIANGLE_TEXELS", kTriangleTexels);
+    // Both levels' depth, and a leaf of objects split into pairs of slots.
+    out += define("EXACT_STACK", 2 * kBvhMaxDepth + 2);
+    out += define("EXACT_MAX_BOUNCES", kMaxBounces);
+    out += define("EXACT_MAX_INTERNAL", kMaxInternalReflections);
+  }
   return out;
 }
 

@@ -65,11 +65,9 @@
 #include "core/result.h"
 #include "core/scene.h"
 #include "core/skybox_faces.h"
+#include "core/trace_limits.h"
 
 namespace reflect {
-
-inline constexpr int kMaxBounces = 4;
-inline constexpr int kMaxInternalReflections = 8;
 
 struct ReferenceFrame {
   RgbaImage image;

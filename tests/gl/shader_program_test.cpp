@@ -2,6 +2,9 @@
 // driver's log, and a file the build did not embed is named.
 #include <gtest/gtest.h>
 
+#include "core/bvh.h"
+#include "core/trace_limits.h"
+#include "gfx/program_key.h"
 #include "gfx/shader_program.h"
 #include "gl_fixture.h"
 
@@ -53,6 +56,55 @@ TEST(ShaderProgram, DefinesReachTheFragmentShader) {
             std::string::npos)
       << broken.error();
   EXPECT_TRUE(ShaderProgram::build("fullscreen.vert", "depth_reduce.frag"));
+}
+
+// The renderer builds a variant the first time a draw needs one: every variant it can ask for
+// must compile and link, not only those the tests' scenes happen to draw.
+TEST(ProgramKeys, EveryVariantBuilds) {
+  std::vector<ProgramKey> keys;
+  for (bool capture : {false, true}) {
+    keys.push_back({Look::Phong, capture});
+    keys.push_back({Look::CubeTextured, capture});
+    for (Search search : {Search::Plain, Search::Linear, Search::Hierarchical, Search::Exact}) {
+      for (bool refracts : {false, true}) {
+        for (bool glassExit : {false, true}) {
+          if (glassExit && (!refracts || search == Search::Exact)) continue;
+          for (bool general : {false, true}) {
+            if (search != Search::Exact && general) continue;
+            if (search == Search::Exact && refracts && !general) continue;  // glass: general
+            keys.push_back({Look::Environment, capture, search, refracts, glassExit, general});
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(keys.size(), 28u);  // two passes x (Phong, cube-textured, 12 environment variants)
+  for (const ProgramKey& key : keys) {
+    for (bool mediump : {false, true}) {
+      const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
+      Result<ShaderProgram> built =
+          ShaderProgram::build("mesh.vert", key.fragmentFile(), mediump, precision + key.defines());
+      EXPECT_TRUE(built) << key.describe() << (mediump ? ", mediump" : "") << ": "
+                         << (built ? "" : built.error());
+    }
+  }
+}
+
+TEST(ProgramKeys, TheTracersConstantsComeFromTheCpp) {
+  const std::string defines = ProgramKey{Look::Environment, false, Search::Exact}.defines();
+  EXPECT_NE(defines.find("#define SEARCH SEARCH_EXACT\n"), std::string::npos);
+  EXPECT_NE(defines.find("#define SEARCH_EXACT " + std::to_string(static_cast<int>(Search::Exact))),
+            std::string::npos);
+  EXPECT_NE(defines.find("#define EXACT_WIDTH_SHIFT " + std::to_string(kBvhTextureWidthShift)),
+            std::string::npos);
+  EXPECT_NE(defines.find("#define EXACT_INSTANCE_TEXELS " + std::to_string(kInstanceTexels)),
+            std::string::npos);
+  EXPECT_NE(defines.find("#define EXACT_MAX_BOUNCES " + std::to_string(kMaxBounces)),
+            std::string::npos);
+  // The main pass writes the colour alone; a capture its outputs too.
+  const ProgramKey mainPass, capture{Look::Phong, true};
+  EXPECT_NE(mainPass.defines().find("#define CAPTURE_OUTPUT 0"), std::string::npos);
+  EXPECT_NE(capture.defines().find("#define CAPTURE_OUTPUT 1"), std::string::npos);
 }
 
 }  // namespace

@@ -75,7 +75,8 @@ Measured measure(Demo& demo, const ReferenceFrame& reference, double t) {
 }
 
 void expectDefaultWithinFullDetail(bool dense) {
-  auto demo = testing::makeDemo(makeDynamicReflectionScene());
+  // Capture LOD serves the captured probes: the hierarchical search (planned traces this scene).
+  auto demo = testing::makeCapturingDemo(makeDynamicReflectionScene());
   if (dense) {
     ASSERT_EQ(demo->setMeshData("mario.obj", denseFigure()), "");
   }

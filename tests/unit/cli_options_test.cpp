@@ -231,11 +231,11 @@ TEST(CliOptions, ErrorsSayWhatIsExpected) {
   EXPECT_EQ(errorOf({"render", "--assets", "/no/such/folder"}),
             "--assets /no/such/folder: not a folder");
   EXPECT_EQ(errorOf({"bench", "--growth", "--sweep"}),
-            "bench: --growth, --sweep, --lod-sweep and --view-lod-sweep are separate modes; give "
-            "one of them");
+            "bench: --growth, --sweep, --costs, --lod-sweep and --view-lod-sweep are separate "
+            "modes; give one of them");
   EXPECT_EQ(errorOf({"bench", "--lod-sweep", "--view-lod-sweep"}),
-            "bench: --growth, --sweep, --lod-sweep and --view-lod-sweep are separate modes; give "
-            "one of them");
+            "bench: --growth, --sweep, --costs, --lod-sweep and --view-lod-sweep are separate "
+            "modes; give one of them");
   EXPECT_EQ(errorOf({"render", "--eye", "1,2"}), "--eye: 1,2 is not three numbers X,Y,Z");
   EXPECT_EQ(errorOf({"render", "--eye", "1,2,x"}), "--eye: 1,2,x is not three numbers X,Y,Z");
   EXPECT_EQ(errorOf({"render", "--eye", "1,2,3,4"}), "--eye: 1,2,3,4 is not three numbers X,Y,Z");

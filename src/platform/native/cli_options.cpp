@@ -14,6 +14,7 @@
 #include <system_error>
 
 #include "app/demo.h"
+#include "core/presets.h"
 #include "core/settings_schema.h"
 #include "platform/native/model_paths.h"
 
@@ -382,6 +383,17 @@ void defineScene(Command& c, CliOptions& o) {
 }
 
 void defineSettings(Command& c, CliOptions& o) {
+  std::string names;
+  for (const Preset& p : presets()) names += (names.empty() ? "" : ", ") + p.name;
+  std::string help = "start from a named preset (the options given beside it override it):";
+  for (const Preset& p : presets()) help += " " + p.name + " (" + p.help + ");";
+  help.pop_back();
+  c.value("--preset", "NAME", help, "one of " + names, kPlanner,
+          [&o, names](const std::string& text) {
+            if (!findPreset(text)) return "--preset: \"" + text + "\" is not one of " + names;
+            o.preset = text;
+            return std::string();
+          });
   for (const auto& field : plannerFields()) c.setting(field, o.planner, kPlanner);
   for (const auto& field : accuracyFields()) c.setting(field, o.accuracy, kAccuracy);
 }
@@ -616,6 +628,19 @@ Result<CliOptions> parseCli(const std::vector<std::string>& args) {
     help.command = "help";
     help.helpTopic = command;
     return help;
+  }
+  // A preset's settings, where no option of the command line gave one.
+  if (const Preset* preset = findPreset(o.preset)) {
+    for (const auto& field : plannerFields()) {
+      if (!definition->given(field.info.optionName())) {
+        field.set(o.planner, field.get(preset->planner));
+      }
+    }
+    for (const auto& field : accuracyFields()) {
+      if (!definition->given(field.info.optionName())) {
+        field.set(o.accuracy, field.get(preset->accuracy));
+      }
+    }
   }
   o.policySet = definition->given("--policy");
   o.budgetSet = command == "bench" && definition->given("--budget");

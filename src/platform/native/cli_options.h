@@ -31,6 +31,7 @@ struct CliOptions {
   std::string errorViewOut;       // render: also write the error view (heat map) of the frame
   std::string assets;             // a folder with the course's models, by their file names
   std::string scene = "ex12-2";   // a shipped scene's name, or a .json path
+  std::string preset;             // --preset: a named preset (core/presets.h), or ""
   std::optional<int> cubeSize;    // otherwise the scene's capture.faceSize
   float yawDeg = 0.0f;
   float pitchDeg = 0.0f;
