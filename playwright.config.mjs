@@ -1,8 +1,11 @@
 // Playwright drives Debian's Chromium (no browser download). The page is served by
-// tools/serve.mjs from the web build; ./test.sh builds it first.
+// tools/serve.mjs from the web build; ./test.sh builds it first, starts the server on a port the
+// system picks and passes its address in TEST_BASE_URL. Run by hand, the config starts one itself
+// on TEST_PORT (default 8181).
 import { defineConfig } from '@playwright/test';
 
 const port = Number(process.env.TEST_PORT || 8181);
+const given = process.env.TEST_BASE_URL || null;
 
 export default defineConfig({
   testDir: 'tests/web',
@@ -18,7 +21,7 @@ export default defineConfig({
   expect: { timeout: 15_000 },
   reporter: [['list']],
   use: {
-    baseURL: `http://127.0.0.1:${port}/`,
+    baseURL: given || `http://127.0.0.1:${port}/`,
     viewport: { width: 800, height: 600 },
     launchOptions: {
       executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
@@ -26,7 +29,7 @@ export default defineConfig({
              '--disable-sync', '--no-first-run', '--disable-default-apps'],
     },
   },
-  webServer: {
+  webServer: given ? undefined : {
     command: `node tools/serve.mjs build/web/site ${port}`,
     url: `http://127.0.0.1:${port}/`,
     reuseExistingServer: false,

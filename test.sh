@@ -35,7 +35,13 @@ fi
 echo "== web build and Playwright"
 cmake --preset web >/dev/null
 cmake --build --preset web
-# A port nobody holds right now (a shared machine may run another server on any fixed one).
-TEST_PORT="${TEST_PORT:-$(node -e "const s=require('net').createServer().listen(0,'127.0.0.1',()=>{console.log(s.address().port);s.close();})")}"
-export TEST_PORT
+# The page's server on a port the system picks (0): it writes the port it got once listening.
+port_file="build/test-server.port"
+rm -f "$port_file"
+node tools/serve.mjs build/web/site 0 --port-file "$port_file" >/dev/null &
+server=$!
+trap 'kill "$server" 2>/dev/null || true' EXIT
+for _ in $(seq 100); do [ -s "$port_file" ] && break; sleep 0.1; done
+[ -s "$port_file" ] || { echo "test.sh: the test server did not start"; exit 1; }
+export TEST_BASE_URL="http://127.0.0.1:$(cat "$port_file")/"
 npx playwright test

@@ -1,13 +1,19 @@
-// A static file server for the built page (no dependencies): node tools/serve.mjs DIR [PORT]
+// A static file server for the built page (no dependencies):
+//   node tools/serve.mjs DIR [PORT] [--port-file FILE]
 // Binds 127.0.0.1 only. Serves .wasm as application/wasm so the browser can stream-compile it.
+// PORT 0 takes a free port; it is printed, and with --port-file written to FILE once listening
+// (./test.sh starts the tests' server so: no port is chosen, released and bound again).
 import { createServer } from 'node:http';
-import { createReadStream } from 'node:fs';
+import { createReadStream, writeFileSync } from 'node:fs';
 import { stat } from 'node:fs/promises';
 import { pipeline } from 'node:stream';
 import { extname, join, normalize, resolve, sep } from 'node:path';
 
-const root = resolve(process.argv[2] || 'build/web/site');
-const port = Number(process.argv[3] ?? process.env.PORT ?? 8080);  // the argument wins
+const args = process.argv.slice(2);
+const portFileAt = args.indexOf('--port-file');
+const portFile = portFileAt >= 0 ? args.splice(portFileAt, 2)[1] : null;
+const root = resolve(args[0] || 'build/web/site');
+const port = Number(args[1] ?? process.env.PORT ?? 8080);  // the argument wins
 const types = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8',
   '.mjs': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
@@ -48,5 +54,7 @@ const server = createServer(async (request, response) => {
   }
 });
 server.listen(port, '127.0.0.1', () => {
-  console.log(`serving ${root} at http://127.0.0.1:${port}/`);
+  const { port: bound } = server.address();
+  if (portFile) writeFileSync(portFile, `${bound}\n`);
+  console.log(`serving ${root} at http://127.0.0.1:${bound}/`);
 });

@@ -6,8 +6,8 @@
 //  - default scene, mean >= 40 dB: MISSED (pooled 39.1 dB here); held at 38.5 so that a
 //    regression shows, not the target.
 //  - pixels off by more than 32 levels at most 1/10 of the linear search's at every time: MISSED
-//    (15/43, 6/33, 5/20, 5/31: a third to a sixth); held at a half at every time, and a tenth of
-//    the course's.
+//    (15/43, 6/33, 5/20, 5/31: a third to a sixth); held at 0.4 of it at every time (the level
+//    reached), and a tenth of the course's.
 //  - glass sphere within 35 dB of the two-surface reference: MISSED at t = 4.5 s (23.0 dB: the
 //    figure just behind the glass, magnified, where the search's texel-sized misplacement
 //    shows); 46.9, 43.4 and 40.3 dB at the other times. Held: every time at least 2 dB above the
@@ -95,7 +95,8 @@ TEST(AccuracyTargets, DefaultSceneHasFewVisiblyWrongPixels) {
   ASSERT_EQ(course.size(), kHeldOutTimes.size());
   for (size_t i = 0; i < shipped.size(); ++i) {
     EXPECT_GT(linear[i].visible, 0u);  // not vacuous: the yardstick has such pixels
-    EXPECT_LE(2 * shipped[i].visible, linear[i].visible) << "t=" << kHeldOutTimes[i];
+    // Held at the level reached (0.16 to 0.35 of the linear search's), not at the target's 0.1.
+    EXPECT_LE(10 * shipped[i].visible, 4 * linear[i].visible) << "t=" << kHeldOutTimes[i];
     EXPECT_LE(10 * shipped[i].visible, course[i].visible) << "t=" << kHeldOutTimes[i];
   }
 }

@@ -4,7 +4,8 @@ import { test, expect } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import {
-  canvasScreenshot, colourSummary, expectedSphereBox, measureGoldSphere, openDemo, readyOutcome,
+  animationFrames, canvasScreenshot, colourSummary, expectedSphereBox, idle, measureGoldSphere, openDemo,
+  readyOutcome,
   renderAndRead,
 } from './helpers.mjs';
 
@@ -139,7 +140,8 @@ test('a course-like sphere.obj (quads v/vt/vn, CR CR LF, missing mtllib, several
   await page.goto('?paused&assets=/course/');
   expect(await readyOutcome(page)).toBe('resolved');
   expect(requested).not.toContain('course_materials_missing.mtl');
-  await page.waitForTimeout(200);
+  await idle(page);
+  await animationFrames(page, 5);
   await expect(page.locator('#messages .message')).toHaveCount(0);
   const course = await renderAndRead(page, 0);
 

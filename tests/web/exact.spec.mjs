@@ -1,7 +1,7 @@
 // Issue 13 in the page: the exact mode (search=exact), the live error view (show error), the
 // frame-budget pick (auto) and drawing on demand (no frame at all while idle).
 import { test, expect } from '@playwright/test';
-import { collectErrors, idle, openDemo } from './helpers.mjs';
+import { animationFrames, collectErrors, idle, openDemo } from './helpers.mjs';
 
 test('idle: paused and unchanged, the page draws no frame in 2 s; a change draws at once', async ({ page }) => {
   await openDemo(page, '?paused&t=1');
@@ -9,7 +9,7 @@ test('idle: paused and unchanged, the page draws no frame in 2 s; a change draws
   await expect.poll(() => page.evaluate(() => window.demo.drawingIdle())).toBe(true);
   await expect(page.locator('#stats')).toContainText('idle');
   const before = await page.evaluate(() => window.demo.framesDrawn());
-  await page.waitForTimeout(2000);
+  await animationFrames(page, 60);  // a second of display frames, none of them drawn
   expect(await page.evaluate(() => window.demo.framesDrawn())).toBe(before);
   expect(await page.evaluate(() => window.demo.drawingIdle())).toBe(true);
   // Any change draws again: a camera step, then a setting.
@@ -28,7 +28,7 @@ test('the canvas keeps its picture while idle', async ({ page }) => {
   await openDemo(page, '?paused&t=1');
   await idle(page);
   await expect.poll(() => page.evaluate(() => window.demo.drawingIdle())).toBe(true);
-  await page.waitForTimeout(500);
+  await animationFrames(page, 15);
   const shot = await page.locator('#canvas').screenshot();
   // The screenshot is the composited canvas: not cleared (the sphere's gold and the ground's blue
   // are there), though no frame was drawn for it.

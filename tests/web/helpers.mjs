@@ -37,6 +37,16 @@ export async function openDemo(page, query = '?paused') {
   await page.evaluate(() => window.demo.lodReady());
 }
 
+// Resolves after the page's display has ticked `count` times (requestAnimationFrame): a check
+// that nothing happened waits for the frames the page would have drawn in, not for a time.
+export async function animationFrames(page, count) {
+  await page.evaluate((n) => new Promise((resolve) => {
+    let seen = 0;
+    const tick = () => (++seen >= n ? resolve() : requestAnimationFrame(tick));
+    requestAnimationFrame(tick);
+  }), count);
+}
+
 // Resolves once the page's job queue (scene loads, model changes, the bench) is empty.
 export async function idle(page) {
   await page.evaluate(() => window.demo.idle());

@@ -1,7 +1,7 @@
 // Input: pointer drags (mouse and touch) turn the view by 100 degrees per canvas height, keys
 // move and reset the camera, Space pauses.
 import { test, expect } from '@playwright/test';
-import { openDemo, PANEL_OPEN_VIEWPORT, renderAndRead } from './helpers.mjs';
+import { animationFrames, openDemo, PANEL_OPEN_VIEWPORT, renderAndRead } from './helpers.mjs';
 
 const camera = (page) => page.evaluate(() => window.demo.camera());
 
@@ -138,7 +138,7 @@ test('W / ArrowUp move forward 0.1, S / ArrowDown back, R resets the camera', as
 test('Space toggles pause', async ({ page }) => {
   await openDemo(page, '?paused&t=1');
   await page.locator('#canvas').focus();
-  await page.waitForTimeout(300);
+  await animationFrames(page, 10);
   expect((await page.evaluate(() => window.demo.stats())).time).toBe(1);
   await page.keyboard.press(' ');
   await expect.poll(async () => (await page.evaluate(() => window.demo.stats())).time).toBeGreaterThan(1.05);
@@ -146,7 +146,7 @@ test('Space toggles pause', async ({ page }) => {
   await page.keyboard.press(' ');
   await expect(page.locator('#stats')).toContainText('paused');
   const t = (await page.evaluate(() => window.demo.stats())).time;
-  await page.waitForTimeout(300);
+  await animationFrames(page, 10);
   expect((await page.evaluate(() => window.demo.stats())).time).toBe(t);
 });
 

@@ -3,7 +3,7 @@
 import { test, expect } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import {
-  canvasScreenshot, collectErrors, colourSummary, makeSphereTest, openDemo, readyOutcome, renderAndRead,
+  animationFrames, canvasScreenshot, collectErrors, colourSummary, makeSphereTest, openDemo, readyOutcome, renderAndRead,
 } from './helpers.mjs';
 
 test('loads without errors, resolves demo.ready and draws a non-blank scene', async ({ page }) => {
@@ -133,7 +133,7 @@ test('?cube=128 captures 128-pixel faces', async ({ page }) => {
 
 test('?t=SECONDS sets the scene time, ?paused keeps it', async ({ page }) => {
   await openDemo(page, '?paused&t=2');
-  await page.waitForTimeout(300);  // a few rAF frames
+  await animationFrames(page, 10);  // frames that would have moved a running clock
   const s = await page.evaluate(() => window.demo.stats());
   expect(s.time).toBeCloseTo(2, 6);
   expect(s.orbitDegrees).toBeCloseTo(54, 4);  // 27 degrees a second

@@ -5,7 +5,7 @@ import { readFileSync, readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { decodePng } from './png.mjs';
 import {
-  collectErrors, colourSummary, idle, openDemo, PANEL_OPEN_VIEWPORT, renderAndRead,
+  animationFrames, collectErrors, colourSummary, idle, openDemo, PANEL_OPEN_VIEWPORT, renderAndRead,
 } from './helpers.mjs';
 
 // The panel's controls are used: a window where it starts open, the canvas 800x600 beside it.
@@ -120,7 +120,7 @@ test('pause, single step and reset camera', async ({ page }) => {
   await paused.check();
   expect(await page.evaluate(() => window.demo.paused())).toBe(true);
   const t0 = (await page.evaluate(() => window.demo.stats())).time;
-  await page.waitForTimeout(200);
+  await animationFrames(page, 10);
   expect((await page.evaluate(() => window.demo.stats())).time).toBe(t0);
   await button(page, 'control-step').click();
   expect((await page.evaluate(() => window.demo.stats())).time).toBeCloseTo(t0 + 1 / 60, 6);
