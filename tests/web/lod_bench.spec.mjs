@@ -30,7 +30,8 @@ test('LOD levels are built for every mesh after the scene loads, by the native r
 });
 
 test('with captureLod=0.5 the capture draws fewer triangles than with captureLod=0 (skybox scene)', async ({ page }) => {
-  await openDemo(page, '?paused&scene=skybox&captureLod=0.25');
+  // Capture LOD serves captured probes: the skybox scene's live mirror, searched hierarchically.
+  await openDemo(page, '?paused&scene=skybox&captureLod=0.25&search=hierarchical');
   expect((await page.evaluate(() => window.demo.planner())).captureLod).toBe(0.25);
   await page.evaluate(() => window.demo.lodReady());
   // A new LOD setting makes when-changed recapture every face, so both frames capture all of them.
@@ -70,7 +71,8 @@ test('?bench runs every policy and prints the table; when-changed matches every-
   test.setTimeout(120_000);
   const infos = [];
   page.on('console', (m) => { if (m.type() === 'info') infos.push(m.text()); });
-  await openDemo(page, '?bench&frames=8');
+  // The policies are the capture's: the mirror captured and searched (the default traces it).
+  await openDemo(page, '?bench&frames=8&search=hierarchical');
   await page.waitForFunction(() => window.demo.benchResults, null, { timeout: 100_000 });
   const results = await page.evaluate(() => window.demo.benchResults);
   expect(results.scene).toBe('ex12-2');

@@ -19,7 +19,8 @@ const button = (page, id) => page.locator(`#${id} button`);
 const planner = (page) => page.evaluate(() => window.demo.planner());
 
 test('the update policy select, its parameters and the LOD slider set the planner', async ({ page }) => {
-  await openDemo(page, '?paused');
+  // The policies are the capture's: the mirror captured (the default traces it here).
+  await openDemo(page, '?paused&search=hierarchical');
   await expect(page.locator('#panel')).toBeVisible();
   expect((await planner(page)).policy).toBe('when-changed');
   await expect(page.locator('#control-staleness input')).toHaveValue('none: always current');
