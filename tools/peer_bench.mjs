@@ -36,8 +36,8 @@ const PROJECT_PAGES = [
 ];
 // The peers (tools/peers/), each driven through window.peer.
 const PEER_PAGES = [
-  { key: 'cubecamera', label: 'three.js CubeCamera', path: 'peers/cubecamera.html', peer: true },
-  { key: 'bvh', label: 'three.js + three-mesh-bvh', path: 'peers/bvh.html', peer: true },
+  { key: 'cubecamera', label: 'three.js CubeCamera', path: 'peers/index.html', query: 'rendition=cubecamera', peer: true },
+  { key: 'bvh', label: 'three.js + three-mesh-bvh', path: 'peers/index.html', query: 'rendition=bvh', peer: true },
 ];
 // With --against DIR, another build of the project's page (e.g. the last landing's
 // build/web/site) is served under base/ and its configurations join as base-KEY.
@@ -138,7 +138,7 @@ function assemble(o) {
 // told not to animate themselves, except for a person looking at them (--serve).
 function pageUrl(page, o, extra = []) {
   const parts = page.peer
-    ? [o.serve ? '' : 'bench', o.heavy ? 'assets=../heavy-bench/' : '']
+    ? [page.query, o.serve ? '' : 'bench', o.heavy ? 'assets=../heavy-bench/' : '']
     : [o.heavy ? `assets=${page.base ? '../' : ''}heavy-bench/` : '', o.scene ? `scene=${o.scene}` : '', page.query,
        o.query];
   return `${page.path || 'index.html'}?${[...parts, ...extra].filter(Boolean).join('&')}`;

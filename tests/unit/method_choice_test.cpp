@@ -77,12 +77,22 @@ CaptureContext planned() {
 
 const PlannerView kView{glm::vec3(0, 0, 7), 571.0f, 800.0f * 800.0f};
 
+// Costs under which tracing, or capturing, is clearly the cheaper.
+MethodCosts traceCheap() {
+  MethodCosts c = unitCosts();
+  c.tracePixel = 1e-6;
+  c.tracePixelLevel = 0.0;
+  return c;
+}
+MethodCosts captureCheap() {
+  MethodCosts c = unitCosts();
+  c.face = c.triangle = c.texel = c.searchPixel = 0.0;
+  return c;
+}
+
 TEST(MethodChoice, TracingCheaperMeansNoProbeAndNoFace) {
   FramePlanner planner;
-  MethodCosts costs = unitCosts();
-  costs.tracePixel = 1e-6;
-  costs.tracePixelLevel = 0.0;
-  planner.setCosts(costs);
+  planner.setCosts(traceCheap());
   const FramePlan plan = planner.plan(sceneWithMirror(), planned(), {}, kView);
   EXPECT_TRUE(plan.probes.empty());
   ASSERT_EQ(plan.traced.size(), 1u);
@@ -98,9 +108,7 @@ TEST(MethodChoice, TracingCheaperMeansNoProbeAndNoFace) {
 
 TEST(MethodChoice, CapturingCheaperMeansAProbeWithItsFaces) {
   FramePlanner planner;
-  MethodCosts costs = unitCosts();
-  costs.face = costs.triangle = costs.texel = costs.searchPixel = 0.0;
-  planner.setCosts(costs);
+  planner.setCosts(captureCheap());
   const FramePlan plan = planner.plan(sceneWithMirror(), planned(), {}, kView);
   EXPECT_TRUE(plan.traced.empty());
   ASSERT_EQ(plan.probes.size(), 1u);
@@ -177,9 +185,7 @@ TEST(MethodChoice, TheExactSearchTracesEveryMirrorAndGlass) {
 
 TEST(MethodChoice, ACubeTexturedObjectIsAlwaysCaptured) {
   FramePlanner planner;
-  MethodCosts costs = unitCosts();
-  costs.tracePixel = 1e-9;
-  planner.setCosts(costs);
+  planner.setCosts(traceCheap());
   CaptureContext context = planned();
   for (Search search : {Search::Planned, Search::Exact}) {
     context.accuracy.search = search;
@@ -192,14 +198,9 @@ TEST(MethodChoice, ACubeTexturedObjectIsAlwaysCaptured) {
 
 TEST(MethodChoice, SwitchingBackToCaptureRedrawsEveryFace) {
   FramePlanner planner;
-  MethodCosts traceCheap = unitCosts();
-  traceCheap.tracePixel = 1e-6;
-  traceCheap.tracePixelLevel = 0.0;
-  planner.setCosts(traceCheap);
+  planner.setCosts(traceCheap());
   planner.plan(sceneWithMirror(), planned(), {}, kView);
-  MethodCosts captureCheap = unitCosts();
-  captureCheap.face = captureCheap.triangle = captureCheap.texel = captureCheap.searchPixel = 0.0;
-  planner.setCosts(captureCheap);
+  planner.setCosts(captureCheap());
   // Nothing moved, but the trace kept no faces: all six are drawn.
   const FramePlan plan = planner.plan(sceneWithMirror(), planned(), {}, kView);
   ASSERT_EQ(plan.probes.size(), 1u);
