@@ -4,8 +4,10 @@
 Each mutation below is a deliberate bug in a rule that matters. One at a time, it is applied to a
 scratch copy of the committed tree (a git worktree under build/mutate), the native build there
 is brought up to date, and the tests that should catch it run. A mutation the tests miss is a
-survivor. Not part of ./test.sh: it rebuilds once per mutation (about an hour in all on two
-cores).
+survivor. A mutation of the page's JavaScript (web/) runs its Playwright specs instead, against a
+copy of the checkout's web build (build/web/site: build it first) with the file replaced. Not
+part of ./test.sh: it rebuilds once per mutation (about 15-25 s each, 15 minutes in all on two
+cores, after a first full build of the scratch tree).
 
     tools/mutate.sh [--list] [ID ...]
 
@@ -13,6 +15,7 @@ Prints one line per mutation (caught by which tests, or SURVIVED) and the score.
 report is in docs/mutations.md.
 """
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -129,6 +132,25 @@ MUTATIONS = [
      "  return uint(clamp(floor(e * 65535.0 + 0.5), 0.0, 65534.0));",
      "  return uint(clamp(floor(e * 65535.0 + 0.5) + 40.0, 0.0, 65534.0));",
      "DepthPyramid|AccuracyTargets|DepthPrecision", "stored depths pushed back"),
+    ("search-behind", "shaders/depth_search.glsl",
+     "    bool passes = free || (eNear > eBack && eFar < behind.x);",
+     "    bool passes = free || eNear > eBack;",
+     "ThinObject|AccuracyTargets|AccuracyFloors|DepthPyramid",
+     "the hierarchical search passes behind the first layer without looking at the second"),
+    # The page's own rules (JavaScript): the site built from the checkout, the file replaced in a
+    # copy of it, and the Playwright specs named after "web:" run against that copy.
+    ("url-old-keys", "web/url_state.js",
+     "const RENAMED = { slice: 'facesPerFrame', every: 'everyN', lod: 'captureLod', vlod: 'viewLod' };",
+     "const RENAMED = { slice: 'everyN', every: 'facesPerFrame', lod: 'captureLod', vlod: 'viewLod' };",
+     "web:url.spec.mjs", "an old link's slice= and every= read as each other"),
+    ("url-flag", "web/url_state.js",
+     "    if (['', 'true', '1'].includes(text)) return true;",
+     "    if (['true', '1'].includes(text)) return true;",
+     "web:url.spec.mjs", "a bare flag in a link (?paused) not read as on"),
+    ("url-rounding", "web/url_state.js",
+     "  if (typeof value === 'number') return round(value, 4);",
+     "  if (typeof value === 'number') return round(value, 2);",
+     "web:url.spec.mjs", "numbers written to the link to two decimals (the camera moves on reload)"),
 ]
 
 
@@ -137,6 +159,37 @@ def run(cmd, cwd, log, timeout=3600):
         f.write(f"$ {' '.join(cmd)}\n")
         f.flush()
         return subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, timeout=timeout).returncode
+
+
+def run_web(path, mutated, specs, log):
+    """The page with one file of web/ mutated: a copy of the checkout's built site (build/web/site,
+    ./test.sh's web build) with that file replaced, served on a port the system picks, and the
+    Playwright specs run against it. Non-zero when a spec fails."""
+    site = os.path.join(REPO, "build", "web", "site")
+    if not os.path.isfile(os.path.join(site, "reflect.wasm")):
+        raise SystemExit("web mutations need the web build: cmake --build --preset web")
+    copy = os.path.join(REPO, "build", "mutate-site")
+    subprocess.run(["rm", "-rf", copy], check=True)
+    shutil.copytree(site, copy)
+    with open(os.path.join(copy, os.path.basename(path)), "w") as f:
+        f.write(mutated)
+    port_file = os.path.join(REPO, "build", "mutate-site.port")
+    if os.path.exists(port_file):
+        os.remove(port_file)
+    server = subprocess.Popen(["node", "tools/serve.mjs", copy, "0", "--port-file", port_file],
+                              cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        for _ in range(100):
+            if os.path.exists(port_file) and open(port_file).read().strip():
+                break
+            time.sleep(0.1)
+        env = dict(os.environ, TEST_BASE_URL=f"http://127.0.0.1:{open(port_file).read().strip()}/")
+        with open(log, "a") as f:
+            return subprocess.run(["npx", "playwright", "test"] + [f"tests/web/{s}" for s in specs],
+                                  cwd=REPO, env=env, stdout=f, stderr=subprocess.STDOUT,
+                                  timeout=1800).returncode
+    finally:
+        server.kill()
 
 
 def main(argv):
@@ -170,9 +223,13 @@ def main(argv):
         start = time.time()
         try:
             open(target, "w").write(text.replace(old, new))
-            built = run(["cmake", "--build", "--preset", "native"], SCRATCH, log) == 0
-            failed = not built or run(["ctest", "--preset", "native", "-R", tests, "-LE", "longrun",
-                                       "-j2"], SCRATCH, log) != 0
+            if tests.startswith("web:"):
+                built = True
+                failed = run_web(path, text.replace(old, new), tests[4:].split(","), log) != 0
+            else:
+                built = run(["cmake", "--build", "--preset", "native"], SCRATCH, log) == 0
+                failed = not built or run(["ctest", "--preset", "native", "-R", tests, "-LE",
+                                           "longrun", "-j2"], SCRATCH, log) != 0
         finally:
             open(target, "w").write(text)
         took = time.time() - start
