@@ -53,8 +53,11 @@ export function buildPanel(GUI, session, actions) {
   // A named preset: the course's scheme one pick away (its settings then show in the folders).
   const presetNames = (schema.presets || []).map((p) => p.name);
   if (presetNames.length) {
+    // An action, not a state: the list always shows its prompt, and a pick applies that preset.
+    const options = { 'apply a preset…': '' };
+    for (const name of presetNames) options[name] = name;
     view.preset = '';
-    const c = gui.add(view, 'preset', ['', ...presetNames]).name('preset').onChange((v) => {
+    const c = gui.add(view, 'preset', options).name('preset').onChange((v) => {
       if (v) session.applyPreset(v);
       view.preset = '';
       refresh();

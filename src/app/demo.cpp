@@ -583,15 +583,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   if (!renderer_ || width < 1 || height < 1) return stats_;  // hidden canvas: nothing to draw
 
   const auto start = std::chrono::steady_clock::now();
-  const CaptureContext context{camera_.eye(),
-                               scene_.capture.faceSize,
-                               scene_.capture.near,
-                               scene_.capture.far,
-                               scene_.light,
-                               scene_.clearColour,
-                               skyboxContent_,
-                               accuracy_,
-                               plannerSettings_.captureLod};
+  const CaptureContext context = captureContext();
   const std::vector<PlannedObject> objects = plannedObjects(stats_.timeSeconds);
   const FramePlan plan =
       planner_.plan(objects, context, plannerSettings_, plannerView(width, height));

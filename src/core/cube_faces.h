@@ -1,6 +1,6 @@
 // The six cube-map faces, encoded once: GL face order, look direction and up vector.
-// The table is the course's (SEED.md); GL's cube-map convention needs these exact up vectors
-// for texture(cube, d) to land on the texel that the face camera saw in direction d.
+// The table is the course's (docs/course.md, step 2); GL's cube-map convention needs these exact up
+// vectors for texture(cube, d) to land on the texel that the face camera saw in direction d.
 #pragma once
 
 #include <array>

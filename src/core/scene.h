@@ -106,8 +106,8 @@ struct Scene {
   int reflectorIndex() const;
 };
 
-// The course's Ex12-2 ("dynamic reflection"), with the values of SEED.md. The same scene ships as
-// assets/scenes/ex12-2.json; a test keeps the two equal.
+// The course's Ex12-2 ("dynamic reflection"), with its values (docs/course.md). The same scene
+// ships as assets/scenes/ex12-2.json; a test keeps the two equal.
 Scene makeDynamicReflectionScene();
 
 }  // namespace reflect
