@@ -77,7 +77,7 @@ MUTATIONS = [
     ("peel-slack", "shaders/capture_output.glsl",
      "const uint kPeelSlack = 2u;", "const uint kPeelSlack = 2000u;",
      "DepthPyramid|AccuracyTargets|AccuracyFloors|ThinObject",
-     "the peel skips what lies up to a quarter unit behind the first layer"),
+     "the peel skips 2000 depth codes behind the first layer (9 units, 3 units from a 0.1 near plane)"),
     ("glass-sphere-exit", "shaders/environment.frag",
      "    float t = -b + sqrt(max(b * b - c, 0.0));  // the far root: the ray starts on the surface",
      "    float t = -b - sqrt(max(b * b - c, 0.0));  // the far root: the ray starts on the surface",

@@ -116,6 +116,49 @@ TEST(DepthPyramid, WhereNothingWasDrawnTheCodeIsTheFarPlanesAsTheCSideComputesIt
   EXPECT_EQ(up[8 * 16 + 8], glm::uvec2(far, far));
 }
 
+// The second layer is the nearest surface behind the first object, not anything past some
+// margin: a wall 0.2 deep at x = 2.9..3.1 in front of the probe (+X), and a small one at
+// x = 4.3..4.5 behind it (small: a back face counts as the front object's back when it lies
+// within the drawn object's size of the front). Near plane 0.1, so the second wall's front lies
+// 530 codes behind the first wall's far end (its front plus the thickness the capture assumes).
+// The centre texel of face +X stores the first wall's front in layer one and the second wall's
+// in layer two, each to a code or two of the C++ side's depthCode. (The peel counts codes
+// within two of the first layer's far end as the same surface; a slack of 530 codes or more
+// loses the second wall, as tools/mutate.sh's peel-slack does.)
+TEST(DepthPyramid, TheSecondLayerIsTheNearestSurfaceBehindTheFirst) {
+  Scene scene;
+  scene.name = "two walls";
+  SceneObject sphere;
+  sphere.mesh = "sphere.obj";
+  sphere.placement = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));  // radius 1.27, at the origin
+  sphere.material = Material::Mirror;
+  const auto wall = [](float x, float depth, float side) {
+    SceneObject o;
+    o.mesh = "cube.obj";  // [-1, 1]^3
+    o.placement = glm::scale(glm::translate(glm::mat4(1.0f), {x, 0.0f, 0.0f}),
+                             {0.5f * depth, 0.5f * side, 0.5f * side});
+    return o;
+  };
+  scene.objects = {sphere, wall(3.0f, 0.2f, 2.0f), wall(4.4f, 0.2f, 1.0f)};
+  scene.capture.faceSize = 16;
+  scene.capture.near = 0.1f;
+  auto demo = testing::makeCapturingDemo(scene);
+  auto target = OffscreenTarget::create(16, 16);
+  ASSERT_TRUE(target);
+  demo->frame(0.0, target.value().framebuffer(), 16, 16, true);
+  const CubeCaptureTarget* probe = demo->renderer()->probeTarget(demo->scene().reflectorIndex());
+  ASSERT_NE(probe, nullptr);
+  ASSERT_EQ(probe->format().layers, 2);
+  const float near = scene.capture.near;
+  const size_t centre = 8 * 16 + 8;
+  const auto codeAt = [&](int layer) {
+    return static_cast<int>(readCodes(probe->faceDepths(layer), true, 0, 0, 16, 16)[centre].x);
+  };
+  EXPECT_NEAR(codeAt(0), static_cast<int>(depthCode(2.9 / near)), 2);
+  EXPECT_NEAR(codeAt(1), static_cast<int>(depthCode(4.3 / near)), 2);
+  EXPECT_TRUE(checkGlError("second layer test"));
+}
+
 // Only the faces a frame recaptures get their tiles rebuilt (issue 11: the chain is built after
 // a face is captured, only for the faces recaptured). Every cell is marked at the top level (one
 // cell a face) before each frame: the faces recaptured must come out rebuilt, and the others keep

@@ -42,6 +42,12 @@ test('the address bar follows the controls, the camera and the time', async ({ p
   await expect.poll(() => query(page)).toMatch(/^\?scene=two-mirrors&cube=64&policy=time-sliced&facesPerFrame=2&captureLod=0\.25&paused&t=0$/);
 });
 
+test('a link keeps a setting\'s four decimals when the page rewrites it', async ({ page }) => {
+  // (The panel's field steps by 0.01; a link may hold finer values, and reloading must keep them.)
+  await openDemo(page, '?captureLod=0.0625&paused&t=1');
+  await expect.poll(() => query(page)).toBe('?scene=ex12-2&policy=when-changed&captureLod=0.0625&paused&t=1');
+});
+
 test('opening a copied link restores scene, cube, policy, camera and time', async ({ page, context }) => {
   // Two page loads, a scene switch and a cube reload, each followed by its levels of detail: more
   // than the default minute on a busy 2-core machine.
