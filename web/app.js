@@ -1,5 +1,5 @@
 // The page's start and its frame loop. The work is in modules with one job each:
-//   wasm_bridge.js  the C++ exports as typed functions (the only file that knows their names)
+//   wasm_bridge.js  the C++ exports as typed functions (the only file that calls them)
 //   session.js      the user's scene, models, settings, camera and time; the job queue
 //   url_state.js    links, both ways        capture.js  read-back, screenshot, the address bar
 //   drop.js         the user's files        panel.js    the controls     input.js  pointer and keys

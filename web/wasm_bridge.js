@@ -1,29 +1,19 @@
-// The wasm module's exports as typed functions. The only file that knows the C names
-// (src/platform/web/*.cpp). Everything crossing is JSON: each export takes one request object
-// (plus a file's bytes where one goes) and returns JSON. Settings travel by the names of the
+// The wasm module's exports as typed functions. Their names and argument types come from
+// wasm_exports.js, which the build writes from the C++ definitions (cmake/WebExports.cmake), so
+// this file calls no export the module lacks (tests/web/exports.spec.mjs holds it). Everything
+// crossing is JSON: each export takes one request object (plus a file's bytes where one goes)
+// and returns JSON. Settings travel by the names of the
 // settings schema (rf_schema_json), and changes are objects whose absent keys keep their value.
 // Actions return "" or the error message (nothing changed then).
 
 /* global createReflectModule */
+import { EXPORTS } from './wasm_exports.js';
 
 export async function createBridge(canvas) {
   // index.html starts the module early, for this canvas; made here otherwise.
   const Module = await (window.reflectModule || createReflectModule({ canvas }));
   performance.mark('reflect:wasm-ready');
-  const text = ['string'];
-  const withData = ['string', 'number', 'number'];
-  const exports = {
-    rf_create: [], rf_schema_json: [], rf_frame: text, rf_clock: text, rf_camera: text,
-    rf_begin_scene: withData, rf_pending_files: [], rf_load_mesh: withData,
-    rf_mesh_stream_begin: text, rf_mesh_stream_feed: withData, rf_mesh_stream_end: text,
-    rf_pending_skybox_image: withData, rf_commit_scene: text, rf_scene_json: [], rf_mesh_arrays: text,
-    rf_lod_settings_json: [], rf_level_jobs: [], rf_set_mesh_chunks: withData, rf_add_lod: withData,
-    rf_finish_levels: text, rf_level_triangles: text, rf_add_object: text, rf_mesh_bounds_json: text,
-    rf_planner_json: [], rf_memory_json: [], rf_set_planner: text, rf_accuracy_json: [], rf_set_accuracy: text,
-    rf_accuracy_from_description: text, rf_objects_json: [], rf_set_material: text,
-    rf_view_json: [], rf_set_view: text, rf_budget_candidates: [], rf_pick_accuracy: text,
-  };
-  const fn = Object.fromEntries(Object.entries(exports).map(([name, args]) => [name, Module.cwrap(name, 'string', args)]));
+  const fn = Object.fromEntries(Object.entries(EXPORTS).map(([name, args]) => [name, Module.cwrap(name, 'string', args)]));
 
   const call = (name, request = {}) => JSON.parse(fn[name](JSON.stringify(request)));
   // `bytes` (a typed array) copied into wasm memory for the duration of the call.
