@@ -48,15 +48,13 @@ Result<CubeFaces> facesFromCross(const RgbaImage& cross, const std::string& name
         std::to_string(cross.width) + "x" + std::to_string(cross.height));
   }
   const int n = cross.width / 4;
-  // (column, row) of each face in GL order.
-  const int cells[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}};
   CubeFaces faces;
   for (size_t f = 0; f < 6; ++f) {
     RgbaImage& face = faces[f];
     face.width = face.height = n;
     face.pixels.resize(static_cast<size_t>(n) * static_cast<size_t>(n) * 4);
     for (int y = 0; y < n; ++y) {
-      const uint8_t* row = cross.at(cells[f][0] * n, cells[f][1] * n + y);
+      const uint8_t* row = cross.at(kCrossCells[f][0] * n, kCrossCells[f][1] * n + y);
       std::memcpy(&face.pixels[static_cast<size_t>(y) * static_cast<size_t>(n) * 4], row,
                   static_cast<size_t>(n) * 4);
     }

@@ -29,6 +29,11 @@ Result<CubeFaces> facesFromImages(std::vector<RgbaImage> images,
 //        [-Y]
 Result<CubeFaces> facesFromCross(const RgbaImage& cross, const std::string& name);
 
+// (column, row) of each face's square in that cross, in GL face order: the one layout both
+// facesFromCross and the faces view (core/cube_cross.h) use.
+inline constexpr std::array<std::array<int, 2>, 6> kCrossCells{
+    {{{2, 1}}, {{0, 1}}, {{1, 0}}, {{1, 2}}, {{1, 1}}, {{3, 1}}}};
+
 // A 64-bit FNV-1a hash of the faces' sizes and pixels: two skyboxes with the same pixels hash the
 // same, so a capture can tell by value whether the sky it shows changed. Never 0.
 uint64_t contentHash(const CubeFaces& faces);

@@ -1,0 +1,134 @@
+#include "core/cube_cross.h"
+
+#include <cstring>
+
+#include "core/bitmap_font.h"
+#include "core/cube_faces.h"
+
+namespace reflect {
+namespace {
+
+using Rgba = std::array<uint8_t, 4>;
+constexpr Rgba kBackground{24, 24, 28, 255};
+constexpr Rgba kCapturedFrame{70, 200, 100, 255};
+constexpr Rgba kStaleFrame{235, 165, 40, 255};
+constexpr Rgba kEmptyFrame{110, 110, 110, 255};
+constexpr Rgba kText{235, 235, 235, 255};
+constexpr int kFrameWidth = 2;
+constexpr int kLegendLine = kGlyphHeight + 4;
+constexpr int kLegendHeight = 2 + kGlyphHeight + 6 + 6 * kLegendLine;  // title, then a line a face
+
+std::string vectorText(const glm::vec3& v) {
+  const auto component = [](float c) { return std::to_string(static_cast<int>(c)); };
+  return "(" + component(v.x) + "," + component(v.y) + "," + component(v.z) + ")";
+}
+
+void fillRect(RgbaImage& image, int x, int y, int w, int h, const Rgba& rgba) {
+  for (int row = y; row < y + h; ++row) {
+    for (int column = x; column < x + w; ++column) {
+      std::memcpy(&image.pixels[(static_cast<size_t>(row) * static_cast<size_t>(image.width) +
+                                 static_cast<size_t>(column)) *
+                                4],
+                  rgba.data(), 4);
+    }
+  }
+}
+
+const Rgba& frameColour(const FaceMark& mark) {
+  if (!mark.everCaptured) return kEmptyFrame;
+  return mark.captured ? kCapturedFrame : kStaleFrame;
+}
+
+// The face's pixels into its square; a stale face at half brightness (alpha kept).
+void copyFace(RgbaImage& view, const RgbaImage& face, int x, int y, bool dim) {
+  for (int row = 0; row < face.height; ++row) {
+    uint8_t* out = &view.pixels[(static_cast<size_t>(y + row) * static_cast<size_t>(view.width) +
+                                 static_cast<size_t>(x)) *
+                                4];
+    std::memcpy(out, face.at(0, row), static_cast<size_t>(face.width) * 4);
+    if (!dim) continue;
+    for (int column = 0; column < face.width; ++column) {
+      for (int c = 0; c < 3; ++c)
+        out[column * 4 + c] = static_cast<uint8_t>(out[column * 4 + c] / 2);
+    }
+  }
+}
+
+void drawLegend(RgbaImage& view, const CrossGeometry& g, const std::array<FaceMark, 6>& marks,
+                const std::string& title) {
+  // The strip below the cross: always room for it, whatever the face size.
+  const int left = g.margin;
+  int y = 3 * (g.faceSize + 2 * g.margin) + 2;
+  drawText(view, left, y, title, kText);
+  y += kGlyphHeight + 6;
+  for (int face = 0; face < 6; ++face) {
+    fillRect(view, left, y, kGlyphHeight, kGlyphHeight,
+             frameColour(marks[static_cast<size_t>(face)]));
+    drawText(view, left + kGlyphAdvance * 2, y,
+             faceLabel(face) + "  " + faceStatus(marks[static_cast<size_t>(face)]), kText);
+    y += kLegendLine;
+  }
+}
+
+}  // namespace
+
+const char* facesChannelName(FacesChannel channel) {
+  switch (channel) {
+    case FacesChannel::Colour:
+      return "colour";
+    case FacesChannel::Distance:
+      return "distance";
+    case FacesChannel::SecondLayer:
+      return "layer2";
+  }
+  return "colour";
+}
+
+CrossGeometry crossGeometry(int faceSize) {
+  CrossGeometry g;
+  g.faceSize = faceSize;
+  g.margin = kGlyphHeight + 2 * kFrameWidth + 2;  // a name line above the square, frames around
+  const int pitch = faceSize + 2 * g.margin;
+  g.width = 4 * pitch;
+  g.height = 3 * pitch + kLegendHeight;
+  for (size_t face = 0; face < 6; ++face) {
+    g.squareOrigin[face] = {kCrossCells[face][0] * pitch + g.margin,
+                            kCrossCells[face][1] * pitch + g.margin};
+  }
+  return g;
+}
+
+std::string faceLabel(int face) {
+  const CubeFace& f = kCubeFaces[static_cast<size_t>(face)];
+  return std::string(f.name) + "  LOOK " + vectorText(f.direction) + "  UP " + vectorText(f.up);
+}
+
+std::string faceStatus(const FaceMark& mark) {
+  if (!mark.everCaptured) return "EMPTY";
+  if (mark.captured) return "CAPTURED";
+  return "STALE " + std::to_string(mark.ageFrames) + (mark.ageFrames == 1 ? " FRAME" : " FRAMES");
+}
+
+RgbaImage unfoldCross(const CubeFaces& faces, const std::array<FaceMark, 6>& marks, bool labels,
+                      const std::string& title) {
+  const CrossGeometry g = crossGeometry(faces[0].width);
+  RgbaImage view;
+  view.width = g.width;
+  view.height = g.height;
+  view.pixels.resize(static_cast<size_t>(g.width) * static_cast<size_t>(g.height) * 4);
+  fillRect(view, 0, 0, g.width, g.height, kBackground);
+  for (size_t face = 0; face < 6; ++face) {
+    const int x = g.squareOrigin[face][0];
+    const int y = g.squareOrigin[face][1];
+    // The mark: a frame just outside the square.
+    fillRect(view, x - kFrameWidth, y - kFrameWidth, g.faceSize + 2 * kFrameWidth,
+             g.faceSize + 2 * kFrameWidth, frameColour(marks[face]));
+    const bool stale = marks[face].everCaptured && !marks[face].captured;
+    copyFace(view, faces[face], x, y, stale);
+    if (labels) drawText(view, x, y - kFrameWidth - 1 - kGlyphHeight, kCubeFaces[face].name, kText);
+  }
+  if (labels) drawLegend(view, g, marks, title);
+  return view;
+}
+
+}  // namespace reflect
