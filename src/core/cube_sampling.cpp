@@ -65,6 +65,26 @@ CubeFaceCoord cubeFaceCoord(const glm::vec3& d) {
   return c;
 }
 
+glm::vec3 faceDirection(int face, float s, float t) {
+  // The table above read backwards: sc = 2s - 1, tc = 2t - 1 with |ma| = 1.
+  const float sc = 2.0f * s - 1.0f;
+  const float tc = 2.0f * t - 1.0f;
+  switch (face) {
+    case 0:
+      return {1.0f, -tc, -sc};
+    case 1:
+      return {-1.0f, -tc, sc};
+    case 2:
+      return {sc, 1.0f, tc};
+    case 3:
+      return {sc, -1.0f, -tc};
+    case 4:
+      return {sc, -tc, 1.0f};
+    default:
+      return {-sc, -tc, -1.0f};
+  }
+}
+
 CubeTexel seamlessTexel(int face, int i, int j, int size) {
   const bool offS = i < 0 || i >= size;
   const bool offT = j < 0 || j >= size;

@@ -42,6 +42,8 @@ struct CubeFaceCoord {
 };
 
 CubeFaceCoord cubeFaceCoord(const glm::vec3& direction);
+// The inverse: the direction (major axis of length 1) that lands on (s, t) of `face`.
+glm::vec3 faceDirection(int face, float s, float t);
 
 enum class CubeEdges {
   Seamless,     // GL ES 3.0 and WebGL 2: every cube map

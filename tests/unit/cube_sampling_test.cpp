@@ -201,5 +201,24 @@ TEST(CubeSampling, ACubeCornerIsTheMeanOfItsThreeTexels) {
   }
 }
 
+TEST(CubeSampling, FaceDirectionIsTheInverseOfFaceSelection) {
+  // Texel centres of a 4x4 face on every face: back to the same face, s and t.
+  for (int face = 0; face < 6; ++face) {
+    for (int j = 0; j < 4; ++j) {
+      for (int i = 0; i < 4; ++i) {
+        const float s = (static_cast<float>(i) + 0.5f) / 4.0f;
+        const float t = (static_cast<float>(j) + 0.5f) / 4.0f;
+        const CubeFaceCoord back = cubeFaceCoord(faceDirection(face, s, t));
+        EXPECT_EQ(back.face, face);
+        EXPECT_FLOAT_EQ(back.s, s) << face << " " << i << "," << j;
+        EXPECT_FLOAT_EQ(back.t, t) << face << " " << i << "," << j;
+      }
+    }
+  }
+  // The face's centre is its look direction from the course's table.
+  EXPECT_EQ(faceDirection(2, 0.5f, 0.5f), glm::vec3(0, 1, 0));
+  EXPECT_EQ(faceDirection(5, 0.5f, 0.5f), glm::vec3(0, 0, -1));
+}
+
 }  // namespace
 }  // namespace reflect
