@@ -98,9 +98,16 @@ export function buildPanel(GUI, session, actions) {
   readout.className = 'readout';
   readout.title = 'measured by reflect bench --sweep on the default scene, against the ray-traced reference';
   accuracy.$children.appendChild(readout);
-  // The view settings: show error (the heat map against the exact mode), auto and its budget.
+  // The view settings: show error (the heat map against the exact mode), auto and its budget
+  // here; those the schema puts in a folder of their own (Inside the frame) in that folder.
+  const viewFolders = new Map();
+  const folderOf = (info) => {
+    if (!info.folder) return accuracy;
+    if (!viewFolders.has(info.folder)) viewFolders.set(info.folder, gui.addFolder(info.folder));
+    return viewFolders.get(info.folder);
+  };
   for (const info of schema.view || []) {
-    addSetting(accuracy, view.view, info, (v) => session.setView({ [info.name]: v }), `control-view-${info.name}`);
+    addSetting(folderOf(info), view.view, info, (v) => session.setView({ [info.name]: v }), `control-view-${info.name}`);
   }
   const autoReadout = document.createElement('div');
   autoReadout.id = 'auto-readout';

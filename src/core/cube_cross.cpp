@@ -9,7 +9,6 @@ namespace reflect {
 namespace {
 
 using Rgba = std::array<uint8_t, 4>;
-constexpr Rgba kBackground{24, 24, 28, 255};
 constexpr Rgba kCapturedFrame{70, 200, 100, 255};
 constexpr Rgba kStaleFrame{235, 165, 40, 255};
 constexpr Rgba kEmptyFrame{110, 110, 110, 255};
@@ -116,7 +115,7 @@ RgbaImage unfoldCross(const CubeFaces& faces, const std::array<FaceMark, 6>& mar
   view.width = g.width;
   view.height = g.height;
   view.pixels.resize(static_cast<size_t>(g.width) * static_cast<size_t>(g.height) * 4);
-  fillRect(view, 0, 0, g.width, g.height, kBackground);
+  fillRect(view, 0, 0, g.width, g.height, kCrossBackground);
   for (size_t face = 0; face < 6; ++face) {
     const int x = g.squareOrigin[face][0];
     const int y = g.squareOrigin[face][1];

@@ -16,6 +16,9 @@
 
 namespace reflect {
 
+// The view's background (the page fills the canvas around the cross with it).
+inline constexpr std::array<uint8_t, 4> kCrossBackground{24, 24, 28, 255};
+
 // What the frame did to one face.
 struct FaceMark {
   bool captured = false;     // drawn this frame

@@ -27,20 +27,44 @@ std::string joined(const std::vector<std::string>& items) {
 
 SettingInfo choice(std::string name, std::string label, std::string help,
                    std::vector<std::string> choices) {
-  return {std::move(name),   std::move(label), std::move(help), Kind::Choice, 0, 0,
-          std::move(choices)};
+  return {std::move(name),
+          std::move(label),
+          std::move(help),
+          Kind::Choice,
+          0,
+          0,
+          std::move(choices),
+          {}};
 }
 // `only`: the values allowed within min..max, when not all of them are.
 SettingInfo integer(std::string name, std::string label, std::string help, int min, int max,
                     std::vector<std::string> only = {}) {
   return {std::move(name), std::move(label), std::move(help), Kind::Integer,
-          double(min),     double(max),      std::move(only)};
+          double(min),     double(max),      std::move(only), {}};
 }
 SettingInfo number(std::string name, std::string label, std::string help, double min, double max) {
-  return {std::move(name), std::move(label), std::move(help), Kind::Number, min, max, {}};
+  return {std::move(name), std::move(label), std::move(help), Kind::Number, min, max, {}, {}};
 }
 SettingInfo flag(std::string name, std::string label, std::string help) {
-  return {std::move(name), std::move(label), std::move(help), Kind::Flag, 0, 1, {}};
+  return {std::move(name), std::move(label), std::move(help), Kind::Flag, 0, 1, {}, {}};
+}
+SettingInfo inFolder(SettingInfo info, std::string folder) {
+  info.folder = std::move(folder);
+  return info;
+}
+
+constexpr const char* kInsideFolder = "Inside the frame";
+const std::vector<std::string> kInsideViews = {"off", "faces"};
+const std::vector<std::string> kFacesChannels = {facesChannelName(FacesChannel::Colour),
+                                                 facesChannelName(FacesChannel::Distance),
+                                                 facesChannelName(FacesChannel::SecondLayer)};
+
+template <class E>
+E enumAt(const std::vector<std::string>& names, const std::string& name) {
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == name) return static_cast<E>(i);
+  }
+  return static_cast<E>(0);  // unreachable: the value passed the choice's check
 }
 
 const char* kKindNames[] = {"choice", "integer", "number", "flag"};
@@ -60,6 +84,7 @@ json schemaOf(const std::vector<SettingField<S>>& fields) {
       entry["max"] = f.info.max;
     }
     if (!f.info.choices.empty()) entry["choices"] = f.info.choices;
+    if (!f.info.folder.empty()) entry["folder"] = f.info.folder;
     list.push_back(std::move(entry));
   }
   return list;
@@ -243,8 +268,33 @@ const std::vector<SettingField<ViewSettings>>& viewFields() {
               "auto: the frame time to stay within (0 = the display's frame interval)", 0, 1000),
        [](const V& s) { return json(s.budget); },
        [](V& s, const json& v) { s.budget = v.get<float>(); }},
+      {inFolder(
+           choice("inside", "view",
+                  "inside the frame: off (the picture), faces (the probe's cube map unfolded as "
+                  "a cross, each face with the course's look and up vectors, stale faces "
+                  "dimmed with their age)",
+                  kInsideViews),
+           kInsideFolder),
+       [](const V& s) { return json(insideViewName(s.inside)); },
+       [](V& s, const json& v) {
+         s.inside = enumAt<InsideView>(kInsideViews, v.get<std::string>());
+       }},
+      {inFolder(choice("facesChannel", "faces channel",
+                       "what the faces view shows of each texel: colour, distance (the stored "
+                       "distance, near bright; needs the depth search) or layer2 (the second "
+                       "layer's colour; needs search: layered)",
+                       kFacesChannels),
+                kInsideFolder),
+       [](const V& s) { return json(facesChannelName(s.facesChannel)); },
+       [](V& s, const json& v) {
+         s.facesChannel = enumAt<FacesChannel>(kFacesChannels, v.get<std::string>());
+       }},
   };
   return fields;
+}
+
+const char* insideViewName(InsideView view) {
+  return kInsideViews[static_cast<size_t>(view)].c_str();
 }
 
 const char* materialName(Material material) {

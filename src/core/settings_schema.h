@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/accuracy_settings.h"
+#include "core/cube_cross.h"
 #include "core/frame_planner.h"
 #include "core/scene.h"
 
@@ -23,6 +24,7 @@ struct SettingInfo {
   Kind kind = Kind::Number;
   double min = 0.0, max = 0.0;       // Integer and Number
   std::vector<std::string> choices;  // Choice; for an Integer, the only values allowed (if any)
+  std::string folder;  // the panel's folder when not its group's own (e.g. "Inside the frame")
 
   // "--faces-per-frame"
   std::string optionName() const;
@@ -45,10 +47,20 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields();
 
 // How the page shows and picks (show error, auto with its frame budget): page settings, in the
 // link and the panel like the rest; natively `render --error-view` and `bench --budget`.
+// Inside the frame (the teaching views): `inside` replaces the picture with one of them, natively
+// also `render --faces FILE`.
+enum class InsideView {
+  Off,
+  Faces,  // the probe's cube map unfolded (core/cube_cross.h)
+};
+const char* insideViewName(InsideView view);
+
 struct ViewSettings {
   bool showError = false;
   bool autoAccuracy = false;  // "auto"
   float budget = 0.0f;        // ms; 0 = the display's frame interval
+  InsideView inside = InsideView::Off;
+  FacesChannel facesChannel = FacesChannel::Colour;
   bool operator==(const ViewSettings&) const = default;
 };
 const std::vector<SettingField<ViewSettings>>& viewFields();

@@ -4,9 +4,13 @@
 // probe does not hold is refused with the setting it needs.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "core/cube_sampling.h"
 #include "cube_sampler.h"
 #include "gfx/cube_readback.h"
+#include "gfx/image_blit.h"
+#include "gfx/offscreen_target.h"
 #include "gl_fixture.h"
 
 namespace reflect {
@@ -110,6 +114,37 @@ TEST(CubeReadback, AChannelTheProbeDoesNotStoreNamesTheSettingItNeeds) {
   const Result<CubeFaces> second = readCubeFaces(plain, FacesChannel::SecondLayer);
   ASSERT_FALSE(second);
   EXPECT_EQ(second.error(), "the second-layer channel needs two layers: set search to layered");
+}
+
+TEST(CubeReadback, TheViewOnScreenIsTheCrossOfTheReadBackPixelForPixel) {
+  const CubeCaptureTarget target = makeTarget(true, 1);
+  paintFaces(target, 0);
+  const Result<CubeFaces> faces = readCubeFaces(target, FacesChannel::Colour);
+  ASSERT_TRUE(faces) << faces.error();
+  std::array<FaceMark, 6> marks;
+  for (FaceMark& mark : marks) mark.captured = true;
+  const RgbaImage cross = unfoldCross(faces.value(), marks, true, "COLOUR");
+  Result<ImageBlit> blit = ImageBlit::create();
+  ASSERT_TRUE(blit) << blit.error();
+  // A screen two pixels wider and taller: the cross centred, one pixel of background around it.
+  Result<OffscreenTarget> screen = OffscreenTarget::create(cross.width + 2, cross.height + 2);
+  ASSERT_TRUE(screen) << screen.error();
+  glBindFramebuffer(GL_FRAMEBUFFER, screen.value().framebuffer());
+  blit.value().draw(cross, cross.width + 2, cross.height + 2, kCrossBackground);
+  const RgbaImage shown = screen.value().readPixels();
+  for (int y = 0; y < cross.height; ++y) {
+    ASSERT_EQ(std::memcmp(shown.at(1, y + 1), cross.at(0, y), static_cast<size_t>(cross.width) * 4),
+              0)
+        << "row " << y;
+  }
+  EXPECT_EQ(std::memcmp(shown.at(0, 0), kCrossBackground.data(), 4), 0);
+  // And the face squares in it are the read-back's pixels.
+  const CrossGeometry g = crossGeometry(kSize);
+  EXPECT_EQ(std::memcmp(shown.at(g.squareOrigin[3][0] + 1, g.squareOrigin[3][1] + 1),
+                        faces.value()[3].at(0, 0), 4),
+            0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  EXPECT_TRUE(checkGlError("ImageBlit"));
 }
 
 }  // namespace

@@ -88,6 +88,25 @@ TEST(SettingsSchema, TheTableForThePageListsEveryNameOnceWithItsDefault) {
   EXPECT_EQ(schema["accuracy"][2]["max"], 2);
 }
 
+TEST(SettingsSchema, TheInsideViewsAreViewSettingsInTheirOwnFolder) {
+  ViewSettings view;
+  EXPECT_EQ(applySettingsJson(json::parse(R"({"inside": "faces", "facesChannel": "distance"})"),
+                              viewFields(), view),
+            "");
+  EXPECT_EQ(view.inside, InsideView::Faces);
+  EXPECT_EQ(view.facesChannel, FacesChannel::Distance);
+  EXPECT_EQ(applySettingsJson(json::parse(R"({"facesChannel": "depth"})"), viewFields(), view),
+            "facesChannel: \"depth\" is not one of colour, distance, layer2");
+  EXPECT_EQ(view.facesChannel, FacesChannel::Distance);
+  EXPECT_EQ(settingsJson(view, viewFields())["facesChannel"], "distance");
+  const json schema = settingsSchemaJson();
+  for (const json& entry : schema["view"]) {
+    const std::string name = entry["name"].get<std::string>();
+    const bool inside = name == "inside" || name == "facesChannel";
+    EXPECT_EQ(entry.value("folder", ""), inside ? "Inside the frame" : "") << name;
+  }
+}
+
 TEST(SettingsSchema, EnumerationNamesRoundTrip) {
   for (Material m : {Material::Phong, Material::Mirror, Material::Glass, Material::CubeTextured}) {
     Material back = Material::Phong;

@@ -1,0 +1,49 @@
+#include "gfx/image_blit.h"
+
+namespace reflect {
+
+Result<ImageBlit> ImageBlit::create() {
+  Result<ShaderProgram> program = ShaderProgram::build("fullscreen.vert", "image_blit.frag");
+  if (!program) return Result<ImageBlit>::failure(program.error());
+  ImageBlit blit;
+  blit.program_ = program.take();
+  blit.image_ = blit.program_.uniform("u_image");
+  blit.origin_ = blit.program_.uniform("u_origin");
+  blit.background_ = blit.program_.uniform("u_background");
+  blit.vertexArray_ = VertexArrayHandle(genVertexArray());
+  return blit;
+}
+
+void ImageBlit::draw(const RgbaImage& image, int width, int height,
+                     const std::array<uint8_t, 4>& background) {
+  // A new texture each time: the image's size follows the face size, and the view is drawn only
+  // while it is on (the normal frame never comes here).
+  texture_ = TextureHandle(genTexture());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, texture_.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.pixels.data());
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glUseProgram(program_.id());
+  glUniform1i(image_, 0);
+  // Centred; a negative origin cuts the image equally on both sides.
+  glUniform2i(origin_, (width - image.width) / 2, (height - image.height) / 2);
+  glUniform3f(background_, background[0] / 255.0f, background[1] / 255.0f, background[2] / 255.0f);
+  glBindVertexArray(vertexArray_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void ImageBlit::abandon() {
+  program_.abandon();
+  texture_.abandon();
+  vertexArray_.abandon();
+}
+
+}  // namespace reflect

@@ -1,0 +1,30 @@
+// Draws an RGBA image made on the CPU onto a framebuffer, pixel for pixel and centred (cut where
+// it is larger): how the page shows the faces view, which core composes (core/cube_cross.h).
+#pragma once
+
+#include <array>
+
+#include "core/image.h"
+#include "core/result.h"
+#include "gfx/gl_handle.h"
+#include "gfx/shader_program.h"
+
+namespace reflect {
+
+class ImageBlit {
+ public:
+  static Result<ImageBlit> create();
+  // Uploads `image` (top row first) and fills the bound framebuffer's `width` x `height` with it,
+  // `background` (RGBA8) around it.
+  void draw(const RgbaImage& image, int width, int height,
+            const std::array<uint8_t, 4>& background);
+  void abandon();
+
+ private:
+  ShaderProgram program_;
+  TextureHandle texture_;
+  VertexArrayHandle vertexArray_;  // empty: the full-screen triangle needs no attributes
+  GLint image_ = -1, origin_ = -1, background_ = -1;
+};
+
+}  // namespace reflect
