@@ -95,6 +95,8 @@ async function start() {
     pan: (right, up) => camera((b) => b.moveCamera({ right, up })),
     reset: () => camera((b) => b.resetCamera()),
     togglePause: () => session.setPaused(!session.paused),
+    // Inside the frame: the faces view on and off (the panel's folder has its channel).
+    toggleFaces: () => session.setView({ inside: bridge.view().inside === 'faces' ? 'off' : 'faces' }),
     toggleHelp: () => help.toggle(),
     closeHelp: () => help.close(),
   });

@@ -509,6 +509,7 @@ void Demo::releaseGraphics() {
   exactTracer_.reset();
   renderer_.reset();
   gpuTimer_.reset();
+  inside_.release();
   planner_.invalidate();
 }
 
@@ -523,6 +524,7 @@ void Demo::loseGraphics() {
   exactTracer_.reset();
   if (gpuTimer_) gpuTimer_->abandon();
   gpuTimer_.reset();
+  inside_.abandon();
   planner_.invalidate();
 }
 
@@ -635,6 +637,8 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   }
   if (errorView) renderErrorView(objects, view, draws, framebuffer);
   lastPlan_ = plan;
+  inside_.afterFrame(plan);
+  if (inside_.on()) inside_.draw(*renderer_, scene_, plan, framebuffer, width, height);
   if (!firstFrameDrawn_) {
     // The first frame is on screen: now build what the meshes were drawn without.
     firstFrameDrawn_ = true;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "app/frame_stats.h"
+#include "app/inside_views.h"
 #include "core/accuracy_settings.h"
 #include "core/animation_clock.h"
 #include "core/bvh.h"
@@ -164,6 +165,14 @@ class Demo {
   // compared with the current mode's on the GPU, and drawn as a heat map over the reflectors;
   // the numbers are in the frame's stats. Returns "" or a message.
   std::string setShowError(bool on);
+  // Inside the frame: show the frame as a teaching view (the faces view) instead of its picture.
+  void setInsideView(InsideView view, FacesChannel channel) { inside_.set(view, channel); }
+  const InsideViews& insideViews() const { return inside_; }
+  // The view settings the demo draws by (show error, the inside views); "" or a message.
+  std::string setViewSettings(const ViewSettings& view) {
+    inside_.set(view.inside, view.facesChannel);
+    return setShowError(view.showError);
+  }
   bool showError() const { return showError_; }
   // Mesh `name`'s tree for the exact mode (built when the mesh loaded), or null.
   const MeshBvh* meshBvh(const std::string& name) const;
@@ -243,6 +252,7 @@ class Demo {
   AccuracySettings accuracy_;
   uint64_t skyboxContent_ = 0;  // contentHash(*skybox_): captures compare it by value
   std::unique_ptr<SceneRenderer> renderer_;
+  InsideViews inside_;
   std::unique_ptr<GpuTimer> gpuTimer_;
   FrameStats stats_;
   std::map<std::string, std::shared_ptr<const MeshBvh>> bvhs_;  // level 0's, by mesh name

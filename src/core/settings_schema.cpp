@@ -281,7 +281,8 @@ const std::vector<SettingField<ViewSettings>>& viewFields() {
        }},
       {inFolder(choice("facesChannel", "faces channel",
                        "what the faces view shows of each texel: colour, distance (the stored "
-                       "distance, near bright; needs the depth search) or layer2 (the second "
+                       "depth along each face's look "
+                       "direction, near bright; needs the depth search) or layer2 (the second "
                        "layer's colour; needs search: layered)",
                        kFacesChannels),
                 kInsideFolder),

@@ -276,7 +276,7 @@ EMSCRIPTEN_KEEPALIVE const char* rf_commit_scene(const char* request) {
     pending.demo->setPlannerSettings(state().demo->plannerSettings());
     pending.demo->setAccuracySettings(state().demo->accuracySettings());
   }
-  pending.demo->setShowError(state().view.showError);
+  pending.demo->setViewSettings(state().view);
   error = pending.demo->initGraphics();
   if (!error.empty()) return replyError(error);
   if (state().demo) state().demo->releaseGraphics();

@@ -172,20 +172,20 @@ EMSCRIPTEN_KEEPALIVE const char* rf_set_material(const char* request) {
   return replyError(state().demo->setMaterialJson(static_cast<int>(index), material.dump()));
 }
 
-// The page's view settings: {"settings": {showError, auto, budget}}.
+// The page's view settings: {"settings": {showError, auto, budget, inside, facesChannel}}.
 EMSCRIPTEN_KEEPALIVE const char* rf_view_json() {
   return reply({{"settings", reflect::settingsJson(state().view, reflect::viewFields())}});
 }
 
-// Changes them by the schema's names; showError turns the demo's error view on or off. {} or
-// {"error"}.
+// Changes them by the schema's names; showError turns the demo's error view on or off, inside
+// its teaching view (Inside the frame). {} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* rf_set_view(const char* request) {
   auto r = parseRequest(request, "rf_set_view");
   if (!r) return replyError(r.error());
   reflect::ViewSettings view = state().view;
   std::string error = reflect::applySettingsJson(r.value(), reflect::viewFields(), view);
   if (!error.empty()) return replyError(error);
-  if (state().demo) error = state().demo->setShowError(view.showError);
+  if (state().demo) error = state().demo->setViewSettings(view);
   if (!error.empty()) return replyError(error);
   state().view = view;
   return replyDone();

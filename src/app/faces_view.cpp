@@ -1,0 +1,81 @@
+#include "app/faces_view.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+
+#include "core/bitmap_font.h"
+#include "gfx/cube_readback.h"
+
+namespace reflect {
+namespace {
+
+std::string upper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string titleOf(const Scene& scene, int reflector, FacesChannel channel) {
+  std::string mesh = reflector >= 0 && static_cast<size_t>(reflector) < scene.objects.size()
+                         ? scene.objects[static_cast<size_t>(reflector)].mesh
+                         : std::string();
+  return upper("probe of object " + std::to_string(reflector + 1) + " (" + mesh + ")  channel " +
+               facesChannelName(channel));
+}
+
+}  // namespace
+
+Result<RgbaImage> composeFacesView(const SceneRenderer& renderer, const Scene& scene,
+                                   const FramePlan& plan, const FaceAges& ages,
+                                   FacesChannel channel) {
+  if (plan.probes.empty()) {
+    return Result<RgbaImage>::failure(
+        "no cube map this frame: every reflector's rays were traced (search: planned found "
+        "tracing cheaper, or search: exact). To see the faces, set search to plain, hierarchical "
+        "or layered, or apply the course preset");
+  }
+  const int reflector = plan.probes.front().reflector;
+  const CubeCaptureTarget* target = renderer.probeTarget(reflector);
+  if (target == nullptr) {
+    return Result<RgbaImage>::failure("the probe of object " + std::to_string(reflector + 1) +
+                                      " has not been captured yet");
+  }
+  Result<CubeFaces> faces = readCubeFaces(*target, channel);
+  if (!faces) return Result<RgbaImage>::failure(faces.error());
+  return unfoldCross(faces.value(), ages.marks(reflector), true,
+                     titleOf(scene, reflector, channel));
+}
+
+RgbaImage messageImage(const std::string& text, int width, int height) {
+  RgbaImage image;
+  image.width = width;
+  image.height = height;
+  image.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  for (size_t p = 0; p < image.pixels.size(); p += 4) {
+    std::memcpy(&image.pixels[p], kCrossBackground.data(), 4);
+  }
+  // Word-wrapped at the image's width, from the top-left corner with a margin.
+  const int margin = 12;
+  const int perLine = std::max(1, (width - 2 * margin) / kGlyphAdvance);
+  std::string line;
+  int y = margin;
+  const auto flush = [&]() {
+    drawText(image, margin, y, line, {235, 235, 235, 255});
+    y += kGlyphHeight + 5;
+    line.clear();
+  };
+  size_t start = 0;
+  const std::string shown = upper(text);
+  while (start < shown.size()) {
+    size_t end = shown.find(' ', start);
+    if (end == std::string::npos) end = shown.size();
+    const std::string word = shown.substr(start, end - start);
+    if (!line.empty() && static_cast<int>(line.size() + 1 + word.size()) > perLine) flush();
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  if (!line.empty()) flush();
+  return image;
+}
+
+}  // namespace reflect

@@ -1,0 +1,32 @@
+#include "app/inside_views.h"
+
+namespace reflect {
+
+std::string InsideViews::draw(const SceneRenderer& renderer, const Scene& scene,
+                              const FramePlan& plan, unsigned framebuffer, int width, int height) {
+  if (!blit_) {
+    Result<ImageBlit> blit = ImageBlit::create();
+    if (!blit) return blit.error();
+    blit_ = std::make_unique<ImageBlit>(blit.take());
+  }
+  Result<RgbaImage> image = composeFacesView(renderer, scene, plan, ages_, channel_);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  if (!image) {
+    blit_->draw(messageImage(image.error(), width, height), width, height, kCrossBackground);
+    return image.error();
+  }
+  blit_->draw(image.value(), width, height, kCrossBackground);
+  return {};
+}
+
+void InsideViews::abandon() {
+  if (blit_) blit_->abandon();
+  blit_.reset();
+  ages_.clear();
+}
+
+void InsideViews::release() {
+  blit_.reset();
+}
+
+}  // namespace reflect

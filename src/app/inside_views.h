@@ -1,0 +1,42 @@
+// Inside the frame: the teaching views a frame can be shown as instead of its picture (the
+// view setting `inside`). Each frame the demo tells it what the frame planned (afterFrame); when
+// a view is on, draw() puts that view on the framebuffer over the finished frame. With the views
+// off nothing here runs and nothing is allocated: the normal frame is untouched.
+#pragma once
+
+#include <memory>
+
+#include "app/faces_view.h"
+#include "core/face_ages.h"
+#include "core/settings_schema.h"
+#include "gfx/image_blit.h"
+
+namespace reflect {
+
+class InsideViews {
+ public:
+  void set(InsideView view, FacesChannel channel) {
+    view_ = view;
+    channel_ = channel;
+  }
+  bool on() const { return view_ != InsideView::Off; }
+  // Every frame, views on or off: the faces' ages must be known when the view is turned on.
+  void afterFrame(const FramePlan& plan) { ages_.advance(plan); }
+  const FaceAges& ages() const { return ages_; }
+  // Draws the view into `framebuffer` (width x height). Returns "" or why the view could not be
+  // made (then a message image is drawn in its place, so the screen says it too).
+  std::string draw(const SceneRenderer& renderer, const Scene& scene, const FramePlan& plan,
+                   unsigned framebuffer, int width, int height);
+  // The context was lost: names are gone, ages start over (the cubes are empty again).
+  void abandon();
+  // The GL objects are freed (the context stays).
+  void release();
+
+ private:
+  InsideView view_ = InsideView::Off;
+  FacesChannel channel_ = FacesChannel::Colour;
+  FaceAges ages_;
+  std::unique_ptr<ImageBlit> blit_;  // made on the first draw
+};
+
+}  // namespace reflect

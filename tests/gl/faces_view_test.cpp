@@ -1,0 +1,97 @@
+// The faces view of a real frame: its squares are the probe's faces as read back, its marks follow
+// what the frame redrew, a frame with no probe says why instead of showing stale pixels, and with
+// the view on the screen shows the view (with it off, the frame's own picture: the goldens).
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "app/faces_view.h"
+#include "core/scene.h"
+#include "gfx/cube_readback.h"
+#include "gfx/offscreen_target.h"
+#include "gl_fixture.h"
+
+namespace reflect {
+namespace {
+
+TEST(FacesView, TheSquaresAreTheProbesFacesAndTheMarksFollowTheFrames) {
+  auto demo = testing::makeCapturingDemo(makeDynamicReflectionScene());
+  auto screen = OffscreenTarget::create(64, 64);
+  ASSERT_TRUE(screen);
+  demo->frame(0.0, screen.value().framebuffer(), 64, 64, true);
+  const int reflector = demo->scene().reflectorIndex();
+  const CubeCaptureTarget* probe = demo->renderer()->probeTarget(reflector);
+  ASSERT_NE(probe, nullptr);
+  Result<RgbaImage> view = composeFacesView(*demo->renderer(), demo->scene(), demo->lastPlan(),
+                                            demo->insideViews().ages(), FacesChannel::Colour);
+  ASSERT_TRUE(view) << view.error();
+  testing::saveOutput(view.value(), "faces_view_colour.png");
+  const Result<CubeFaces> faces = readCubeFaces(*probe, FacesChannel::Colour);
+  ASSERT_TRUE(faces) << faces.error();
+  const CrossGeometry g = crossGeometry(probe->faceSize());
+  for (size_t f = 0; f < 6; ++f) {
+    for (int y = 0; y < probe->faceSize(); ++y) {
+      ASSERT_EQ(std::memcmp(view.value().at(g.squareOrigin[f][0], g.squareOrigin[f][1] + y),
+                            faces.value()[f].at(0, y), static_cast<size_t>(probe->faceSize()) * 4),
+                0)
+          << "face " << f << " row " << y;
+    }
+  }
+  // The first frame drew all six; a frame later with nothing moved (no time passed), the
+  // when-changed policy redraws none, and each face is a frame old.
+  for (const FaceMark& mark : demo->insideViews().ages().marks(reflector)) {
+    EXPECT_EQ(faceStatus(mark), "CAPTURED");
+  }
+  demo->frame(0.0, screen.value().framebuffer(), 64, 64, true);
+  ASSERT_EQ(demo->lastPlan().facesCaptured(), 0);
+  for (const FaceMark& mark : demo->insideViews().ages().marks(reflector)) {
+    EXPECT_EQ(faceStatus(mark), "STALE 1 FRAME");
+  }
+}
+
+TEST(FacesView, AFrameWithNoProbeSaysWhyAndTheScreenShowsIt) {
+  // The default traces the sphere's rays in this small view: no cube map exists.
+  auto demo = testing::makeDemo(makeDynamicReflectionScene());
+  auto screen = OffscreenTarget::create(64, 64);
+  ASSERT_TRUE(screen);
+  demo->frame(0.0, screen.value().framebuffer(), 64, 64, true);
+  ASSERT_TRUE(demo->lastPlan().probes.empty());
+  const Result<RgbaImage> view =
+      composeFacesView(*demo->renderer(), demo->scene(), demo->lastPlan(),
+                       demo->insideViews().ages(), FacesChannel::Colour);
+  ASSERT_FALSE(view);
+  EXPECT_NE(view.error().find("no cube map this frame"), std::string::npos) << view.error();
+  // With the view on, the screen is the message image, pixel for pixel.
+  demo->setInsideView(InsideView::Faces, FacesChannel::Colour);
+  demo->frame(0.0, screen.value().framebuffer(), 64, 64, true);
+  EXPECT_EQ(screen.value().readPixels().pixels, messageImage(view.error(), 64, 64).pixels);
+}
+
+TEST(FacesView, WithTheViewOnTheScreenIsTheCrossCentred) {
+  auto demo = testing::makeCapturingDemo(makeDynamicReflectionScene());
+  demo->setInsideView(InsideView::Faces, FacesChannel::Distance);
+  // The cross of a 256 face is 4 x 282 = 1128 wide: a screen that holds it with room around.
+  const int width = 1200, height = 1000;
+  auto screen = OffscreenTarget::create(width, height);
+  ASSERT_TRUE(screen);
+  demo->frame(0.0, screen.value().framebuffer(), width, height, true);
+  const Result<RgbaImage> view =
+      composeFacesView(*demo->renderer(), demo->scene(), demo->lastPlan(),
+                       demo->insideViews().ages(), FacesChannel::Distance);
+  ASSERT_TRUE(view) << view.error();
+  testing::saveOutput(view.value(), "faces_view_distance.png");
+  const RgbaImage shown = screen.value().readPixels();
+  const int left = (width - view.value().width) / 2;
+  // The framebuffer's origin is its bottom row: the image's top sits (height - h) - origin.y rows
+  // below the screen's top, with origin.y = (height - h) / 2.
+  const int top = height - view.value().height - (height - view.value().height) / 2;
+  for (int y = 0; y < view.value().height; y += 7) {
+    ASSERT_EQ(std::memcmp(shown.at(left, top + y), view.value().at(0, y),
+                          static_cast<size_t>(view.value().width) * 4),
+              0)
+        << "row " << y;
+  }
+}
+
+}  // namespace
+}  // namespace reflect
