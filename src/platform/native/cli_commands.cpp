@@ -186,6 +186,7 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
   c.callback([&c, &o] {
     o.command = "render";
     applyPreset(c, o);
+    o.policySet = c.count("--policy") > 0;
   });
 }
 

@@ -77,7 +77,7 @@ CLI::Option* addSetting(CLI::App& app, CliWording& wording, const SettingField<S
   }
   // The value has passed the checks below: a choice's name, or a number.
   auto set = [&field, &settings](const std::string& text) {
-    field.set(settings, field.info.kind == Kind::Choice ? json(text) : decimalJson(text));
+    field.set(settings, settingJson(field.info, text));
   };
   CLI::Option* option = app.add_option_function<std::string>(
       info.optionName(), set, info.help + " (default " + byDefault + "; " + info.expected() + ")");

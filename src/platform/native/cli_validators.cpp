@@ -32,7 +32,7 @@ CLI::Validator worded(const CLI::Validator& decides,
 // The schema's message for `text` as the value of `info`, without the setting's name ("7 is not
 // in 1..6"), the way the page words the same value.
 std::string schemaMessage(const SettingInfo& info, const std::string& text) {
-  const std::string problem = info.check(decimalJson(text));
+  const std::string problem = info.check(settingJson(info, text));
   return problem.substr(std::min(problem.size(), info.name.size() + 2));
 }
 
@@ -71,6 +71,12 @@ json decimalJson(const std::string& text) {
   const double value = std::strtod(text.c_str(), &end);
   if (*end != '\0' || !std::isfinite(value)) return nullptr;
   return value;
+}
+
+json settingJson(const SettingInfo& info, const std::string& text) {
+  if (info.kind == Kind::Choice) return text;
+  if (info.kind == Kind::Flag) return text == "true";
+  return decimalJson(text);
 }
 
 CLI::Validator notAnOption(const std::string& expected) {

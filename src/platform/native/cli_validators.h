@@ -21,6 +21,10 @@ namespace reflect {
 // not a finite decimal number (hexadecimal, blanks, "nan" and "inf" are not numbers here).
 nlohmann::json decimalJson(const std::string& text);
 
+// `text` as the value of the setting `info`: a choice's name, a flag's true or false, a number (or
+// null, when it is not one).
+nlohmann::json settingJson(const SettingInfo& info, const std::string& text);
+
 // The checks of a value option, first of all: CLI11 takes the word after an option as its value
 // even when it is the next option, and then the value is missing.
 CLI::Validator notAnOption(const std::string& expected);
