@@ -81,7 +81,7 @@ void addMode(CLI::App& modes, const std::string& name, const std::string& help, 
 
 void defineModes(CLI::App& bench, CliOptions& o, CliWording& w) {
   CLI::App* modes = bench.add_option_group(
-      "modes", "none: the policy comparison, or the one policy given with --policy");
+      "modes", "none given: the policy comparison, or with --policy, that policy alone");
   addMode(*modes, "--growth",
           "frame ms for 1/4/16 reflectors x 10k/100k/1M triangles, with a probe each and with "
           "neighbours sharing probes",
@@ -153,13 +153,15 @@ void defineSweepOptions(CLI::App& c, CliOptions& o, CliWording& w) {
               w, "NAME,...", "names of sweep settings")
       ->check(nameList());
   CLI::Option* sweep = c.get_option("--sweep");
-  valueOption(c.add_option("--csv", o.csv,
-                           "sweep: write the rows as CSV (name, ms, psnr_db, rmse, p95, ...)"),
-              w, "FILE", "a file name")
+  valueOption(
+      c.add_option("--csv", o.csv,
+                   "with --sweep: write the rows as CSV (name, ms, psnr_db, rmse, p95, ...)"),
+      w, "FILE", "a file name")
       ->needs(sweep);
-  valueOption(c.add_option("--svg", o.svg,
-                           "sweep: write a plot of error against time with the Pareto front"),
-              w, "FILE", "a file name")
+  valueOption(
+      c.add_option("--svg", o.svg,
+                   "with --sweep: write a plot of error against time with the Pareto front"),
+      w, "FILE", "a file name")
       ->needs(sweep);
 }
 
@@ -205,7 +207,8 @@ void defineBench(CLI::App& c, CliOptions& o, CliWording& w) {
 }
 
 void defineHelp(CLI::App& c, CliOptions& o) {
-  c.add_option("COMMAND", o.helpTopic, "one command's options alone")
+  c.add_option("COMMAND", o.helpTopic, "render or bench: that command's options alone")
+      ->type_name("")
       ->check(commandName({"render", "bench"}));
   c.callback([&o] { o.command = "help"; });
 }

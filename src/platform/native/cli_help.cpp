@@ -43,8 +43,15 @@ class WrappingFormatter : public CLI::Formatter {
     return wrap(CLI::Formatter::make_option_desc(option), kHelpWidth - kHelpColumn);
   }
 
+  // Only the value's name ("--csv FILE"): what an option needs or excludes, its help says.
+  std::string make_option_opts(const CLI::Option* option) const override {
+    const std::string value = option->get_type_name();
+    return option->get_type_size() == 0 || value.empty() ? std::string() : " " + value;
+  }
+
   std::string make_description(const CLI::App* app) const override {
-    return wrap(CLI::Formatter::make_description(app), kHelpWidth);
+    const std::string text = wrap(CLI::Formatter::make_description(app), kHelpWidth);
+    return text.empty() ? text : text + "\n";  // a blank line before the usage
   }
 };
 

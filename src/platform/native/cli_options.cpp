@@ -12,6 +12,13 @@
 namespace reflect {
 namespace {
 
+// A subcommand of `app`, its --help listed first among its options.
+CLI::App& addCommand(CLI::App& app, const std::string& name, const std::string& description) {
+  CLI::App* command = app.add_subcommand(name, description);
+  command->set_help_flag("-h,--help", "show this help")->group(kOptionsGroup);
+  return *command;
+}
+
 // The whole command line, bound to `options`: the subcommands render, bench and help, each with
 // its own --help, and the failure messages worded by `wording`.
 std::unique_ptr<CLI::App> makeCli(CliOptions& options, CliWording& wording) {
@@ -27,21 +34,21 @@ std::unique_ptr<CLI::App> makeCli(CliOptions& options, CliWording& wording) {
   app->failure_message([&wording](const CLI::App* top, const CLI::Error& error) {
     return cliFailureMessage(wording, *top, error);
   });
-  defineRender(*app->add_subcommand("render",
-                                    "render one frame of a scene to a PNG, headless "
-                                    "(EGL, GL ES 3)"),
+  defineRender(addCommand(*app, "render",
+                          "render one frame of a scene to a PNG, headless "
+                          "(EGL, GL ES 3)"),
                options, wording);
-  defineBench(*app->add_subcommand(
-                  "bench",
-                  "time the capture update policies on the scene, interleaved frame by frame, and "
-                  "compare their pictures with every-frame's (the default mode: " +
-                      std::to_string(benchFramesDefault(BenchMode::PolicyComparison)) +
-                      " frames a policy); or one of the modes below. The comparison's rows take "
-                      "--faces-per-frame, --every-n, --capture-lod and --view-lod (0.5 where 0)"),
-              options, wording);
-  defineHelp(*app->add_subcommand("help",
-                                  "this text; one command's options: reflect help "
-                                  "COMMAND, or reflect COMMAND --help"),
+  defineBench(
+      addCommand(*app, "bench",
+                 "time the capture update policies on the scene, interleaved frame by frame, and "
+                 "compare their pictures with every-frame's (the default mode: " +
+                     std::to_string(benchFramesDefault(BenchMode::PolicyComparison)) +
+                     " frames a policy); or one of the modes below. The comparison's rows take "
+                     "--faces-per-frame, --every-n, --capture-lod and --view-lod (0.5 where 0)"),
+      options, wording);
+  defineHelp(addCommand(*app, "help",
+                        "this text; one command's options: reflect help "
+                        "COMMAND, or reflect COMMAND --help"),
              options);
   return app;
 }
@@ -83,7 +90,7 @@ std::string cliHelp(const std::string& command) {
   CliWording wording;
   const std::unique_ptr<CLI::App> app = makeCli(unused, wording);
   if (command.empty()) return app->help("", CLI::AppFormatMode::All);
-  return app->get_subcommand(command)->help();
+  return app->get_subcommand(command)->help("reflect");
 }
 
 Result<CliOptions> parseCli(const std::vector<std::string>& args) {
