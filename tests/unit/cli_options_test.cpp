@@ -257,6 +257,63 @@ TEST(CliOptions, AMissingValueNamesTheOption) {
             "every-n)");
 }
 
+// Each command has CLI11's own --help, and `help COMMAND` prints the same text.
+TEST(CliOptions, EachCommandHasItsOwnHelp) {
+  EXPECT_EQ(mustParse({"bench", "--help"}).helpTopic, "bench");
+  EXPECT_EQ(mustParse({"help", "--help"}).helpTopic, "");
+  for (const std::string command : {"render", "bench"}) {
+    const std::string help = cliHelp(command);
+    EXPECT_NE(help.find("Usage: reflect " + command + " [OPTIONS]"), std::string::npos) << help;
+    EXPECT_NE(help.find("  -h,--help                 show this help\n"), std::string::npos);
+  }
+  EXPECT_NE(cliHelp("bench").find("[At most 1 of the following options are allowed]"),
+            std::string::npos);
+  EXPECT_EQ(errorOf({"help", "render", "bench"}), "help: unexpected argument 'bench'");
+}
+
+// The bench's modes are one option group, which CLI11 lets hold one of them at most.
+TEST(CliOptions, TheBenchTakesOneModeAtMost) {
+  EXPECT_EQ(mustParse({"bench", "--costs"}).benchMode(), BenchMode::Costs);
+  const CliOptions budget = mustParse({"bench", "--budget", "30"});
+  EXPECT_EQ(budget.benchMode(), BenchMode::Budget);
+  EXPECT_EQ(budget.view.budget, 30.0f);
+  for (const char* mode : {"--sweep", "--growth", "--costs", "--lod-sweep", "--view-lod-sweep"}) {
+    EXPECT_EQ(errorOf({"bench", "--budget", "30", mode}),
+              "bench: --budget is a mode of its own; give it without --growth, --sweep, --costs, "
+              "--lod-sweep or --view-lod-sweep")
+        << mode;
+  }
+  EXPECT_EQ(errorOf({"bench", "--costs", "--sweep"}),
+            "bench: --growth, --sweep, --costs, --lod-sweep and --view-lod-sweep are separate "
+            "modes; give one of them");
+  EXPECT_EQ(errorOf({"bench", "--budget", "0"}),
+            "--budget: give the frame budget in ms, above 0 (natively there is no display "
+            "interval to default to)");
+  EXPECT_EQ(errorOf({"bench", "--svg", "a.svg", "--growth"}),
+            "bench: --svg is the sweep's output; add --sweep");
+}
+
+TEST(CliOptions, ValuesReadAsTheyAlwaysHave) {
+  EXPECT_TRUE(mustParse({"render", "--mipmaps=on"}).accuracy.mipmaps);  // CLI11's flag words
+  EXPECT_EQ(mustParse({"render", "--cube", "128.0"}).cubeSize, 128);    // a whole number
+  EXPECT_EQ(mustParse({"render", "--depth-bits", "16.0"}).accuracy.depthBits, 16);
+  EXPECT_EQ(mustParse({"bench", "--times", "0.5,2"}).times, std::vector<double>({0.5, 2.0}));
+  EXPECT_EQ(mustParse({"bench", "--only", "original,default"}).only,
+            std::vector<std::string>({"original", "default"}));
+  EXPECT_EQ(mustParse({"render", "--preset", "course"}).planner.policy, UpdatePolicy::EveryFrame);
+  // An option given beside the preset overrides it.
+  EXPECT_EQ(mustParse({"render", "--preset", "course", "--policy", "every-n"}).planner.policy,
+            UpdatePolicy::EveryNFrames);
+  EXPECT_EQ(errorOf({"render", "--preset", "nope"}),
+            "--preset: \"nope\" is not one of default, course");
+  EXPECT_EQ(errorOf({"render", "--scene", "--out"}),
+            "--scene: missing value (expected a scene name or a .json file)");
+  EXPECT_EQ(errorOf({"bench", "--times", "1,,2"}),
+            "--times: 1,,2 is not numbers of seconds T1,T2,...");
+  EXPECT_EQ(errorOf({"bench", "--only", "a,,b"}), "--only: a,,b has an empty name");
+  EXPECT_EQ(errorOf({"--bogus"}), "unknown command '--bogus' (try: reflect --help)");
+}
+
 // The settings' own checks, the page's messages with the option's name.
 TEST(CliOptions, SettingsAreCheckedAsThePageChecksThem) {
   EXPECT_EQ(errorOf({"render", "--faces-per-frame", "7"}), "--faces-per-frame: 7 is not in 1..6");

@@ -1,8 +1,9 @@
-// The `reflect` command line, parsed into plain values (no GL, so it is unit-tested). Each command
-// is defined once, with CLI11: its options, their help, and what each value must be. The capture
-// planning and accuracy options come from the settings table (core/settings_schema.h): a setting
-// added there is an option here, named in kebab case (facesPerFrame -> --faces-per-frame) and
-// checked with the same messages as the page's.
+// The `reflect` command line, parsed into plain values (no GL, so it is unit-tested). CLI11 parses
+// it as designed: the subcommands render, bench and help (cli_options.cpp), each command's options
+// and help (cli_commands), the settings table's options (cli_settings: a setting added to
+// core/settings_schema.h is an option here, named in kebab case, facesPerFrame ->
+// --faces-per-frame, checked with the page's messages), what each value must be (cli_validators)
+// and how a mistake is worded (cli_failure, CLI11's failure-message hook).
 #pragma once
 
 #include <optional>

@@ -1,0 +1,216 @@
+#include "platform/native/cli_commands.h"
+
+#include "app/demo.h"
+#include "platform/native/cli_settings.h"
+#include "platform/native/cli_validators.h"
+#include "platform/native/model_paths.h"
+
+namespace reflect {
+namespace {
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+// A whole-number option that is not a setting (--cube, --frames): checked as one, then `set`.
+CLI::Option* addWholeNumber(CLI::App& app, CliWording& wording, const SettingInfo& info,
+                            const std::string& help, std::function<void(int)> set) {
+  CLI::Option* option = app.add_option_function<double>(
+      info.optionName(), [set](const double& value) { set(static_cast<int>(value)); }, help);
+  wording.expected[option->get_name()] = info.expected();
+  option->type_name("N");
+  checkAsSetting(option, info);
+  return option;
+}
+
+void defineView(CLI::App& c, CliOptions& o, CliWording& w) {
+  const SettingInfo cube = wholeNumberInfo("cube", 1, Demo::kMaxCubeFaceSize);
+  addWholeNumber(c, w, cube,
+                 "cube-map face size, 1.." + std::to_string(Demo::kMaxCubeFaceSize) +
+                     " (default: the scene's capture.faceSize, 256 in the shipped scenes)",
+                 [&o](int side) { o.cubeSize = side; });
+  valueOption(c.add_option("--yaw", o.yawDeg, "camera yaw in degrees (default 0)"), w, "DEG",
+              "a number of degrees")
+      ->check(decimalNumber("degrees"));
+  valueOption(
+      c.add_option("--pitch", o.pitchDeg, "camera pitch in degrees, clamped to +/-89 (default 0)"),
+      w, "DEG", "a number of degrees")
+      ->check(decimalNumber("degrees"));
+  auto eye = [&o](const std::string& text) { o.eye = parseThreeNumbers(text); };
+  valueOption(c.add_option_function<std::string>(
+                  "--eye", eye, "camera position (default: the scene's camera eye)"),
+              w, "X,Y,Z", "three numbers X,Y,Z")
+      ->check(threeNumbers());
+}
+
+// The options render and bench share: the scene, the view, the capture settings.
+void defineScene(CLI::App& c, CliOptions& o, CliWording& w) {
+  valueOption(c.add_option("--scene", o.scene,
+                           "a shipped scene (" + joined(shippedSceneNames()) +
+                               ") or a .json file (default " + o.scene + ")"),
+              w, "NAME", "a scene name or a .json file")
+      ->check(sceneNameOrFile());
+  valueOption(c.add_option("--assets", o.assets,
+                           "take the models from DIR by the course's file names (mario.obj "
+                           "sonic.obj sphere.obj quad.obj); the built-in ones for those it lacks"),
+              w, "DIR", "a folder")
+      ->check(existingFolder());
+  w.valueFirst.insert({"--scene", "--assets"});
+  auto size = [&o](const std::string& text) {
+    const glm::ivec2 side = *parseFrameSize(text);
+    o.width = side.x;
+    o.height = side.y;
+    o.sizeSet = true;
+  };
+  valueOption(
+      c.add_option_function<std::string>(
+          "--size", size,
+          "frame size in pixels, each side 1.." + std::to_string(kMaxFrameSide) + " (default " +
+              std::to_string(o.width) + "x" + std::to_string(o.height) + ")"),
+      w, "WxH", frameSizeExpected())
+      ->check(frameSize());
+  defineView(c, o, w);
+}
+
+// A mode of the bench: a flag of the modes group.
+void addMode(CLI::App& modes, const std::string& name, const std::string& help, bool& on) {
+  modes.add_flag(name, on, "mode: " + help);
+}
+
+void defineModes(CLI::App& bench, CliOptions& o, CliWording& w) {
+  CLI::App* modes = bench.add_option_group(
+      "modes", "none given: the policy comparison, or with --policy, that policy alone");
+  addMode(*modes, "--growth",
+          "frame ms for 1/4/16 reflectors x 10k/100k/1M triangles, with a probe each and with "
+          "neighbours sharing probes",
+          o.growth);
+  addMode(*modes, "--lod-sweep",
+          "each captureLod value against full detail: the reflector against the ray-traced "
+          "reference at t = 0..5 s, capture triangles and frame ms (the values interleaved); "
+          "prints the coarsest value within 0.1 dB and +1 point of pixels off by >32 levels",
+          o.lodSweep);
+  addMode(*modes, "--view-lod-sweep",
+          "each viewLod value against the full-detail view, the camera aimed at the heaviest "
+          "figure from several distances: PSNR and pixels off by >32 levels",
+          o.viewLodSweep);
+  addMode(*modes, "--costs",
+          "what the planner's cost model is fitted to: frames drawn as Phong, traced, captured "
+          "and searched, and searched alone, with the planner's counts, as ms a unit",
+          o.costs);
+  addMode(*modes, "--sweep",
+          "every accuracy setting (capture point, distance-corrected lookup, face size, depth "
+          "bits, filtering, RGBA16F, precision): frame ms and error against the ray-traced "
+          "reference",
+          o.sweep);
+  // The page's frame budget, here a mode: time each search, measure its error against the exact
+  // mode, print the table and what "auto" picks.
+  for (const auto& field : viewFields()) {
+    if (field.info.name == "budget") {
+      addSetting(*modes, w, field, o.view)->check(positiveBudget());
+    }
+  }
+  modes->require_option(0, 1);
+}
+
+// "120 a policy, 6 a growth cell": a count's default in each mode.
+std::string perMode(int (*byDefault)(BenchMode), bool withSweep) {
+  std::string text = std::to_string(byDefault(BenchMode::PolicyComparison)) + " a policy, " +
+                     std::to_string(byDefault(BenchMode::Growth)) + " a growth cell";
+  if (withSweep) text += ", " + std::to_string(byDefault(BenchMode::Sweep)) + " a sweep setting";
+  return text;
+}
+
+void defineCounts(CLI::App& c, CliOptions& o, CliWording& w) {
+  addWholeNumber(c, w, wholeNumberInfo("frames", 1, 1000000),
+                 "frames to time (1..1000000; default " + perMode(benchFramesDefault, true) + ")",
+                 [&o](int n) { o.frames = n; });
+  addWholeNumber(c, w, wholeNumberInfo("warmup", 0, 1000000),
+                 "frames before timing (0..1000000; default " + perMode(benchWarmupDefault, false) +
+                     "; the sweep has none)",
+                 [&o](int n) { o.warmup = n; });
+  addWholeNumber(c, w, wholeNumberInfo("accuracyFrames", 0, 100000),
+                 "frames each policy is compared with every-frame (0..100000; default " +
+                     std::to_string(o.accuracyFrames) + ")",
+                 [&o](int n) { o.accuracyFrames = n; });
+}
+
+void defineSweepOptions(CLI::App& c, CliOptions& o, CliWording& w) {
+  auto times = [&o](const std::string& text) { o.times = *parseNumberList(text); };
+  valueOption(c.add_option_function<std::string>(
+                  "--times", times,
+                  "the sweeps: the scene times measured, in seconds (default 0,1,2,3,4,5; the "
+                  "view sweep 0,3; the accuracy sweep reports these instead of its held-out "
+                  "times and skips its tuning times)"),
+              w, "T1,T2,...", "numbers of seconds T1,T2,...")
+      ->check(numberList());
+  auto only = [&o](const std::string& text) { o.only = splitNames(text); };
+  valueOption(c.add_option_function<std::string>(
+                  "--only", only,
+                  "sweep: measure only these of its settings, by the names of its rows (e.g. "
+                  "original,default: the course's and the default, interleaved)"),
+              w, "NAME,...", "names of sweep settings")
+      ->check(nameList());
+  CLI::Option* sweep = c.get_option("--sweep");
+  valueOption(
+      c.add_option("--csv", o.csv,
+                   "with --sweep: write the rows as CSV (name, ms, psnr_db, rmse, p95, ...)"),
+      w, "FILE", "a file name")
+      ->needs(sweep);
+  valueOption(
+      c.add_option("--svg", o.svg,
+                   "with --sweep: write a plot of error against time with the Pareto front"),
+      w, "FILE", "a file name")
+      ->needs(sweep);
+}
+
+}  // namespace
+
+void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
+  valueOption(c.add_option("--time", o.time,
+                           "scene time in seconds (default 0); the figures orbit 27 deg/s"),
+              w, "SECONDS", "a number of seconds")
+      ->check(decimalNumber("seconds"));
+  valueOption(c.add_option("--out", o.out, "the PNG to write (default " + o.out + ")"), w, "FILE",
+              "a PNG file name");
+  valueOption(c.add_option("--reference", o.referenceOut,
+                           "also write the exact (ray-traced, Embree) frame and print the "
+                           "reflector's error against it"),
+              w, "FILE", "a PNG file name");
+  valueOption(c.add_option("--error-view", o.errorViewOut,
+                           "also write the error view of the frame (a heat map of each mirror and "
+                           "glass pixel's difference from the exact mode) and print the reflector "
+                           "PSNR and the pixels off by more than 32 levels"),
+              w, "FILE", "a PNG file name");
+  defineScene(c, o, w);
+  addSettingOptions(c, o, w);
+  c.callback([&c, &o] {
+    o.command = "render";
+    applyPreset(c, o);
+    o.policySet = c.count("--policy") > 0;
+  });
+}
+
+void defineBench(CLI::App& c, CliOptions& o, CliWording& w) {
+  defineModes(c, o, w);
+  defineCounts(c, o, w);
+  defineSweepOptions(c, o, w);
+  defineScene(c, o, w);
+  addSettingOptions(c, o, w);
+  c.callback([&c, &o] {
+    o.command = "bench";
+    applyPreset(c, o);
+    o.policySet = c.count("--policy") > 0;
+    o.budgetSet = c.get_option("--budget")->count() > 0;
+  });
+}
+
+void defineHelp(CLI::App& c, CliOptions& o) {
+  c.add_option("COMMAND", o.helpTopic, "render or bench: that command's options alone")
+      ->type_name("")
+      ->check(commandName({"render", "bench"}));
+  c.callback([&o] { o.command = "help"; });
+}
+
+}  // namespace reflect
