@@ -27,12 +27,12 @@ std::string titleOf(const Scene& scene, int reflector, FacesChannel channel) {
 
 Result<RgbaImage> composeFacesView(const SceneRenderer& renderer, const Scene& scene,
                                    const FramePlan& plan, const FaceAges& ages,
-                                   FacesChannel channel) {
+                                   FacesChannel channel, int fitWidth, int fitHeight) {
   if (plan.probes.empty()) {
     return Result<RgbaImage>::failure(
         "no cube map this frame: every reflector's rays were traced (search: planned found "
-        "tracing cheaper, or search: exact). To see the faces, set search to plain, hierarchical "
-        "or layered, or apply the course preset");
+        "tracing cheaper, or search: exact). To see the faces, set search to plain, linear or "
+        "hierarchical, or apply the course preset");
   }
   const int reflector = plan.probes.front().reflector;
   const CubeCaptureTarget* target = renderer.probeTarget(reflector);
@@ -42,8 +42,10 @@ Result<RgbaImage> composeFacesView(const SceneRenderer& renderer, const Scene& s
   }
   Result<CubeFaces> faces = readCubeFaces(*target, channel);
   if (!faces) return Result<RgbaImage>::failure(faces.error());
-  return unfoldCross(faces.value(), ages.marks(reflector), true,
-                     titleOf(scene, reflector, channel));
+  const int factor = crossShrinkFactor(target->faceSize(), fitWidth, fitHeight);
+  std::string title = titleOf(scene, reflector, channel);
+  if (factor > 1) title += "  SHOWN AT 1/" + std::to_string(factor);
+  return unfoldCross(shrinkFaces(faces.value(), factor), ages.marks(reflector), true, title);
 }
 
 RgbaImage messageImage(const std::string& text, int width, int height) {

@@ -17,10 +17,12 @@ namespace reflect {
 
 // The cross of `plan`'s first probe (a scene with several shows the first reflector's; the title
 // names it), marked by `ages`. Fails with a message saying why when the frame captured no probe
-// (every reflector traced) or the probe does not store `channel`.
+// (every reflector traced) or the probe does not store `channel`. With `fitWidth` and
+// `fitHeight` (the page's canvas) the faces shrink by a whole factor until the cross fits, and
+// the title says so; 0 (natively): texel for pixel.
 Result<RgbaImage> composeFacesView(const SceneRenderer& renderer, const Scene& scene,
                                    const FramePlan& plan, const FaceAges& ages,
-                                   FacesChannel channel);
+                                   FacesChannel channel, int fitWidth = 0, int fitHeight = 0);
 
 // A message as an image (the view's background, the text in lines of at most `width` pixels):
 // what the page shows in the view's place when there is nothing to show.

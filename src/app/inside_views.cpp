@@ -9,7 +9,7 @@ std::string InsideViews::draw(const SceneRenderer& renderer, const Scene& scene,
     if (!blit) return blit.error();
     blit_ = std::make_unique<ImageBlit>(blit.take());
   }
-  Result<RgbaImage> image = composeFacesView(renderer, scene, plan, ages_, channel_);
+  Result<RgbaImage> image = composeFacesView(renderer, scene, plan, ages_, channel_, width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   if (!image) {
     blit_->draw(messageImage(image.error(), width, height), width, height, kCrossBackground);

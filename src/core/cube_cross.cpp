@@ -97,6 +97,44 @@ CrossGeometry crossGeometry(int faceSize) {
   return g;
 }
 
+int crossShrinkFactor(int faceSize, int width, int height) {
+  if (width <= 0 || height <= 0) return 1;
+  int factor = 1;
+  while (faceSize / (factor + 1) >= 8) {
+    const CrossGeometry g = crossGeometry(faceSize / factor);
+    if (g.width <= width && g.height <= height) break;
+    ++factor;
+  }
+  return factor;
+}
+
+CubeFaces shrinkFaces(const CubeFaces& faces, int factor) {
+  if (factor <= 1) return faces;
+  CubeFaces small;
+  for (size_t f = 0; f < 6; ++f) {
+    const int size = faces[f].width / factor;
+    RgbaImage& out = small[f];
+    out.width = out.height = size;
+    out.pixels.resize(static_cast<size_t>(size) * static_cast<size_t>(size) * 4);
+    const int area = factor * factor;
+    for (int y = 0; y < size; ++y) {
+      for (int x = 0; x < size; ++x) {
+        for (int c = 0; c < 4; ++c) {
+          int sum = 0;
+          for (int dy = 0; dy < factor; ++dy) {
+            for (int dx = 0; dx < factor; ++dx)
+              sum += faces[f].at(x * factor + dx, y * factor + dy)[c];
+          }
+          out.pixels[(static_cast<size_t>(y) * static_cast<size_t>(size) + static_cast<size_t>(x)) *
+                         4 +
+                     static_cast<size_t>(c)] = static_cast<uint8_t>((sum + area / 2) / area);
+        }
+      }
+    }
+  }
+  return small;
+}
+
 std::string faceLabel(int face) {
   const CubeFace& f = kCubeFaces[static_cast<size_t>(face)];
   return std::string(f.name) + "  LOOK " + vectorText(f.direction) + "  UP " + vectorText(f.up);

@@ -45,6 +45,14 @@ struct CrossGeometry {
 };
 CrossGeometry crossGeometry(int faceSize);
 
+// The smallest whole factor k (1, 2, 3, ...) by which faces of `faceSize` must shrink for the view
+// to fit `width` x `height` (0: no limit); the view never shrinks below 8-texel faces.
+int crossShrinkFactor(int faceSize, int width, int height);
+// `faces` shrunk by `factor` (each texel the mean of a factor x factor block, rounded); 1 returns
+// them as they are. The page's canvas is often smaller than a 256-texel cross; the labels stay
+// readable because the faces shrink, not the whole image.
+CubeFaces shrinkFaces(const CubeFaces& faces, int factor);
+
 // "+X  LOOK (1,0,0)  UP (0,-1,0)": the course's table, one line a face.
 std::string faceLabel(int face);
 // "CAPTURED", "STALE 3 FRAMES" or "EMPTY".

@@ -283,7 +283,7 @@ const std::vector<SettingField<ViewSettings>>& viewFields() {
                        "what the faces view shows of each texel: colour, distance (the stored "
                        "depth along each face's look "
                        "direction, near bright; needs the depth search) or layer2 (the second "
-                       "layer's colour; needs search: layered)",
+                       "layer's colour; needs search: hierarchical with layers 2)",
                        kFacesChannels),
                 kInsideFolder),
        [](const V& s) { return json(facesChannelName(s.facesChannel)); },

@@ -49,10 +49,11 @@ RgbaImage readDistance(int size) {
 
 std::string missingChannel(const CubeCaptureTarget& target, FacesChannel channel) {
   if (channel == FacesChannel::Distance && !target.format().depthChain) {
-    return "the distance channel needs stored distances: set search to hierarchical or layered";
+    return "the distance channel needs stored depths: set search to hierarchical";
   }
   if (channel == FacesChannel::SecondLayer && target.format().layers < 2) {
-    return "the second-layer channel needs two layers: set search to layered";
+    return "the second-layer channel needs a second layer: set search to hierarchical and layers "
+           "to 2";
   }
   return {};
 }

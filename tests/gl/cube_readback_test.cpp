@@ -110,10 +110,12 @@ TEST(CubeReadback, AChannelTheProbeDoesNotStoreNamesTheSettingItNeeds) {
   const Result<CubeFaces> distance = readCubeFaces(plain, FacesChannel::Distance);
   ASSERT_FALSE(distance);
   EXPECT_EQ(distance.error(),
-            "the distance channel needs stored distances: set search to hierarchical or layered");
+            "the distance channel needs stored depths: set search to hierarchical");
   const Result<CubeFaces> second = readCubeFaces(plain, FacesChannel::SecondLayer);
   ASSERT_FALSE(second);
-  EXPECT_EQ(second.error(), "the second-layer channel needs two layers: set search to layered");
+  EXPECT_EQ(
+      second.error(),
+      "the second-layer channel needs a second layer: set search to hierarchical and layers to 2");
 }
 
 TEST(CubeReadback, TheViewOnScreenIsTheCrossOfTheReadBackPixelForPixel) {

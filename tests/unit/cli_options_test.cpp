@@ -64,6 +64,17 @@ TEST(CliOptions, ParsesRender) {
   EXPECT_FALSE(mustParse({"render"}).eye.has_value());  // the scene's own
 }
 
+TEST(CliOptions, ParsesTheFacesView) {
+  const CliOptions o = mustParse({"render", "--faces", "cross.png", "--faces-channel", "distance"});
+  EXPECT_EQ(o.facesOut, "cross.png");
+  EXPECT_EQ(o.view.facesChannel, FacesChannel::Distance);
+  EXPECT_EQ(mustParse({"render"}).view.facesChannel, FacesChannel::Colour);
+  EXPECT_NE(errorOf({"render", "--faces-channel", "depth"})
+                .find("\"depth\" is not one of colour, distance, layer2"),
+            std::string::npos)
+      << errorOf({"render", "--faces-channel", "depth"});
+}
+
 TEST(CliOptions, DefaultsAreTheDocumentedOnes) {
   const CliOptions o = mustParse({"render"});
   EXPECT_EQ(o.width, 800);

@@ -95,6 +95,23 @@ TEST(CubeCross, AStaleFaceIsDimmedToHalfAndTheOthersAreNot) {
             0);
 }
 
+TEST(CubeCross, TheViewShrinksByWholeFactorsToFitAndShrunkTexelsAreBlockMeans) {
+  EXPECT_EQ(crossShrinkFactor(256, 0, 0), 1);        // natively: no limit
+  EXPECT_EQ(crossShrinkFactor(256, 1200, 1000), 1);  // 1128 x 929 fits
+  EXPECT_EQ(crossShrinkFactor(256, 640, 600), 2);    // 616 x 545 at 128
+  const CrossGeometry half = crossGeometry(128);
+  EXPECT_LE(half.width, 640);
+  EXPECT_LE(half.height, 600);
+  EXPECT_EQ(crossShrinkFactor(256, 100, 100), 32);  // never below 8 texels
+  const CubeFaces faces = patternedFaces(8);
+  const CubeFaces small = shrinkFaces(faces, 2);
+  ASSERT_EQ(small[1].width, 4);
+  // Texel (1, 2) of the half-size face: the mean of texels (2..3, 4..5); green is 7 x column.
+  EXPECT_EQ(small[1].at(1, 2)[1], (7 * 2 + 7 * 3 + 7 * 2 + 7 * 3 + 2) / 4);
+  EXPECT_EQ(small[1].at(1, 2)[2], (11 * 4 + 11 * 4 + 11 * 5 + 11 * 5 + 2) / 4);
+  EXPECT_EQ(shrinkFaces(faces, 1)[3].pixels, faces[3].pixels);
+}
+
 TEST(CubeCross, LabelsAreTheCoursesFaceTable) {
   EXPECT_EQ(faceLabel(0), "+X  LOOK (1,0,0)  UP (0,-1,0)");
   EXPECT_EQ(faceLabel(2), "+Y  LOOK (0,1,0)  UP (0,0,1)");

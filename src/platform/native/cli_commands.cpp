@@ -183,6 +183,13 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
                            "glass pixel's difference from the exact mode) and print the reflector "
                            "PSNR and the pixels off by more than 32 levels"),
               w, "FILE", "a PNG file name");
+  valueOption(c.add_option("--faces", o.facesOut,
+                           "also write the faces view: the probe's cube map unfolded as a cross, "
+                           "each face with the course's look and up vectors, captured or stale"),
+              w, "FILE", "a PNG file name");
+  for (const auto& field : viewFields()) {
+    if (field.info.name == "facesChannel") addSetting(c, w, field, o.view);
+  }
   defineScene(c, o, w);
   addSettingOptions(c, o, w);
   c.callback([&c, &o] {

@@ -30,6 +30,7 @@ struct CliOptions {
   std::string out = "frame.png";  // render
   std::string referenceOut;       // render: also write the ray-traced reference of the frame
   std::string errorViewOut;       // render: also write the error view (heat map) of the frame
+  std::string facesOut;           // render: also write the faces view (view.facesChannel)
   std::string assets;             // a folder with the course's models, by their file names
   std::string scene = "ex12-2";   // a shipped scene's name, or a .json path
   std::string preset;             // --preset: a named preset (core/presets.h), or ""
@@ -52,7 +53,7 @@ struct CliOptions {
   std::vector<std::string> only;  // sweep: just these settings, by name
   std::string csv;                // sweep: CSV output
   std::string svg;                // sweep: SVG plot output
-  ViewSettings view;              // bench: the budget (--budget)
+  ViewSettings view;              // bench: the budget (--budget); render: --faces-channel
   bool budgetSet = false;         // bench: pick the most accurate search within view.budget ms
 
   // bench: which mode the options select, and the options it takes.

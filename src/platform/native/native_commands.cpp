@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/demo.h"
+#include "app/faces_view.h"
 #include "app/headless_frames.h"
 #include "bench/accuracy.h"
 #include "bench/bench_commands.h"
@@ -115,6 +116,18 @@ std::string writeReference(Demo& demo, const CliOptions& o) {
   return {};
 }
 
+// The faces view of the frame just drawn (--faces): the same image the page shows.
+std::string writeFacesView(const Demo& demo, const CliOptions& o) {
+  Result<RgbaImage> view = composeFacesView(*demo.renderer(), demo.scene(), demo.lastPlan(),
+                                            demo.insideViews().ages(), o.view.facesChannel);
+  if (!view) return "--faces: " + view.error();
+  std::string error = writePng(view.value(), o.facesOut);
+  if (!error.empty()) return error;
+  std::printf("wrote %s (the faces view, channel %s: %dx%d)\n", o.facesOut.c_str(),
+              facesChannelName(o.view.facesChannel), view.value().width, view.value().height);
+  return {};
+}
+
 }  // namespace
 
 std::string runRenderCommand(const CliOptions& o) {
@@ -128,6 +141,10 @@ std::string runRenderCommand(const CliOptions& o) {
   std::printf("wrote %s (%dx%d, t=%.3f s)\n", o.out.c_str(), o.width, o.height, o.time);
   if (!o.referenceOut.empty()) {
     error = writeReference(*demo.value(), o);
+    if (!error.empty()) return error;
+  }
+  if (!o.facesOut.empty()) {
+    error = writeFacesView(*demo.value(), o);
     if (!error.empty()) return error;
   }
   if (o.errorViewOut.empty()) return {};
