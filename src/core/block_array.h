@@ -8,7 +8,7 @@
 // that grew by reallocation would leave its smaller predecessors behind as gaps): arrays filled
 // one after the other lie side by side, with no gaps for another array's blocks to fall into, and
 // when they are freed together the space they leave is one piece. The OBJ parser relies on it
-// (obj_stream.cpp: the positions and normals, read before the faces, leave the space the index
+// (obj_vertices.cpp: the positions and normals, read before the faces, leave the space the index
 // array is then copied into).
 #pragma once
 

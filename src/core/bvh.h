@@ -2,14 +2,14 @@
 // glass pixel's ray against the scene's triangles in the fragment shader
 // (shaders/exact_trace.glsl). Neither Debian nor npm packages a BVH library that builds for wasm
 // (outside three.js), so this one is written here, and kept small:
-//  - buildBvh: a binned SAH build (16 bins per axis) over any boxes;
+//  - buildBvh: a binned SAH build (16 bins per axis) over any boxes (bvh_build.cpp);
 //  - MeshBvh: one per mesh, over its triangles in object space, built once when the mesh loads;
-//  - SceneBvh: the top level over the placed objects (their world boxes), rebuilt every frame, so
-//  an
-//    orbiting figure costs no rebuild of its mesh's tree;
+//  - SceneBvh: the top level over the placed objects (their world boxes), rebuilt every frame,
+//    so an orbiting figure costs no rebuild of its mesh's tree (both in bvh_build.cpp);
 //  - intersectScene: the CPU traversal (a stack, nearer child first), the same steps as the
-//  shader's;
-//  - BvhAtlas / packScene: the float textures the shader reads (WebGL2 has no storage buffers).
+//    shader's (bvh_traverse.cpp);
+//  - BvhAtlas (bvh_atlas.cpp) / packScene (bvh_pack.cpp): the float textures the shader reads
+//    (WebGL2 has no storage buffers).
 // No GL here: core/ is unit-tested, and the Embree reference checks the hits (tests/reference).
 #pragma once
 

@@ -1,6 +1,7 @@
 // Decides, each frame, the least capture work the scene needs: which probes to capture, which of
 // their faces, and which objects (at which level of detail) to draw into each face.
-// Plain C++ without GL, so every rule is unit-tested.
+// Plain C++ without GL, so every rule is unit-tested. The driver is frame_planner.cpp; its parts
+// are update_policy.cpp, probe_storage.cpp, method_choice.cpp and planner_draws.cpp.
 #pragma once
 
 #include <array>
@@ -224,6 +225,21 @@ class FramePlanner {
   };
   enum class Staleness { Fresh, BounceOnly, Changed };
 
+  ProbeMemory& memoryOf(int reflector);
+  // Trace the probe's reflectors or capture it (search: exact traces, planned weighs the two);
+  // a change of method forgets the probe's faces.
+  Method chooseProbeMethod(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                           const CaptureContext& context, const PlannerSettings& settings,
+                           const PlannerView& view, ProbeMemory& memory);
+  // Plans the faces a captured probe redraws this frame into probe.faces, and remembers what
+  // they show. True when one is redrawn for a real change (not only a bounce).
+  bool planCapture(ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                   const CaptureContext& context, const PlannerSettings& settings,
+                   ProbeMemory& memory) const;
+  FacePlan planFace(const ProbePlan& probe, int face, std::vector<DrawItem> draws,
+                    const std::vector<PlannedObject>& objects, const CaptureContext& context,
+                    const PlannerSettings& settings, FaceMemory& memory) const;
+  // The stale faces the policy redraws this frame (update_policy.cpp).
   std::vector<int> chooseFaces(const std::vector<int>& stale, const PlannerSettings& settings,
                                ProbeMemory& memory) const;
   Staleness faceStaleness(const ProbeMemory& probe, int face,

@@ -1,8 +1,7 @@
-// The one translation unit that compiles the header-only libraries' implementations.
-// Their warnings are theirs: this file is built without the project's warning flags.
-#define TINYOBJLOADER_IMPLEMENTATION
-#include <tiny_obj_loader.h>
-
+// The one translation unit that compiles the header-only libraries' implementations the
+// program uses. Their warnings are theirs: this file is built without the project's warning
+// flags. (tinyobjloader, the OBJ parser's test oracle, is compiled into the tests alone:
+// tests/unit/tinyobjloader_impl.cpp and docs/obj.md.)
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_NO_STDIO_IF_UNUSED
 #include <stb_image.h>

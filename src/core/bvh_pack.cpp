@@ -1,0 +1,127 @@
+// The per-frame part of the shader's textures (core/bvh.h): the top level over the placed
+// objects, their slots and what the shading needs of each, packed after the atlas.
+#include "core/bvh.h"
+
+#include <algorithm>
+
+#include "core/frustum.h"
+#include "core/normal_matrix.h"
+
+namespace reflect {
+namespace {
+
+void pushTexel(std::vector<float>& t, const glm::vec3& v, float w) {
+  t.insert(t.end(), {v.x, v.y, v.z, w});
+}
+
+// A child's two texels in its parent's node: (min, ref texel), (max, ref count).
+void pushChild(std::vector<float>& t, const Bounds& box, const PackedRef& ref) {
+  pushTexel(t, box.min, static_cast<float>(ref.texel));
+  pushTexel(t, box.max, static_cast<float>(ref.count));
+}
+
+// The top level in the atlas's layout: each interior node's texels written where it was placed,
+// every leaf a placed object's slot. A leaf of several objects (the build's depth limit) becomes
+// a small subtree of its own, so every leaf reference is one slot.
+struct TopPacker {
+  const SceneBvh& bvh;
+  const std::vector<Bounds>& worldBoxes;  // by object index
+  int firstNode = 0;                      // texel of the first interior node
+  int slots = 0;                          // texel of object 0's slot
+  std::vector<float> nodes;
+
+  Bounds boxOf(const uint32_t* items, size_t count) const {
+    Bounds b = worldBoxes[items[0]];
+    for (size_t k = 1; k < count; ++k) {
+      b.min = glm::min(b.min, worldBoxes[items[k]].min);
+      b.max = glm::max(b.max, worldBoxes[items[k]].max);
+    }
+    return b;
+  }
+  PackedRef place(const Bounds& leftBox, const PackedRef& left, const Bounds& rightBox,
+                  const PackedRef& right, size_t at) {
+    std::vector<float> node;
+    pushChild(node, leftBox, left);
+    pushChild(node, rightBox, right);
+    std::copy(node.begin(), node.end(), nodes.begin() + static_cast<std::ptrdiff_t>(at));
+    return {firstNode + static_cast<int>(at / 4), 0};
+  }
+  size_t reserve() {
+    nodes.resize(nodes.size() + kNodeTexels * 4, 0.0f);
+    return nodes.size() - kNodeTexels * 4;
+  }
+  PackedRef items(const uint32_t* first, size_t count) {
+    if (count == 1) return {slots + kSlotTexels * static_cast<int>(first[0]), kInstanceRef};
+    const size_t at = reserve();
+    const size_t half = count / 2;
+    const PackedRef left = items(first, half), right = items(first + half, count - half);
+    return place(boxOf(first, half), left, boxOf(first + half, count - half), right, at);
+  }
+  PackedRef node(uint32_t index) {
+    const BvhNode& n = bvh.top.nodes[index];
+    if (n.count > 0) return items(bvh.top.order.data() + n.first, n.count);
+    const size_t at = reserve();
+    const PackedRef left = node(n.first), right = node(n.first + 1);
+    const BvhNode& l = bvh.top.nodes[n.first];
+    const BvhNode& r = bvh.top.nodes[n.first + 1];
+    return place({l.min, l.max}, left, {r.min, r.max}, right, at);
+  }
+};
+
+}  // namespace
+
+PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector<PackedRef>& roots,
+                      const std::vector<glm::vec3>& probeCentres, int firstTexel) {
+  PackedScene packed;
+  const size_t count = scene.objects.size();
+  packed.instances = static_cast<int>(count);
+  packed.header = firstTexel;
+  std::vector<float>& s = packed.shading;
+  std::vector<Bounds> worldBoxes(count);
+  std::vector<float> slots;
+  for (size_t i = 0; i < count; ++i) {
+    const SceneObject& o = scene.objects[i];
+    const BvhInstance* instance = i < bvh.instances.size() ? &bvh.instances[i] : nullptr;
+    const glm::mat4 model = instance ? instance->model : glm::mat4(1.0f);
+    const glm::mat4 inverse = instance ? instance->inverse : glm::mat4(1.0f);
+    const glm::mat3 normal = normalMatrixOf(glm::mat3(model));
+    for (int column = 0; column < 3; ++column) pushTexel(s, normal[column], 0.0f);
+    pushTexel(s, o.colour, static_cast<float>(static_cast<int>(o.material)));
+    s.insert(s.end(), {o.reflection, o.base, std::max(o.ior, 1e-3f), o.fresnel ? 1.0f : 0.0f});
+    const glm::vec3 centre = i < probeCentres.size() ? probeCentres[i] : glm::vec3(0.0f);
+    pushTexel(s, centre, 0.0f);
+    float epsilon = 1e-7f;
+    if (instance && instance->mesh && !instance->mesh->tree.nodes.empty()) {
+      const BvhNode& r = instance->mesh->tree.nodes[0];
+      worldBoxes[i] = transformBounds({r.min, r.max}, model);
+      epsilon = std::max(1e-5f * glm::length(worldBoxes[i].max - worldBoxes[i].min), 1e-7f);
+    }
+    pushTexel(s, glm::vec3(epsilon, 0.0f, 0.0f), 0.0f);
+    for (int row = 0; row < 3; ++row) {
+      const glm::vec4 r(inverse[0][row], inverse[1][row], inverse[2][row], inverse[3][row]);
+      pushTexel(slots, glm::vec3(r), r.w);
+      pushTexel(s, glm::vec3(r), r.w);
+    }
+    const PackedRef root = i < roots.size() ? roots[i] : PackedRef{-1, 0};
+    slots.insert(slots.end(), {static_cast<float>(root.texel), static_cast<float>(root.count),
+                               static_cast<float>(i), 0.0f});
+  }
+  packed.empty = bvh.top.nodes.empty();
+  TopPacker top{bvh, worldBoxes, 0, 0, {}};
+  top.slots = firstTexel + kStepTexels;
+  top.firstNode = top.slots + kSlotTexels * static_cast<int>(count);
+  PackedRef root{-1, 0};
+  Bounds rootBox{glm::vec3(0.0f), glm::vec3(0.0f)};
+  if (!packed.empty) {
+    root = top.node(0);
+    rootBox = {bvh.top.nodes[0].min, bvh.top.nodes[0].max};
+  }
+  std::vector<float>& t = packed.traversal;
+  pushChild(t, rootBox, root);
+  t.resize(kStepTexels * 4, 0.0f);
+  t.insert(t.end(), slots.begin(), slots.end());
+  t.insert(t.end(), top.nodes.begin(), top.nodes.end());
+  return packed;
+}
+
+}  // namespace reflect

@@ -1,0 +1,91 @@
+// Search: planned, per reflector: what tracing its rays and capturing its probe would cost this
+// frame (core/method_cost.h weighs them), and the method each probe's reflectors get.
+#include <algorithm>
+
+#include "core/frame_planner.h"
+#include "core/planner_parts.h"
+
+namespace reflect {
+
+using planner::contains;
+using planner::worldCentreOf;
+using planner::worldRadiusOf;
+
+MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                                 const CaptureContext& context, const PlannerSettings& settings,
+                                 const PlannerView& view) const {
+  MethodChoice c;
+  c.reflector = probe.reflector;
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const PlannedObject& o = objects[i];
+    if (!o.levels.empty()) c.trace.triangles += static_cast<double>(o.levels[0].triangles);
+    if (contains(probe.members, static_cast<int>(i))) {
+      c.trace.pixels += screenPixels(worldCentreOf(o), worldRadiusOf(o), view);
+    } else {
+      c.trace.general |= o.look.material != Material::Phong;
+    }
+  }
+  // Captured: the faces that show something moving are redrawn (every face, every frame, under
+  // the course's policy), each with one pass, or three where two layers are stored; then every
+  // mirror pixel searches.
+  const bool everyFrame = settings.policy == UpdatePolicy::EveryFrame;
+  const double texels = static_cast<double>(context.faceSize) * context.faceSize;
+  for (int face = 0; face < 6; ++face) {
+    const std::vector<DrawItem> draws = drawsFor(objects, probe.members, probe.centre, face,
+                                                 context, everyFrame, settings.captureLod);
+    bool moving = everyFrame;
+    double triangles = 0.0;
+    for (const DrawItem& d : draws) {
+      moving |= movedNow_[static_cast<size_t>(d.object)];
+      triangles += static_cast<double>(d.triangles);
+    }
+    if (!moving) continue;
+    const bool hides = draws.size() >= 2 || (context.skyboxContent != 0 && !draws.empty());
+    // Two layers: the nearest surfaces and their backs at the capture's detail, what they hide
+    // at kSecondLayerDetail of it.
+    const double passes = probe.layers == 2 && hides ? 2.0 + kSecondLayerDetail : 1.0;
+    c.capture.faces += 1.0;
+    c.capture.triangles += triangles * passes;
+    c.capture.texels += texels * (probe.layers == 2 && hides ? 3.0 : 1.0);
+  }
+  double share = 1.0;  // of the redraws a frame, under the policies that spread them
+  if (settings.policy == UpdatePolicy::TimeSliced && c.capture.faces > 0.0) {
+    share = std::min(1.0, std::clamp(settings.facesPerFrame, 1, 6) / c.capture.faces);
+  } else if (settings.policy == UpdatePolicy::EveryNFrames) {
+    share = 1.0 / std::max(settings.everyN, 1);
+  }
+  c.capture.faces *= share;
+  c.capture.triangles *= share;
+  c.capture.texels *= share;
+  c.capture.pixels = probe.plainLookupSuffices ? 0.0 : c.trace.pixels;
+  c.traceMs = traceCost(c.trace, costs_);
+  c.captureMs = captureCost(c.capture, costs_);
+  return c;
+}
+
+Method FramePlanner::chooseProbeMethod(const ProbePlan& probe,
+                                       const std::vector<PlannedObject>& objects,
+                                       const CaptureContext& context,
+                                       const PlannerSettings& settings, const PlannerView& view,
+                                       ProbeMemory& memory) {
+  // Trace its rays, or capture it. A cube-textured member's look is its cube: captured.
+  const bool rays = std::all_of(probe.members.begin(), probe.members.end(), [&](int m) {
+    return planner::traceable(objects[static_cast<size_t>(m)]);
+  });
+  const Search search = context.accuracy.search;
+  Method method = Method::Capture;
+  if (rays && search == Search::Exact) method = Method::Trace;
+  if (rays && search == Search::Planned && view.pixelsPerTangent > 0.0f) {
+    MethodChoice choice = weigh(probe, objects, context, settings, view);
+    choice.method = chooseMethod(choice.traceMs, choice.captureMs, memory.method, costs_);
+    method = choice.method;
+    choices_.push_back(choice);
+  }
+  if (method != memory.method) {
+    for (FaceMemory& f : memory.faces) f.captured = false;  // a trace keeps no faces
+    memory.method = method;
+  }
+  return method;
+}
+
+}  // namespace reflect

@@ -1,0 +1,39 @@
+// What the frame planner's files (frame_planner.cpp, planner_draws.cpp, probe_storage.cpp,
+// method_choice.cpp, update_policy.cpp) share: small rules on planned objects. Internal to the
+// planner: callers include core/frame_planner.h.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/frame_planner.h"
+#include "core/probe_layout.h"
+
+namespace reflect::planner {
+
+bool contains(const std::vector<int>& list, int value);
+
+// The probes the objects ask for (grouped, placed), before any is planned.
+std::vector<ProbeLayout> probesOf(const std::vector<PlannedObject>& objects);
+
+// The world bounding sphere of an object's oriented box.
+glm::vec3 worldCentreOf(const PlannedObject& o);
+float worldRadiusOf(const PlannedObject& o);
+
+// A mirror or glass: its rays can be traced.
+bool traceable(const PlannedObject& o);
+
+// The coarsest level whose triangle count still covers the object's projected disc, seen from
+// `centre`, at `trianglesPerPixel`; pixelsPerTangent converts the tangent of an angle to pixels
+// (half the face for a 90-degree cube face). Distances and sizes from the bounding sphere of the
+// oriented box.
+int chooseLevel(const PlannedObject& o, const glm::vec3& centre, float pixelsPerTangent,
+                float trianglesPerPixel);
+
+// What a probe stores (layers) and whether its reflectors need a search at all, from which
+// objects each face can see.
+void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                   const CaptureContext& context);
+
+}  // namespace reflect::planner
