@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 source tools/setup.sh
 ensure_debian_packages "${WEB_PACKAGES[@]}"
-ensure_npm_packages  # meshoptimizer for the page (and Playwright, unused here)
+ensure_npm_packages  # lil-gui for the page (and Playwright, unused here)
 
 cmake --preset web >/dev/null
 cmake --build --preset web

@@ -33,7 +33,7 @@ ensure_npm_packages() {
 export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 
 WEB_PACKAGES=(emscripten node-acorn libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev cmake make)
-NATIVE_PACKAGES=(g++ cmake make pkg-config libglm-dev nlohmann-json3-dev libembree-dev libstb-dev libtinyobjloader-dev libgtest-dev libmeshoptimizer-dev
+NATIVE_PACKAGES=(g++ cmake make pkg-config libglm-dev nlohmann-json3-dev libembree-dev libstb-dev libtinyobjloader-dev libgtest-dev
                  libgles-dev libegl-dev libegl-mesa0 libgl1-mesa-dri clang lld libclang-rt-14-dev clang-format
                  libcli11-dev)
 BROWSER_PACKAGES=(chromium)

@@ -1,49 +1,13 @@
-// Chunks and levels of detail, built off the main thread. The wasm build has no meshoptimizer, and
-// chunking a 150k-triangle figure in wasm would hold the page for tens of milliseconds, so after
-// the first frame the page asks the C++ side what is left to build (bridge.levelJobs(): a mesh's
-// chunks, and its coarser levels while a LOD setting is on), and a Web Worker (lod_worker.js)
-// builds it with npm meshoptimizer's MeshoptSimplifier. The results come back to the main thread
-// one piece a task (level 0 in chunk order, then each coarser level, then "done"), so frames,
-// input, scene switches and dropped files go on in between.
+// Chunks and levels of detail, built off the main thread. Chunking a 150k-triangle figure and
+// simplifying it would hold the page for a long while, so after the first frame the page asks the
+// C++ side what is left to build (bridge.levelJobs(): a mesh's chunks, and its coarser levels
+// while a LOD setting is on), and a Web Worker (lod_worker.js) builds it with the same C++ as the
+// native build (core's buildLevels, compiled into the worker's own wasm module): the same chunk
+// order and the same levels. The results come back to the main thread one piece a task (level 0
+// in chunk order, then each coarser level, then "done"), so frames, input, scene switches and
+// dropped files go on in between.
 //
-// The rules are the native build's (src/core/mesh_lod.cpp, src/core/mesh_chunks.cpp): level k
-// from level k-1 with target = indexCount * triangleRatio (a multiple of 3), stop below
-// minTriangles or when the result is not below 3/4 of its input; chunks of at most chunkTriangles
-// (chunk_order.js).
-//
-// This module is loaded by the page and by the worker: it imports nothing of the page.
-import { chunkOrder } from './chunk_order.js';
-
-// Levels 1.. of one mesh, each in chunk order ({ indices, counts }), each simplified from the one
-// before it in chunk order, as natively (mesh_lod.cpp reorders a level before simplifying the
-// next): meshoptimizer's result depends on its input's order, so with any other order the page's
-// levels differ from native's (docs/heavy.md, round 2). Pure: no wasm of ours involved.
-function simplifyLevels(MeshoptSimplifier, positions, indices, settings, vertexFloats) {
-  const levels = [];
-  let previous = indices;
-  for (let level = 1; level < settings.maxLevels; ++level) {
-    if (previous.length / 3 < settings.minTriangles) break;
-    const f = Math.fround;  // float, as natively
-    const target = Math.floor(f(f(previous.length) * f(settings.triangleRatio)) / 3) * 3;
-    const [result] = MeshoptSimplifier.simplify(previous, positions, vertexFloats, target,
-                                                settings.targetError, ['Sparse']);
-    if (result.length === 0 || result.length > (previous.length * 3) / 4) break;
-    const chunked = chunkOrder(positions, vertexFloats, result, settings.chunkTriangles);
-    levels.push(chunked);
-    previous = chunked.indices;
-  }
-  return levels;
-}
-
-// What the worker does with one job (lod_worker.js calls it): { chunks: { indices, counts } or
-// null, levels: [{ indices, counts }] or null }. Level 1 comes from level 0 in chunk order.
-export function buildJob(MeshoptSimplifier, { positions, vertexFloats, indices, chunks, coarser, settings }) {
-  const base = chunks ? chunkOrder(positions, vertexFloats, indices, settings.chunkTriangles) : null;
-  const levels = coarser
-    ? simplifyLevels(MeshoptSimplifier, positions, base ? base.indices : indices, settings, vertexFloats)
-    : null;
-  return { chunks: base, levels };
-}
+// This module imports nothing: the page's session_levels.js uses it.
 
 const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
 
@@ -92,12 +56,11 @@ export class LevelBuilder {
     return this.running;
   }
 
-  async run(generation) {
+  // Starts a worker and posts it every job at once; it works through them while the page draws,
+  // and each answer comes back as a task of its own. Returns [{ job, triangles, answer }] (null
+  // for a mesh that has gone); without a worker each answer is an error and the meshes stay whole.
+  postJobs(jobs, settings) {
     const { bridge } = this;
-    const jobs = bridge.levelJobs();
-    if (!jobs.length) return {};
-    this.events.push({ event: 'start', at: performance.now(), jobs: jobs.length });
-    const settings = bridge.lodSettings();
     let worker = null;
     try {
       worker = new Worker(new URL('./lod_worker.js', import.meta.url), { type: 'module' });
@@ -105,8 +68,6 @@ export class LevelBuilder {
     } catch (e) {
       console.warn(`levels of detail: no worker (${e.message}); meshes stay whole`);
     }
-    // Every job goes to the worker at once; it works through them while the page draws, and each
-    // answer comes back as a task of its own.
     const answers = new Map();
     if (worker) {
       worker.onmessage = ({ data }) => answers.get(data.id)?.resolve(data);
@@ -125,6 +86,15 @@ export class LevelBuilder {
                          [base.positions.buffer, base.indices.buffer]);
       return { job, triangles, answer };
     });
+    return { worker, work };
+  }
+
+  async run(generation) {
+    const { bridge } = this;
+    const jobs = bridge.levelJobs();
+    if (!jobs.length) return {};
+    this.events.push({ event: 'start', at: performance.now(), jobs: jobs.length });
+    const { worker, work } = this.postJobs(jobs, bridge.lodSettings());
     // Each piece handed in is a short main-thread task; after a long one the page gets a turn.
     let since = performance.now();
     const handOff = async (call) => {
@@ -174,7 +144,7 @@ export class LevelBuilder {
         built[name] = levelTriangles;
       }
     }
-    worker?.terminate();  // its memory (meshoptimizer's heap included) goes with it
+    worker?.terminate();  // its memory (the worker module's wasm heap) goes with it
     if (this.worker === worker) this.worker = null;
     this.events.push({ event: 'done', at: performance.now() });
     const summary = Object.entries(built).map(([n, t]) => `${n} ${t.join(' > ')}`).join(', ');

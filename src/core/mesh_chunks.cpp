@@ -16,8 +16,9 @@ struct Splitter {
   void split(size_t begin, size_t end) {
     if (end - begin <= maxTriangles) {
       // A chunk keeps its triangles in the mesh's order: with the total order below, the whole
-      // reordering is canonical, the same as the page's worker makes it (web/lod.js), and so
-      // are the levels meshoptimizer simplifies from it (its result depends on the input order).
+      // reordering is canonical whatever the standard library (libstdc++ natively, libc++ in the
+      // page's worker), and so are the levels simplified from it (mesh_simplify's result
+      // depends on the input's order).
       std::sort(order.begin() + static_cast<std::ptrdiff_t>(begin),
                 order.begin() + static_cast<std::ptrdiff_t>(end));
       counts.push_back(static_cast<uint32_t>(end - begin));

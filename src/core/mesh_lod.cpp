@@ -4,10 +4,7 @@
 #include <limits>
 
 #include "core/mesh_chunks.h"
-
-#if defined(REFLECT_HAVE_MESHOPTIMIZER)
-#include <meshoptimizer.h>
-#endif
+#include "core/mesh_simplify.h"
 
 namespace reflect {
 
@@ -61,7 +58,6 @@ BuiltLevels buildLevels(const MeshData& base, bool chunkBase, bool coarser,
   }
   if (!coarser) return built;
   built.coarse = true;
-#if defined(REFLECT_HAVE_MESHOPTIMIZER)
   built.coarser.reserve(
       static_cast<size_t>(std::max(settings.maxLevels, 1)));  // `previous` stays valid
   for (int level = 1; level < settings.maxLevels; ++level) {
@@ -69,22 +65,13 @@ BuiltLevels buildLevels(const MeshData& base, bool chunkBase, bool coarser,
     const size_t target =
         static_cast<size_t>(static_cast<float>(previous->size()) * settings.triangleRatio) / 3 * 3;
     LevelIndices next;
-    next.indices.resize(previous->size());
-    const size_t count = meshopt_simplify(next.indices.data(), previous->data(), previous->size(),
-                                          &base.vertices[0].position.x, base.vertices.size(),
-                                          sizeof(Vertex), target, settings.targetError, 0, nullptr);
-    // Stop when the library could not reduce enough to be worth another draw path.
-    if (count == 0 || count > previous->size() * 3 / 4) break;
-    next.indices.resize(count);
-    next.indices.shrink_to_fit();
+    next.indices = simplifyMesh(base.vertices, *previous, target, settings.targetError);
+    // Stop when the simplifier could not reduce enough to be worth another draw path.
+    if (next.indices.empty() || next.indices.size() > previous->size() * 3 / 4) break;
     next.chunkTriangles = chunkOrder(base.vertices, next.indices);
     built.coarser.push_back(std::move(next));
     previous = &built.coarser.back().indices;
   }
-#else
-  (void)previous;
-  (void)settings;
-#endif
   return built;
 }
 

@@ -1,8 +1,8 @@
 // Levels of detail: level 0 is the mesh itself, each next level has about a quarter of the
 // triangles of the one before. A coarser level is kept as a list of triangles over level 0's
 // vertices (no vertex copy); only the GPU gets a compact copy (meshFromIndices).
-// Simplification is meshoptimizer's (natively from Debian's libmeshoptimizer; in the browser a
-// worker runs npm's build of the same library and hands the index lists back).
+// Simplification is the project's own (core/mesh_simplify.h); the page's worker runs this same
+// code compiled to wasm (src/platform/web/lod_worker_main.cpp), so both make the same levels.
 #pragma once
 
 #include <cstdint>
@@ -15,7 +15,7 @@ namespace reflect {
 struct LodSettings {
   int maxLevels = 3;            // including level 0
   float triangleRatio = 0.25f;  // target triangles of each level relative to the previous
-  float targetError = 0.02f;    // meshoptimizer's relative error bound (fraction of the extent)
+  float targetError = 0.02f;    // the simplifier's error bound (a fraction of the extent)
   size_t minTriangles = 256;    // meshes this small get no coarser level
 };
 
@@ -33,7 +33,7 @@ struct LevelIndices {
 };
 
 // What a build makes of a base mesh: its own triangles in chunk order (when asked), and its
-// coarser levels (when asked; none where the library is missing or the mesh is too small to gain).
+// coarser levels (when asked; none where the mesh is too small to gain).
 struct BuiltLevels {
   bool chunked = false;
   LevelIndices base;

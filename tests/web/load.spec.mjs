@@ -176,7 +176,7 @@ test('index.html preloads every module the page imports at start, and nothing el
   };
   visit('app.js');
   expect(graph.size).toBeGreaterThan(20);
-  expect(graph).toContain('chunk_order.js');  // four levels of imports below app.js
+  expect(graph).toContain('lod.js');  // three levels of imports below app.js
   const html = readFileSync(new URL('index.html', web), 'utf8');
   const preloaded = [...html.matchAll(/<link rel="modulepreload" href="([^"]+)">/g)].map((m) => m[1]);
   expect([...preloaded].sort()).toEqual([...graph].sort());
@@ -187,4 +187,9 @@ test('index.html preloads every module the page imports at start, and nothing el
   await openDemo(page, '?paused');
   expect(failed).toEqual([]);
   expect(errors).toEqual([]);
+  // The levels-of-detail worker is no import of the page's: its script and its own wasm module
+  // (built from src/platform/web/lod_worker_main.cpp) are in the site beside the page.
+  const served = await page.evaluate(() => Promise.all(
+    ['lod_worker.js', 'lod_module.js', 'lod_module.wasm'].map(async (f) => `${f} ${(await fetch(f)).status}`)));
+  expect(served).toEqual(['lod_worker.js 200', 'lod_module.js 200', 'lod_module.wasm 200']);
 });
