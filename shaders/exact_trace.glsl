@@ -1,11 +1,6 @@
-// The exact mode (SEARCH_EXACT: search exact, or planned where the planner traces): a mirror or glass pixel's ray is traced against the
-// scene's triangles instead of looked up in a cube map, and what it meets is shaded as a capture
-// would shade it: Phong lit as seen from the main camera's eye, a mirror reflecting again, glass
-// crossed through both surfaces, a cube-textured object traced from its probe centre, the sky
-// (or the clear colour) where nothing is met. src/reference/reference_renderer.h says what the
-// exact answer is; this follows it term by term, with one limit: glass met by a ray that has
-// already left a surface sees, for its Fresnel-reflected share, the sky along the reflected ray
-// (one ray a bounce: no tree of rays in a fragment shader).
+// The exact mode's walk (SEARCH_EXACT: search exact, or planned where the planner traces): the
+// nearest triangle a ray meets in the scene's two-level BVH. What the ray's pixel shows, shaded
+// from what it meets, is exact_shade.glsl's, which includes this.
 //
 // The scene is two levels of BVH (core/bvh.h) in float textures, kBvhTextureWidth texels a row:
 //  u_exactAtlas    every mesh's tree: interior nodes (kNodeTexels: each child's (min, ref) and
@@ -21,10 +16,9 @@
 // top level an object's slot (count -1). Rays go into each object's space unnormalised, so t is
 // the same parameter in both levels.
 #if SEARCH == SEARCH_EXACT
-// Tracing needs full precision whatever the shader's default (mediump would lose the triangles).
-precision highp float;
-precision highp int;
-// From the C++ that writes the atlas and holds the rays' limits (gfx/program_key.cpp).
+// From the C++ that writes the atlas and holds the rays' limits (gfx/program_key.cpp). The
+// program is built highp whatever the precision setting (ProgramKey::allowsMediump(): mediump
+// would lose the triangles).
 const int kExactWidthShift = EXACT_WIDTH_SHIFT;     // kBvhTextureWidthShift
 const int kExactInstance = EXACT_INSTANCE_TEXELS;   // kInstanceTexels
 const int kExactTriangle = EXACT_TRIANGLE_TEXELS;   // kTriangleTexels
@@ -37,17 +31,8 @@ const float kExactFar = 3.0e38;     // no hit
 uniform highp sampler2D u_exactAtlas;
 uniform highp sampler2D u_exactNormals;
 uniform highp sampler2D u_exactScene;
-uniform samplerCube u_exactSky;
-uniform int u_exactHasSky;    // 0: the clear colour where nothing is met
-uniform vec3 u_exactClear;
-uniform int u_exactSelf;      // the object being drawn
 uniform int u_exactHeader;    // the texel of the top level's header in u_exactAtlas
 uniform int u_exactEmpty;     // 1: nothing to trace
-uniform vec3 u_exactLight;
-uniform vec4 u_exactPhong;    // ambient, diffuse, specular, shininess
-uniform vec3 u_exactEye;      // the main camera's eye: captures are lit as seen from it
-uniform float u_exactFar;     // the capture's far distance: the world a reflector sees ends there
-uniform int u_exactMark;      // 1: alpha 0 on this pass's pixels (the error view's reflector mask)
 
 highp vec4 exactFetch(highp sampler2D s, int i) {
   return texelFetch(s, ivec2(i & ((1 << kExactWidthShift) - 1), i >> kExactWidthShift), 0);
@@ -177,255 +162,5 @@ ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only)
     }
   }
   return best;
-}
-
-// The world a reflector sees ends at its probe's far planes, as the main camera's ends at its
-// own: a surface farther than the capture's far distance along any axis from `centre` is not
-// there (reference_renderer.cpp's radiance()).
-bool exactBeyondFar(vec3 p, vec3 centre) {
-  vec3 away = abs(p - centre);
-  return max(away.x, max(away.y, away.z)) > u_exactFar;
-}
-
-vec3 exactBackground(vec3 d) {
-  if (u_exactHasSky == 1) return texture(u_exactSky, d).rgb;
-  return u_exactClear;
-}
-
-// shaders/phong.frag, lit from the main camera's eye.
-vec3 exactPhong(vec3 colour, vec3 p, vec3 n) {
-  vec3 L = normalize(u_exactLight - p);
-  vec3 V = normalize(u_exactEye - p);
-  float nDotL = max(dot(n, L), 0.0);
-  vec3 c = colour * (u_exactPhong.x + u_exactPhong.y * nDotL);
-  if (nDotL > 0.0) {
-    vec3 R = reflect(-L, n);
-    c += vec3(u_exactPhong.z * pow(clamp(dot(R, V), 0.0, 1.0), u_exactPhong.w));
-  }
-  return c;
-}
-
-float exactSchlick(float ior, vec3 toViewer, vec3 n) {
-  float f0 = ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
-  return f0 + (1.0 - f0) * pow(1.0 - clamp(dot(toViewer, n), 0.0, 1.0), 5.0);
-}
-
-// The world normal (interpolated, normalised) of a hit.
-vec3 exactNormal(ExactHit h) {
-  int base = h.instance * kExactInstance;
-  vec3 n0 = exactFetch(u_exactNormals, 3 * h.slot).xyz;
-  vec3 n1 = exactFetch(u_exactNormals, 3 * h.slot + 1).xyz;
-  vec3 n2 = exactFetch(u_exactNormals, 3 * h.slot + 2).xyz;
-  vec3 n = (1.0 - h.u - h.v) * n0 + h.u * n1 + h.v * n2;
-  mat3 normalMatrix = mat3(exactFetch(u_exactScene, base).xyz,
-                           exactFetch(u_exactScene, base + 1).xyz,
-                           exactFetch(u_exactScene, base + 2).xyz);
-  return normalize(normalMatrix * n);
-}
-
-#if EXACT_GENERAL == 0
-// What the ray origin + t dir sees when nothing it can meet is a mirror, glass or cube-textured
-// object (the program's variant: src/gfx/program_key.h): one trace, and the Phong surface it
-// meets or the sky. `truth`: the direction from the probe centre to what it meets, or its own
-// direction when it meets nothing.
-vec3 exactRadiance(vec3 origin, vec3 dir, int self, out vec3 truth) {
-  ExactHit h = exactTrace(origin, dir, 0.0, self, -1);
-  truth = dir;
-  vec3 p = origin + h.t * dir;
-  if (h.instance < 0 || exactBeyondFar(p, u_probeCentre)) return exactBackground(dir);
-  truth = normalize(p - u_probeCentre);
-  vec4 look = exactFetch(u_exactScene, h.instance * kExactInstance + 3);
-  return clamp(exactPhong(look.rgb, p, exactNormal(h)), 0.0, 1.0);
-}
-#else
-// What the ray origin + t dir (t > 0) sees, clamped as a capture texel is (the reference's
-// radiance): among the objects but `self`, or, with `inside`, first across glass object `self`
-// to where it leaves. `truth`: the direction from the probe centre to what the ray (once out of
-// the glass) meets, or its own direction when it meets nothing.
-vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth) {
-  // A bounce at a mirror or glass gives colour = add + weight * (what it sees), clamped; those
-  // are kept and unwound at the end.
-  vec3 adds[kExactMaxBounces];
-  float weights[kExactMaxBounces];
-  int links = 0;
-  int leaving = self;
-  int glass = inside ? self : -1;
-  int reflections = 0;
-  int depth = 1;
-  bool first = true;
-  truth = dir;
-  vec3 result = exactBackground(dir);
-  for (int step = 0; step < 64; ++step) {
-    float tMin = 0.0;
-    if (glass >= 0) tMin = exactFetch(u_exactScene, glass * kExactInstance + 6).x;
-    ExactHit h = exactTrace(origin, dir, tMin, glass >= 0 ? -1 : leaving, glass);
-    if (glass >= 0) {
-      // Inside glass: leave through the far surface, or reflect inside it.
-      int g = glass;
-      if (h.instance < 0) {  // no far surface (along a silhouette): on from here
-        leaving = g;
-        glass = -1;
-        continue;
-      }
-      vec3 N = exactNormal(h);
-      vec3 facing = dot(dir, N) > 0.0 ? -N : N;
-      float n = exactFetch(u_exactScene, g * kExactInstance + 4).z;
-      vec3 out_ = refract(dir, facing, n);
-      origin = origin + h.t * dir;
-      if (dot(out_, out_) > 0.0) {
-        dir = normalize(out_);
-        leaving = g;
-        glass = -1;
-      } else {
-        dir = reflect(dir, facing);
-        if (++reflections == kExactMaxInternal) {
-          leaving = g;
-          glass = -1;
-        }
-      }
-      continue;
-    }
-    vec3 p = origin + h.t * dir;
-    if (h.instance >= 0 && leaving >= 0 &&
-        exactBeyondFar(p, exactFetch(u_exactScene, leaving * kExactInstance + 5).xyz)) {
-      h.instance = -1;
-    }
-    if (first) {
-      first = false;
-      truth = h.instance >= 0 ? normalize(p - u_probeCentre) : dir;
-    }
-    if (h.instance < 0) {
-      result = exactBackground(dir);
-      break;
-    }
-    int base = h.instance * kExactInstance;
-    vec4 look = exactFetch(u_exactScene, base + 3);
-    int material = int(look.w + 0.5);
-    if (material != 0 && depth > kExactMaxBounces) {
-      result = exactBackground(dir);
-      break;
-    }
-    vec3 N = exactNormal(h);
-    if (material == 0) {
-      result = clamp(exactPhong(look.rgb, p, N), 0.0, 1.0);
-      break;
-    }
-    vec4 weightsOf = exactFetch(u_exactScene, base + 4);  // reflection, base, ior, fresnel
-    vec3 toViewer = normalize(-dir);
-    vec3 add = vec3(0.0);
-    float weight = 1.0;
-    vec3 nextOrigin = p;
-    vec3 nextDir;
-    bool enterGlass = false;
-    if (material == 1) {  // mirror
-      nextDir = reflect(-toViewer, N);
-      if (weightsOf.w > 0.5) {
-        float s = exactSchlick(weightsOf.z, toViewer, N);
-        add = (1.0 - s) * look.rgb;
-        weight = s;
-      } else {
-        add = weightsOf.y * look.rgb;
-        weight = weightsOf.x;
-      }
-    } else if (material == 2) {  // glass
-      vec3 R = reflect(-toViewer, N);
-      vec3 T = refract(-toViewer, N, 1.0 / weightsOf.z);
-      bool total = dot(T, T) == 0.0;
-      bool fresnel = weightsOf.w > 0.5;
-      if (total) {
-        nextDir = R;
-        add = fresnel ? vec3(0.0) : weightsOf.y * look.rgb;
-        weight = fresnel ? 1.0 : weightsOf.x;
-      } else {
-        nextDir = normalize(T);
-        enterGlass = true;
-        if (fresnel) {
-          float s = exactSchlick(weightsOf.z, toViewer, N);
-          add = s * clamp(exactBackground(R), 0.0, 1.0);
-          weight = 1.0 - s;
-        } else {
-          add = weightsOf.y * look.rgb;
-          weight = weightsOf.x;
-        }
-      }
-    } else {  // cube-textured: from its probe centre along its object-space position
-      vec4 m0 = exactFetch(u_exactScene, base + 7);
-      vec4 m1 = exactFetch(u_exactScene, base + 8);
-      vec4 m2 = exactFetch(u_exactScene, base + 9);
-      vec3 objectPosition = vec3(dot(m0, vec4(p, 1.0)), dot(m1, vec4(p, 1.0)), dot(m2, vec4(p, 1.0)));
-      if (dot(objectPosition, objectPosition) == 0.0) {
-        result = exactBackground(vec3(0.0, 0.0, 1.0));
-        break;
-      }
-      nextOrigin = exactFetch(u_exactScene, base + 5).xyz;
-      nextDir = normalize(objectPosition);
-    }
-    adds[links] = add;
-    weights[links] = weight;
-    ++links;
-    origin = nextOrigin;
-    dir = nextDir;
-    leaving = h.instance;
-    ++depth;
-    if (enterGlass) {
-      glass = h.instance;
-      reflections = 0;
-    }
-  }
-  for (int k = kExactMaxBounces - 1; k >= 0; --k) {
-    if (k < links) result = clamp(adds[k] + weights[k] * result, 0.0, 1.0);
-  }
-  return result;
-}
-#endif
-
-
-// environment.frag's main() with every environment traced: the reflected ray (a mirror; glass
-// with Fresnel or at total internal reflection), and glass's refracted ray from inside the object.
-void exactMain() {
-  vec3 N = normalize(v_worldNormal);
-  vec3 I = normalize(v_worldPosition - u_viewPosition);
-  float schlick = u_fresnelF0 + (1.0 - u_fresnelF0) * pow(1.0 - clamp(dot(-I, N), 0.0, 1.0), 5.0);
-  vec3 measured;
-  vec3 colour;
-#if REFRACTS == 0
-  // A mirror: the reflected ray alone.
-#if EXACT_GENERAL == 0
-  vec3 reflected = exactRadiance(v_worldPosition, reflect(I, N), u_exactSelf, measured);
-#else
-  vec3 reflected = exactRadiance(v_worldPosition, reflect(I, N), u_exactSelf, false, measured);
-#endif
-  colour = u_fresnel == 1 ? mix(u_colour, reflected, schlick)
-                          : u_reflectionWeight * reflected + u_baseWeight * u_colour;
-#else
-  // Glass: the refracted ray through the object, and the reflected one where Fresnel weighs it in
-  // or the refraction is total.
-  vec3 T = refract(I, N, u_eta);
-  bool total = dot(T, T) == 0.0;
-  vec3 reflected = vec3(0.0);
-  vec3 refracted = vec3(0.0);
-  measured = reflect(I, N);
-  for (int ray = 0; ray < 2; ++ray) {
-    bool wanted = ray == 0 ? (u_fresnel == 1 || total) : !total;
-    if (!wanted) continue;
-    vec3 truth;
-    vec3 c = exactRadiance(v_worldPosition, ray == 0 ? reflect(I, N) : normalize(T), u_exactSelf,
-                           ray == 1, truth);
-    if (ray == 0) {
-      reflected = c;
-    } else {
-      refracted = c;
-    }
-    measured = truth;
-  }
-  if (total) refracted = reflected;
-  colour = u_fresnel == 1 ? mix(refracted, reflected, total ? 1.0 : schlick)
-                          : u_reflectionWeight * refracted + u_baseWeight * u_colour;
-#endif
-  if (u_outputDirection == 1) colour = normalize(measured);
-  writeOutputs(colour, v_worldPosition, N, false);
-#if CAPTURE_OUTPUT == 0
-  if (u_exactMark == 1) fragColour.a = 0.0;
-#endif
 }
 #endif

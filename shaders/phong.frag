@@ -1,5 +1,4 @@
-// Per-fragment Phong with the course's constants (ambient and diffuse take the object colour,
-// white specular only where the light reaches the front of the surface).
+// Per-fragment Phong with the course's constants (shading.glsl's phongShade).
 in vec3 v_worldPosition;
 in vec3 v_worldNormal;
 
@@ -12,16 +11,11 @@ uniform float u_specular;
 uniform float u_shininess;
 
 #include "capture_output.glsl"
+#include "shading.glsl"
 
 void main() {
   vec3 N = normalize(v_worldNormal);
-  vec3 L = normalize(u_lightPosition - v_worldPosition);
-  vec3 V = normalize(u_viewPosition - v_worldPosition);
-  float nDotL = max(dot(N, L), 0.0);
-  vec3 colour = u_colour * (u_ambient + u_diffuse * nDotL);
-  if (nDotL > 0.0) {
-    vec3 R = reflect(-L, N);
-    colour += vec3(u_specular * pow(clamp(dot(R, V), 0.0, 1.0), u_shininess));
-  }
+  vec4 terms = vec4(u_ambient, u_diffuse, u_specular, u_shininess);
+  vec3 colour = phongShade(u_colour, v_worldPosition, N, u_lightPosition, u_viewPosition, terms);
   writeOutputs(colour, v_worldPosition, N, false);
 }

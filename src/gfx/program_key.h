@@ -38,6 +38,9 @@ struct ProgramKey {
   auto operator<=>(const ProgramKey&) const = default;
 
   const char* fragmentFile() const;
+  // Whether the fragment shader may run at mediump when the settings ask for it: not the exact
+  // tracer, which would lose the triangles (its precision is set here, not in its GLSL).
+  bool allowsMediump() const { return search != Search::Exact; }
   // "#define CAPTURE_OUTPUT 1\n#define SEARCH_PLAIN 0\n..." for the fragment shader, the search's
   // value named as in C++ (SEARCH == SEARCH_EXACT), never a bare number.
   std::string defines() const;

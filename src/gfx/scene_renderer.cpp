@@ -8,6 +8,7 @@
 
 #include "core/cube_faces.h"
 #include "core/depth_code.h"
+#include "core/fresnel.h"
 #include "core/frustum.h"
 #include "core/normal_matrix.h"
 #include "gfx/exact_tracer.h"
@@ -170,9 +171,8 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
       glUniform3fv(env.colour, 1, glm::value_ptr(object.colour));
       glUniform1f(env.reflectionWeight, object.reflection);
       glUniform1f(env.baseWeight, object.base);
-      const float n = std::max(object.ior, 1e-3f);
-      glUniform1f(env.eta, 1.0f / n);
-      glUniform1f(env.fresnelF0, ((n - 1.0f) / (n + 1.0f)) * ((n - 1.0f) / (n + 1.0f)));
+      glUniform1f(env.eta, 1.0f / clampedIor(object.ior));
+      glUniform1f(env.fresnelF0, fresnelF0(object.ior));
       glUniform1i(env.fresnel, object.fresnel ? 1 : 0);
       if (p.key.refracts) {
         // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in

@@ -32,7 +32,9 @@ void setFaceFrames(const ShaderProgram& p) {
 using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
-Result<SceneRenderer::Program> SceneRenderer::buildProgram(const ProgramKey& key, bool mediump) {
+Result<SceneRenderer::Program> SceneRenderer::buildProgram(const ProgramKey& key,
+                                                           bool mediumpAsked) {
+  const bool mediump = mediumpAsked && key.allowsMediump();
   const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
   Result<ShaderProgram> built =
       ShaderProgram::build("mesh.vert", key.fragmentFile(), mediump, precision + key.defines());

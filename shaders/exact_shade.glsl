@@ -1,0 +1,245 @@
+// The exact mode's shading (SEARCH_EXACT): a mirror or glass pixel's ray is traced against the
+// scene's triangles (exact_trace.glsl) instead of looked up in a cube map, and what it meets is
+// shaded as a capture would shade it: Phong lit as seen from the main camera's eye, a mirror
+// reflecting again, glass crossed through both surfaces, a cube-textured object traced from its
+// probe centre, the sky (or the clear colour) where nothing is met, every term from shading.glsl.
+// src/reference/reference_renderer.h says what the exact answer is; this follows it term by
+// term, with one limit: glass met by a ray that has already left a surface sees, for its
+// Fresnel-reflected share, the sky along the reflected ray (one ray a bounce: no tree of rays in
+// a fragment shader). Like environment_lookup.glsl it defines seenReflected() and
+// seenThroughGlass() for environment.frag's main().
+#if SEARCH == SEARCH_EXACT
+#include "exact_trace.glsl"
+#include "shading.glsl"
+
+uniform samplerCube u_exactSky;
+uniform int u_exactHasSky;    // 0: the clear colour where nothing is met
+uniform vec3 u_exactClear;
+uniform int u_exactSelf;      // the object being drawn
+uniform vec3 u_exactLight;
+uniform vec4 u_exactPhong;    // ambient, diffuse, specular, shininess
+uniform vec3 u_exactEye;      // the main camera's eye: captures are lit as seen from it
+uniform float u_exactFar;     // the capture's far distance: the world a reflector sees ends there
+uniform int u_exactMark;      // 1: alpha 0 on this pass's pixels (the error view's reflector mask)
+
+// The world a reflector sees ends at its probe's far planes, as the main camera's ends at its
+// own: a surface farther than the capture's far distance along any axis from `centre` is not
+// there (reference_renderer.cpp's radiance()).
+bool exactBeyondFar(vec3 p, vec3 centre) {
+  vec3 away = abs(p - centre);
+  return max(away.x, max(away.y, away.z)) > u_exactFar;
+}
+
+vec3 exactBackground(vec3 d) {
+  if (u_exactHasSky == 1) return texture(u_exactSky, d).rgb;
+  return u_exactClear;
+}
+
+// What a Phong surface shows a traced ray: shading.glsl's Phong, lit as the captures are, as seen
+// from the main camera's eye.
+vec3 exactPhong(vec3 colour, vec3 p, vec3 n) {
+  return phongShade(colour, p, n, u_exactLight, u_exactEye, u_exactPhong);
+}
+
+// The world normal (interpolated, normalised) of a hit.
+vec3 exactNormal(ExactHit h) {
+  int base = h.instance * kExactInstance;
+  vec3 n0 = exactFetch(u_exactNormals, 3 * h.slot).xyz;
+  vec3 n1 = exactFetch(u_exactNormals, 3 * h.slot + 1).xyz;
+  vec3 n2 = exactFetch(u_exactNormals, 3 * h.slot + 2).xyz;
+  vec3 n = (1.0 - h.u - h.v) * n0 + h.u * n1 + h.v * n2;
+  mat3 normalMatrix = mat3(exactFetch(u_exactScene, base).xyz,
+                           exactFetch(u_exactScene, base + 1).xyz,
+                           exactFetch(u_exactScene, base + 2).xyz);
+  return normalize(normalMatrix * n);
+}
+
+#if EXACT_GENERAL == 0
+// What the ray origin + t dir sees when nothing it can meet is a mirror, glass or cube-textured
+// object (the program's variant: src/gfx/program_key.h): one trace, and the Phong surface it
+// meets or the sky. `truth`: the direction from the probe centre to what it meets, or its own
+// direction when it meets nothing.
+vec3 exactRadiance(vec3 origin, vec3 dir, int self, out vec3 truth) {
+  ExactHit h = exactTrace(origin, dir, 0.0, self, -1);
+  truth = dir;
+  vec3 p = origin + h.t * dir;
+  if (h.instance < 0 || exactBeyondFar(p, u_probeCentre)) return exactBackground(dir);
+  truth = normalize(p - u_probeCentre);
+  vec4 look = exactFetch(u_exactScene, h.instance * kExactInstance + 3);
+  return clamp(exactPhong(look.rgb, p, exactNormal(h)), 0.0, 1.0);
+}
+#else
+// A ray on its way through the scene: where it is, where it goes, the object it leaves (its rays
+// never meet it again), and the glass object it is inside (-1: none) with the internal
+// reflections it has made there.
+struct ExactRay {
+  vec3 origin;
+  vec3 dir;
+  int leaving;
+  int glass;
+  int reflections;
+};
+
+// Inside glass: the ray leaves through the far surface `h` (refracted out), or reflects inside
+// it, kExactMaxInternal times at most; with no far surface (along a silhouette) it goes on.
+void exactInsideGlass(inout ExactRay ray, ExactHit h) {
+  int g = ray.glass;
+  if (h.instance < 0) {
+    ray.leaving = g;
+    ray.glass = -1;
+    return;
+  }
+  vec3 N = exactNormal(h);
+  vec3 facing = dot(ray.dir, N) > 0.0 ? -N : N;
+  float n = exactFetch(u_exactScene, g * kExactInstance + 4).z;
+  vec3 out_ = refract(ray.dir, facing, n);
+  ray.origin = ray.origin + h.t * ray.dir;
+  if (dot(out_, out_) > 0.0) {
+    ray.dir = normalize(out_);
+    ray.leaving = g;
+    ray.glass = -1;
+  } else {
+    ray.dir = reflect(ray.dir, facing);
+    if (++ray.reflections == kExactMaxInternal) {
+      ray.leaving = g;
+      ray.glass = -1;
+    }
+  }
+}
+
+// A mirror (material 1) or glass (2) at p, normal N, met by `ray`: its blend (shading.glsl) and
+// the ray it sends on (into the glass where it refracts).
+Blend exactReflectorBounce(int material, vec3 colour, vec4 weightsOf, vec3 p, vec3 N,
+                           inout ExactRay ray) {
+  vec3 toViewer = normalize(-ray.dir);
+  bool fresnel = weightsOf.w > 0.5;  // weightsOf: reflection, base, ior, fresnel
+  float schlick = schlickWeight(fresnelF0(weightsOf.z), toViewer, N);
+  vec3 R = reflect(-toViewer, N);
+  ray.origin = p;
+  ray.dir = R;
+  if (material == 1) return mirrorBlend(colour, weightsOf.x, weightsOf.y, fresnel, schlick);
+  vec3 T = refract(-toViewer, N, 1.0 / weightsOf.z);
+  bool total = dot(T, T) == 0.0;
+  // Glass's Fresnel-reflected share sees the sky along R: one ray a bounce.
+  vec3 reflected = fresnel && !total ? clamp(exactBackground(R), 0.0, 1.0) : vec3(0.0);
+  if (!total) {
+    ray.dir = normalize(T);
+    ray.glass = ray.leaving;
+    ray.reflections = 0;
+  }
+  return glassBlend(colour, reflected, total, weightsOf.x, weightsOf.y, fresnel, schlick);
+}
+
+// The cube-textured object at p (slot `base`): the ray from its probe centre along its
+// object-space position. False where that position is its origin (no direction).
+bool exactCubeBounce(int base, vec3 p, inout ExactRay ray) {
+  vec4 m0 = exactFetch(u_exactScene, base + 7);
+  vec4 m1 = exactFetch(u_exactScene, base + 8);
+  vec4 m2 = exactFetch(u_exactScene, base + 9);
+  vec3 objectPosition = vec3(dot(m0, vec4(p, 1.0)), dot(m1, vec4(p, 1.0)), dot(m2, vec4(p, 1.0)));
+  if (dot(objectPosition, objectPosition) == 0.0) return false;
+  ray.origin = exactFetch(u_exactScene, base + 5).xyz;
+  ray.dir = normalize(objectPosition);
+  return true;
+}
+
+// What the ray origin + t dir (t > 0) sees, clamped as a capture texel is (the reference's
+// radiance): among the objects but `self`, or, with `inside`, first across glass object `self`
+// to where it leaves. `truth`: the direction from the probe centre to what the ray (once out of
+// the glass) meets, or its own direction when it meets nothing.
+vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth) {
+  // Each bounce at a mirror, glass or cube-textured object gives colour = its blend of what it
+  // sees, clamped; the blends are kept and unwound at the end.
+  Blend blends[kExactMaxBounces];
+  int links = 0;
+  ExactRay ray = ExactRay(origin, dir, self, inside ? self : -1, 0);
+  int depth = 1;
+  bool first = true;
+  truth = dir;
+  vec3 result = exactBackground(dir);
+  for (int step = 0; step < 64; ++step) {
+    bool inGlass = ray.glass >= 0;
+    float tMin = inGlass ? exactFetch(u_exactScene, ray.glass * kExactInstance + 6).x : 0.0;
+    ExactHit h = exactTrace(ray.origin, ray.dir, tMin, inGlass ? -1 : ray.leaving, ray.glass);
+    if (inGlass) {
+      exactInsideGlass(ray, h);
+      continue;
+    }
+    vec3 p = ray.origin + h.t * ray.dir;
+    if (h.instance >= 0 && ray.leaving >= 0 &&
+        exactBeyondFar(p, exactFetch(u_exactScene, ray.leaving * kExactInstance + 5).xyz)) {
+      h.instance = -1;
+    }
+    if (first) {
+      first = false;
+      truth = h.instance >= 0 ? normalize(p - u_probeCentre) : ray.dir;
+    }
+    int base = max(h.instance, 0) * kExactInstance;
+    vec4 look = exactFetch(u_exactScene, base + 3);
+    int material = int(look.w + 0.5);
+    if (h.instance < 0 || (material != 0 && depth > kExactMaxBounces)) {
+      result = exactBackground(ray.dir);
+      break;
+    }
+    if (material == 0) {
+      result = clamp(exactPhong(look.rgb, p, exactNormal(h)), 0.0, 1.0);
+      break;
+    }
+    ray.leaving = h.instance;
+    Blend blend = Blend(vec3(0.0), 1.0);  // cube-textured: what its own ray sees, as it is
+    if (material != 1 && material != 2) {
+      if (!exactCubeBounce(base, p, ray)) {
+        result = exactBackground(vec3(0.0, 0.0, 1.0));
+        break;
+      }
+    } else {
+      blend = exactReflectorBounce(material, look.rgb, exactFetch(u_exactScene, base + 4), p,
+                                   exactNormal(h), ray);
+    }
+    blends[links] = blend;
+    ++links;
+    ++depth;
+  }
+  for (int k = kExactMaxBounces - 1; k >= 0; --k) {
+    if (k < links) result = clamp(blended(blends[k], result), 0.0, 1.0);
+  }
+  return result;
+}
+#endif
+
+// The mirror's reflected ray from `origin` along `R`, traced: what it sees, and in `measured`
+// the direction from the probe centre to what it meets.
+vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
+#if EXACT_GENERAL == 0
+  return exactRadiance(origin, R, u_exactSelf, measured);
+#else
+  return exactRadiance(origin, R, u_exactSelf, false, measured);
+#endif
+}
+
+#if EXACT_GENERAL == 1
+// Glass, traced (environment_lookup.glsl's seenThroughGlass() with rays for lookups): the
+// refracted ray through the object, and the reflected one only where Fresnel weighs it in or the
+// refraction is total (each traced ray costs a walk). `measured`: the last traced ray's truth.
+void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 reflected,
+                      out vec3 refracted, out vec3 measured) {
+  reflected = vec3(0.0);
+  refracted = vec3(0.0);
+  measured = reflect(I, N);
+  for (int ray = 0; ray < 2; ++ray) {
+    bool wanted = ray == 0 ? (u_fresnel == 1 || total) : !total;
+    if (!wanted) continue;
+    vec3 truth;
+    vec3 c = exactRadiance(origin, ray == 0 ? reflect(I, N) : normalize(T), u_exactSelf, ray == 1,
+                           truth);
+    if (ray == 0) {
+      reflected = c;
+    } else {
+      refracted = c;
+    }
+    measured = truth;
+  }
+  if (total) refracted = reflected;
+}
+#endif
+#endif

@@ -1,0 +1,146 @@
+#include "reference/reference_tracer.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/cube_sampling.h"
+#include "core/trace_limits.h"
+#include "reference/reference_shading.h"
+
+namespace reflect {
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+glm::vec3 saturate(const glm::vec3& c) {
+  return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
+}
+
+}  // namespace
+
+Crossing crossGlass(RTCScene only, const std::vector<WorldMesh>& meshes, int object, float n,
+                    const glm::vec3& entry, const glm::vec3& inside) {
+  const float epsilon = meshes[static_cast<size_t>(object)].selfEpsilon;
+  Crossing c;
+  c.point = entry;
+  c.direction = inside;
+  for (;;) {
+    const Hit far = trace(only, meshes, c.point, c.direction, epsilon, kInfinity);
+    if (far.object < 0) return c;  // no far surface (a ray along a silhouette): on from here
+    const glm::vec3 facing = glm::dot(c.direction, far.normal) > 0.0f ? -far.normal : far.normal;
+    const glm::vec3 out = glm::refract(c.direction, facing, n);
+    c.point = far.position;
+    if (glm::dot(out, out) > 0.0f) {
+      c.direction = glm::normalize(out);
+      c.exited = true;
+      return c;
+    }
+    c.direction = glm::reflect(c.direction, facing);
+    if (++c.internalReflections == kMaxInternalReflections) return c;
+  }
+}
+
+glm::vec3 Tracer::background(const glm::vec3& dir) const {
+  return skybox ? glm::vec3(sampleCubeLinear(*skybox, dir)) : scene.clearColour;
+}
+
+glm::vec3 Tracer::radiance(int leaving, const glm::vec3& origin, const glm::vec3& dir, int depth,
+                           Hit* met) const {
+  Hit hit = trace(world.excluding(leaving), meshes, origin, dir, 0.0f, kInfinity);
+  const glm::vec3 away = glm::abs(hit.position - centres[static_cast<size_t>(leaving)]);
+  if (hit.object >= 0 && std::max({away.x, away.y, away.z}) > scene.capture.far) hit = Hit{};
+  if (met) *met = hit;
+  if (hit.object < 0) return background(dir);
+  if (scene.objects[static_cast<size_t>(hit.object)].material != Material::Phong &&
+      depth > kMaxBounces) {
+    return background(dir);
+  }
+  return saturate(shade(hit, glm::normalize(-dir), depth, nullptr));
+}
+
+glm::vec3 Tracer::shade(const Hit& hit, const glm::vec3& toViewer, int depth,
+                        Directions* dirs) const {
+  const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
+  const PhongLight& light = scene.light;
+  switch (object.material) {
+    case Material::Phong:  // shaders/phong.frag, unclamped
+      return phongShade(object.colour, hit.position, hit.normal, light.position, eye,
+                        glm::vec4(light.ambient, light.diffuse, light.specular, light.shininess));
+    case Material::Mirror:
+      return mirror(hit, toViewer, depth, dirs);
+    case Material::Glass:
+      return glass(hit, toViewer, depth, dirs);
+    case Material::CubeTextured:
+      return cubeTextured(hit, depth, dirs);
+  }
+  return scene.clearColour;
+}
+
+// The direction from object's probe centre to what a ray met (its own direction on a miss).
+glm::vec3 Tracer::trueDirection(int object, const Hit& met, const glm::vec3& dir) const {
+  return met.object >= 0 ? glm::normalize(met.position - centres[static_cast<size_t>(object)])
+                         : glm::normalize(dir);
+}
+
+// shaders/environment.frag (mirror) with the exact environment.
+glm::vec3 Tracer::mirror(const Hit& hit, const glm::vec3& toViewer, int depth,
+                         Directions* dirs) const {
+  const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
+  const float schlick = schlickWeight(fresnelF0(object.ior), toViewer, hit.normal);
+  const glm::vec3 r = glm::reflect(-toViewer, hit.normal);
+  Hit met;
+  const glm::vec3 env = radiance(hit.object, hit.position, r, depth + 1, &met);
+  if (dirs) *dirs = {r, trueDirection(hit.object, met, r)};
+  return blended(
+      mirrorBlend(object.colour, object.reflection, object.base, object.fresnel, schlick), env);
+}
+
+// shaders/environment.frag (glass), with the refracted ray followed through the object.
+glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, int depth,
+                        Directions* dirs) const {
+  const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
+  const float n = clampedIor(object.ior);
+  const float schlick = schlickWeight(fresnelF0(object.ior), toViewer, hit.normal);
+  const glm::vec3 i = -toViewer;
+  const glm::vec3 t = glm::refract(i, hit.normal, 1.0f / n);
+  const bool total = glm::dot(t, t) == 0.0f;
+  const auto reflectedRay = [&](Hit* met) {
+    return radiance(hit.object, hit.position, glm::reflect(i, hit.normal), depth + 1, met);
+  };
+  glm::vec3 reflected(0.0f);
+  glm::vec3 refracted(0.0f);
+  if (total) {
+    Hit met;
+    reflected = reflectedRay(&met);
+    refracted = reflected;
+    const glm::vec3 r = glm::reflect(i, hit.normal);
+    if (dirs) *dirs = {r, trueDirection(hit.object, met, r)};
+  } else {
+    const Crossing c =
+        crossGlass(world.only(hit.object), meshes, hit.object, n, hit.position, glm::normalize(t));
+    Hit met;
+    refracted = radiance(hit.object, c.point, c.direction, depth + 1, &met);
+    if (dirs) *dirs = {glm::normalize(t), trueDirection(hit.object, met, c.direction)};
+    if (object.fresnel) reflected = reflectedRay(nullptr);
+  }
+  return blended(glassBlend(object.colour, reflected, total, object.reflection, object.base,
+                            object.fresnel, schlick),
+                 refracted);
+}
+
+// shaders/cube_textured.frag: the ray from the probe centre along the object-space position.
+glm::vec3 Tracer::cubeTextured(const Hit& hit, int depth, Directions* dirs) const {
+  const glm::vec3 c = centres[static_cast<size_t>(hit.object)];
+  if (glm::dot(hit.objectPosition, hit.objectPosition) == 0.0f) {
+    // The object's origin itself: a zero lookup vector, undefined in GL.
+    if (dirs) *dirs = {glm::vec3(0, 0, 1), glm::vec3(0, 0, 1)};
+    return background(glm::vec3(0.0f));
+  }
+  const glm::vec3 d = glm::normalize(hit.objectPosition);
+  Hit met;
+  const glm::vec3 colour = radiance(hit.object, c, d, depth + 1, &met);
+  if (dirs) *dirs = {d, trueDirection(hit.object, met, d)};
+  return colour;
+}
+
+}  // namespace reflect

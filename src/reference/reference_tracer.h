@@ -1,0 +1,67 @@
+// How the reference follows a ray through the scene and shades what it meets (the rules are in
+// reference_renderer.h), on the Embree scene of embree_scene.h, with the shading terms of
+// reference_shading.h (shaders/shading.glsl's).
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/scene.h"
+#include "core/skybox_faces.h"
+#include "reference/embree_scene.h"
+
+namespace reflect {
+
+// How a ray refracted into a glass object crosses it: where it leaves and along what.
+struct Crossing {
+  glm::vec3 point{0.0f};      // the last surface point
+  glm::vec3 direction{0.0f};  // the ray that goes on from it
+  int internalReflections = 0;
+  bool exited = false;  // refracted out (false: still inside after the limit, or no far surface)
+};
+
+// From `entry` (on glass object `object`, of index n) along the refracted direction `inside`:
+// the far surface, refract(D, N_in, n) out of it, or on total internal reflection reflect(D, N_in)
+// and on, kMaxInternalReflections times at most. N_in is the surface's interpolated normal
+// turned to face the ray (the inward normal at an exit).
+Crossing crossGlass(RTCScene only, const std::vector<WorldMesh>& meshes, int object, float n,
+                    const glm::vec3& entry, const glm::vec3& inside);
+
+// A reflector pixel's plain lookup direction and the true one (see ReferenceFrame).
+struct Directions {
+  glm::vec3 lookup{0.0f};
+  glm::vec3 truth{0.0f};
+};
+
+struct Tracer {
+  const Scene& scene;
+  const std::vector<WorldMesh>& meshes;
+  const EmbreeWorld& world;
+  const CubeFaces* skybox;
+  const std::vector<glm::vec3>& centres;  // per object: probe centre (bounds centre if none)
+  glm::vec3 eye;
+
+  // What a ray sees where it meets nothing: the sky along it, or the clear colour.
+  glm::vec3 background(const glm::vec3& dir) const;
+
+  // What the ray origin + t dir (t > 0) sees among the objects other than `leaving`, clamped as
+  // a capture texel is. `depth` counts the reflective surfaces the ray has left. The world a
+  // reflector sees ends at its probe's far planes, as the main camera's ends at its own: a
+  // surface farther than the capture's far distance along any axis from the probe centre is
+  // not there (the floor's far reaches at a grazing reflection show the background).
+  glm::vec3 radiance(int leaving, const glm::vec3& origin, const glm::vec3& dir, int depth,
+                     Hit* met) const;
+
+  // The colour of surface `hit` seen along -toViewer (unit), unclamped; `dirs` (reflectors
+  // only, may be null) gets its lookup and true directions.
+  glm::vec3 shade(const Hit& hit, const glm::vec3& toViewer, int depth, Directions* dirs) const;
+
+ private:
+  glm::vec3 trueDirection(int object, const Hit& met, const glm::vec3& dir) const;
+  glm::vec3 mirror(const Hit& hit, const glm::vec3& toViewer, int depth, Directions* dirs) const;
+  glm::vec3 glass(const Hit& hit, const glm::vec3& toViewer, int depth, Directions* dirs) const;
+  glm::vec3 cubeTextured(const Hit& hit, int depth, Directions* dirs) const;
+};
+
+}  // namespace reflect
