@@ -1,26 +1,22 @@
-// The demo's state, independent of platform: the scene, its meshes (kept on the CPU so a lost GL
-// context can be rebuilt), the camera, the clock, the frame planner, the renderer and the last
-// frame's stats.
+// The demo's state, independent of platform, and the one object the platform layers, the
+// benchmarks and the tests hold: the scene, the camera, the clock and the settings, over three
+// parts with a job each: the meshes (MeshLibrary: loading, levels of detail, the page's worker
+// hand-off, revisions), the GL resources (DemoGraphics: the renderers and their lifetime, the
+// error view's pass) and the frame (demo_frame.cpp: plan, capture, main pass, stats).
 //
-// First frame first: a loaded mesh is drawn as it was parsed. Its chunks (the capture's culling
-// units) and, when a LOD setting is on, its coarser levels are built afterwards: natively on a
-// background thread started after the first frame and taken in at the start of a later frame
-// (waitForLevels() waits for them, for tests and benchmarks); in the page by a Web Worker, which
-// hands them in through setMeshChunks / addLodLevel / finishLevels (LevelBuilds::External).
-// Coarser levels are kept as index lists over level 0's vertices, and built only while a LOD
-// setting is on.
+// First frame first: a loaded mesh is drawn as it was parsed, and its chunks and coarser levels
+// are built after the first frame (see mesh_library.h).
 #pragma once
 
-#include <future>
-#include <map>
-#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "app/demo_graphics.h"
 #include "app/frame_stats.h"
 #include "app/inside_views.h"
+#include "app/mesh_library.h"
 #include "core/accuracy_settings.h"
 #include "core/animation_clock.h"
 #include "core/bvh.h"
@@ -28,13 +24,9 @@
 #include "core/frame_planner.h"
 #include "core/frustum.h"
 #include "core/mesh_data.h"
-#include "core/mesh_lod.h"
 #include "core/obj_loader.h"
 #include "core/scene.h"
 #include "core/skybox_faces.h"
-#include "gfx/error_view.h"
-#include "gfx/exact_tracer.h"
-#include "gfx/gpu_timer.h"
 #include "gfx/scene_renderer.h"
 
 namespace reflect {
@@ -62,7 +54,7 @@ class Demo {
   std::string loadMeshesFrom(const std::string& directory);
   // The warnings of the last loadMesh, loadMeshText or loadMeshesFrom (each names its file; empty
   // when the files were clean or the load failed), for the caller to show.
-  const std::vector<std::string>& lastWarnings() const { return lastWarnings_; }
+  const std::vector<std::string>& lastWarnings() const { return meshes_.lastWarnings(); }
   bool hasAllMeshes() const;
   // Mesh `name` as loaded (level 0; its triangles in chunk order once chunks are built), or null.
   // Coarser levels are index lists: levelTriangles() gives their sizes.
@@ -71,47 +63,46 @@ class Demo {
   std::vector<size_t> levelTriangles(const std::string& name) const;
   // Each level of mesh `name`, level 0 first: its triangles, chunks and the vertices its GPU copy
   // holds (level 0: all of the mesh's; a coarser level: the ones it uses).
-  struct LevelInfo {
-    size_t triangles = 0;
-    size_t chunks = 0;
-    size_t vertices = 0;
-  };
-  std::vector<LevelInfo> levelInfo(const std::string& name) const;
+  using LevelInfo = MeshLibrary::LevelInfo;
+  std::vector<LevelInfo> levelInfo(const std::string& name) const {
+    return meshes_.levelInfo(name);
+  }
 
   // Who builds chunks and levels of detail: a thread of this demo (native), or the caller (the
   // page's worker, through levelJobs and the three calls after it).
-  enum class LevelBuilds { Background, External };
-  void setLevelBuilds(LevelBuilds builds) { levelBuilds_ = builds; }
+  using LevelBuilds = MeshLibrary::LevelBuilds;
+  void setLevelBuilds(LevelBuilds builds) { meshes_.setLevelBuilds(builds); }
   // Nothing left to build: every mesh chunked and, while a LOD setting is on, its levels built.
-  bool lodReady() const;
+  bool lodReady() const { return meshes_.lodReady(); }
   // Background: starts what is left and waits for it (it is taken in before this returns).
-  void waitForLevels();
+  void waitForLevels() { meshes_.waitForLevels(); }
   // What is left to build, for an external builder: each mesh (with its revision, which the
   // answers must carry) and whether its chunks, its coarser levels or both are wanted.
-  struct LevelJob {
-    std::string name;
-    uint32_t revision = 0;
-    bool chunks = false;
-    bool coarser = false;
-  };
-  std::vector<LevelJob> levelJobs() const;
+  using LevelJob = MeshLibrary::LevelJob;
+  std::vector<LevelJob> levelJobs() const { return meshes_.levelJobs(); }
   // Mesh `name`'s triangles in chunk order (a reordering of its indices) and the chunks' triangle
   // counts. Returns "" or why not (a stale revision, counts that do not add up, bad indices).
   // The indices are copied over the mesh's own (as many): no second array of them is allocated.
   std::string setMeshChunks(const std::string& name, uint32_t revision,
                             std::span<const uint32_t> indices,
-                            const std::vector<uint32_t>& chunkTriangles);
+                            const std::vector<uint32_t>& chunkTriangles) {
+    return meshes_.setMeshChunks(name, revision, indices, chunkTriangles);
+  }
   // The next coarser level of mesh `name`: indices into its level-0 vertices, in chunk order.
   std::string addLodLevel(const std::string& name, uint32_t revision, std::vector<uint32_t> indices,
-                          const std::vector<uint32_t>& chunkTriangles);
+                          const std::vector<uint32_t>& chunkTriangles) {
+    return meshes_.addLodLevel(name, revision, std::move(indices), chunkTriangles);
+  }
   // Every coarser level of mesh `name` has been given (there may be none).
-  std::string finishLevels(const std::string& name, uint32_t revision);
+  std::string finishLevels(const std::string& name, uint32_t revision) {
+    return meshes_.finishLevels(name, revision);
+  }
 
   // Bytes of the meshes as the GPU holds them (every level's vertices and indices as uploaded),
   // and as this demo keeps them on the CPU (level 0's arrays, the coarser levels' index lists and
   // every chunk table, by capacity).
-  size_t meshGpuBytes() const;
-  size_t meshCpuBytes() const;
+  size_t meshGpuBytes() const { return meshes_.gpuBytes(); }
+  size_t meshCpuBytes() const { return meshes_.cpuBytes(); }
 
   // Adds an object (its mesh must be loaded first, e.g. with loadMeshText). Returns "" or why not.
   std::string addObject(const SceneObject& object);
@@ -131,7 +122,7 @@ class Demo {
   void loseGraphics();
   // Frees the GL resources (the context stays); initGraphics makes them again.
   void releaseGraphics();
-  bool graphicsReady() const { return renderer_ != nullptr; }
+  bool graphicsReady() const { return graphics_.ready(); }
 
   // Advances the clock by dt seconds and renders one complete frame (planned capture, then main
   // pass) into `framebuffer` (0 = the canvas). With `waitForGpu`, timings include the GPU's work.
@@ -146,7 +137,7 @@ class Demo {
   // What the last frame planned: its probes and their faces, the reflectors it traced.
   const FramePlan& lastPlan() const { return lastPlan_; }
   // Time spent building the exact mode's trees so far (load-time accounting).
-  double bvhBuildMs() const { return bvhBuildMs_; }
+  double bvhBuildMs() const { return meshes_.bvhBuildMs(); }
   // What the planner weighed for each probe in the last frame (search: planned).
   const std::vector<MethodChoice>& methodChoices() const { return planner_.choices(); }
   const PlannerSettings& plannerSettings() const { return plannerSettings_; }
@@ -175,7 +166,7 @@ class Demo {
   }
   bool showError() const { return showError_; }
   // Mesh `name`'s tree for the exact mode (built when the mesh loaded), or null.
-  const MeshBvh* meshBvh(const std::string& name) const;
+  const MeshBvh* meshBvh(const std::string& name) const { return meshes_.builtBvh(name); }
   // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;
   // returns a message when it had to clamp.
   std::string setCubeFaceSize(int size);
@@ -183,37 +174,14 @@ class Demo {
   // The live cube map of the scene's first reflector (0 before the first capture), for tests.
   unsigned environmentTexture() const;
   // The renderer (null before initGraphics), for tests that read its captures back.
-  const SceneRenderer* renderer() const { return renderer_.get(); }
+  const SceneRenderer* renderer() const { return graphics_.renderer(); }
+  // The GPU's meshes, which every renderer draws from (null before initGraphics), for tests.
+  const MeshBuffers* gpuMeshes() const { return graphics_.meshes(); }
 
  private:
-  // A coarser level: its triangles over level 0's vertices, in chunk order.
-  struct CoarseLevel {
-    std::vector<uint32_t> indices;
-    std::vector<MeshChunk> chunks;
-    size_t vertices = 0;  // distinct vertices it uses: what its GPU copy holds
-  };
-  struct MeshEntry {
-    std::shared_ptr<MeshData> base;  // shared with a background build that reads it
-    std::vector<CoarseLevel> coarser;
-    bool chunked = false;
-    bool levelsBuilt = false;          // coarser levels made (possibly none: small meshes)
-    std::future<BuiltLevels> pending;  // a background build under way
-  };
-
-  std::string adopt(const std::string& name, Result<MeshData> mesh);
   std::string adoptLoaded(const std::string& name, Result<LoadedMesh> loaded);
+  std::string adopt(const std::string& name, Result<MeshData> mesh);
   bool needsLevels() const;
-  // Starts a background build for every mesh with work left and none under way.
-  void startBuilds();
-  // Takes in the builds that are done (all of them, waiting, with `wait`).
-  void collectBuilds(bool wait);
-  // The mesh `name` at `revision`, or the reason it is not.
-  MeshEntry* entryAt(const std::string& name, uint32_t revision, std::string* problem);
-  // Uploads every level of `name` to the renderer (level 0 first: it drops the old levels).
-  // Mesh `name`'s tree for the exact mode, built from `mesh` on first need.
-  std::shared_ptr<const MeshBvh> bvhFor(const std::string& name,
-                                        std::shared_ptr<const MeshData> mesh);
-  void uploadLevels(const std::string& name, const MeshEntry& entry);
   std::vector<PlannedObject> plannedObjects(double seconds) const;
   // Everything besides the objects that the captures depend on, as values.
   CaptureContext captureContext() const;
@@ -222,46 +190,31 @@ class Demo {
                                   int height) const;
   // What the planner knows of the camera for a width x height viewport.
   PlannerView plannerView(int width, int height) const;
-  // Whether the settings may trace some reflector's rays (search exact or planned).
-  bool mayTrace() const;
-  // The exact mode's tracer (in the exact mode and with the error view), the error view's
-  // renderer and targets: made, or dropped, as the settings ask. Returns "" or a message.
-  std::string setUpExact();
-  // The error view's pass: the exact frame, the comparison into `framebuffer`, the numbers.
-  void renderErrorView(const std::vector<PlannedObject>& objects, const ViewParams& view,
-                       const std::vector<DrawItem>& draws, unsigned framebuffer);
+  ViewParams viewParams(int width, int height) const;
+  // The frame's stats before anything is drawn: time, settings, sizes, meshes.
+  void startStats(bool waitForGpu, int width, int height);
+  // The captures of `plan` into the probes, timed; their counts and any error into the stats.
+  void capturePass(const FramePlan& plan, bool waitForGpu);
 
   Scene scene_;
-  std::map<std::string, MeshEntry> meshes_;
-  std::map<std::string, uint32_t> meshRevisions_;
-  // Builds of meshes since replaced: their results are dropped once they are done (a future of
-  // std::async would wait for its thread if it were destroyed before).
-  std::vector<std::future<BuiltLevels>> abandoned_;
-  LevelBuilds levelBuilds_ = LevelBuilds::Background;
-  bool firstFrameDrawn_ = false;
-  std::vector<std::string> lastWarnings_;
+  MeshLibrary meshes_;
   std::optional<CubeFaces> skybox_;
   LookCamera camera_;
   AnimationClock clock_;
+  PlannerSettings plannerSettings_;
+  AccuracySettings accuracy_;
+  uint64_t skyboxContent_ = 0;  // contentHash(*skybox_): captures compare it by value
+  bool showError_ = false;
+  DemoGraphics graphics_;
+  InsideViews inside_;  // the teaching views (after graphics_: their GL objects go first)
+  // The frame's state: the planner and what the last frame planned and measured.
   FramePlanner planner_;
+  bool firstFrameDrawn_ = false;
   // The reflectors the last frame traced: a pass that reads the frame's cubes again
   // (renderLookupDirections) draws each the same way.
   std::vector<ProbeLayout> lastTraced_;
   FramePlan lastPlan_;
-  PlannerSettings plannerSettings_;
-  AccuracySettings accuracy_;
-  uint64_t skyboxContent_ = 0;  // contentHash(*skybox_): captures compare it by value
-  std::unique_ptr<SceneRenderer> renderer_;
-  InsideViews inside_;
-  std::unique_ptr<GpuTimer> gpuTimer_;
   FrameStats stats_;
-  std::map<std::string, std::shared_ptr<const MeshBvh>> bvhs_;  // level 0's, by mesh name
-  std::unique_ptr<ExactTracer> exactTracer_;
-  std::unique_ptr<SceneRenderer> exactRenderer_;  // the error view's exact pass
-  std::unique_ptr<ErrorView> errorView_;
-  FramePlanner exactPlanner_;
-  bool showError_ = false;
-  double bvhBuildMs_ = 0.0;
 };
 
 }  // namespace reflect

@@ -10,7 +10,8 @@
 namespace reflect {
 
 MeshBuffer::MeshBuffer(const MeshData& mesh)
-    : vao_(genVertexArray()),
+    : tally_(mesh.vertices.size() * sizeof(Vertex) + mesh.indices.size() * sizeof(uint32_t)),
+      vao_(genVertexArray()),
       vertices_(genBuffer()),
       indices_(genBuffer()),
       indexCount_(static_cast<GLsizei>(mesh.indices.size())),
@@ -63,9 +64,46 @@ void MeshBuffer::draw(const std::vector<IndexRange>& ranges) const {
 }
 
 void MeshBuffer::abandon() {
+  tally_.release();
   vao_.abandon();
   vertices_.abandon();
   indices_.abandon();
+}
+
+void MeshBuffers::set(const std::string& name, int lod, const MeshData& mesh) {
+  Levels& levels = meshes_[name];
+  if (lod == 0) {
+    levels.buffers.clear();
+    levels.serial = nextSerial_++;
+  }
+  if (lod != static_cast<int>(levels.buffers.size())) return;
+  levels.buffers.emplace_back(mesh);
+}
+
+const MeshBuffer* MeshBuffers::find(const std::string& name, int lod) const {
+  auto it = meshes_.find(name);
+  if (it == meshes_.end() || it->second.buffers.empty()) return nullptr;
+  const std::vector<MeshBuffer>& buffers = it->second.buffers;
+  const size_t level = std::min(static_cast<size_t>(std::max(lod, 0)), buffers.size() - 1);
+  return &buffers[level];
+}
+
+uint64_t MeshBuffers::serial(const std::string& name) const {
+  auto it = meshes_.find(name);
+  return it == meshes_.end() ? 0 : it->second.serial;
+}
+
+size_t MeshBuffers::levelCount() const {
+  size_t count = 0;
+  for (const auto& [name, levels] : meshes_) count += levels.buffers.size();
+  return count;
+}
+
+void MeshBuffers::abandon() {
+  for (auto& [name, levels] : meshes_) {
+    for (MeshBuffer& buffer : levels.buffers) buffer.abandon();
+  }
+  meshes_.clear();
 }
 
 }  // namespace reflect

@@ -1,12 +1,54 @@
-// One mesh on the GPU: a vertex array with interleaved position + normal and 32-bit indices.
+// One mesh on the GPU: a vertex array with interleaved position + normal and 32-bit indices; and
+// the set of every mesh's levels that all of a demo's renderers draw from (one GPU copy each).
 #pragma once
 
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/mesh_data.h"
 #include "gfx/gl_handle.h"
 
 namespace reflect {
+
+// Mesh buffers alive right now and the bytes they hold (vertices and indices as uploaded), for
+// tests that check a mesh is on the GPU once, whichever renderers draw it.
+inline long gLiveMeshBuffers = 0;
+inline size_t gLiveMeshBufferBytes = 0;
+
+// Counts one buffer's bytes in the totals above while it lives; a move hands the count over.
+class MeshBufferTally {
+ public:
+  explicit MeshBufferTally(size_t bytes) : bytes_(bytes), live_(true) {
+    ++gLiveMeshBuffers;
+    gLiveMeshBufferBytes += bytes_;
+  }
+  ~MeshBufferTally() { release(); }
+  MeshBufferTally(const MeshBufferTally&) = delete;
+  MeshBufferTally& operator=(const MeshBufferTally&) = delete;
+  MeshBufferTally(MeshBufferTally&& other) noexcept
+      : bytes_(other.bytes_), live_(std::exchange(other.live_, false)) {}
+  MeshBufferTally& operator=(MeshBufferTally&& other) noexcept {
+    if (this != &other) {
+      release();
+      bytes_ = other.bytes_;
+      live_ = std::exchange(other.live_, false);
+    }
+    return *this;
+  }
+  void release() {
+    if (!live_) return;
+    --gLiveMeshBuffers;
+    gLiveMeshBufferBytes -= bytes_;
+    live_ = false;
+  }
+
+ private:
+  size_t bytes_ = 0;
+  bool live_ = false;
+};
 
 class MeshBuffer {
  public:
@@ -30,6 +72,7 @@ class MeshBuffer {
   void abandon();
 
  private:
+  MeshBufferTally tally_;
   VertexArrayHandle vao_;
   BufferHandle vertices_;
   BufferHandle indices_;
@@ -40,6 +83,33 @@ class MeshBuffer {
   bool flat_ = false;
   glm::vec3 flatPoint_{0.0f};
   glm::vec3 flatNormal_{0.0f};
+};
+
+// Every mesh's levels of detail on the GPU, by the name the scene knows the mesh by. One owner
+// uploads; every renderer of the same context draws from it (SceneRenderer::setMeshes).
+class MeshBuffers {
+ public:
+  // Uploads (or replaces) level `lod` of mesh `name` (0 = full detail; setting level 0 drops the
+  // coarser levels, which belonged to the old mesh). Levels arrive in order, 0 first; one out of
+  // order is ignored.
+  void set(const std::string& name, int lod, const MeshData& mesh);
+  // Level `lod` of mesh `name`, or its coarsest when it has fewer levels; null without the mesh.
+  const MeshBuffer* find(const std::string& name, int lod) const;
+  // Changes whenever level 0 of mesh `name` is replaced (0: no such mesh), so that what a
+  // renderer derived from the old mesh (a glass interior map) can be told stale.
+  uint64_t serial(const std::string& name) const;
+  // Levels held, over every mesh.
+  size_t levelCount() const;
+  // After a lost context: drop every GL name without deleting (the context took them).
+  void abandon();
+
+ private:
+  struct Levels {
+    std::vector<MeshBuffer> buffers;
+    uint64_t serial = 0;
+  };
+  std::map<std::string, Levels> meshes_;
+  uint64_t nextSerial_ = 1;
 };
 
 }  // namespace reflect

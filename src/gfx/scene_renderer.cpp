@@ -92,14 +92,14 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   return r;
 }
 
-void SceneRenderer::setMesh(const std::string& name, int lod, const MeshData& mesh) {
-  std::vector<MeshBuffer>& levels = meshes_[name];
-  if (lod == 0) {
-    levels.clear();
-    glassInteriors_.forget(name);
+void SceneRenderer::forgetReplacedGlassMeshes(const Scene& scene) {
+  for (const SceneObject& object : scene.objects) {
+    if (object.material != Material::Glass) continue;
+    const uint64_t serial = meshes_ ? meshes_->serial(object.mesh) : 0;
+    uint64_t& seen = glassMeshSerials_[object.mesh];
+    if (seen != serial) glassInteriors_.forget(object.mesh);
+    seen = serial;
   }
-  if (lod != static_cast<int>(levels.size())) return;  // levels arrive in order, 0 first
-  levels.emplace_back(mesh);
 }
 
 std::string SceneRenderer::setSkybox(const CubeFaces& faces) {
@@ -110,10 +110,7 @@ std::string SceneRenderer::setSkybox(const CubeFaces& faces) {
 }
 
 const MeshBuffer* SceneRenderer::mesh(const std::string& name, int lod) const {
-  auto it = meshes_.find(name);
-  if (it == meshes_.end() || it->second.empty()) return nullptr;
-  const size_t level = std::min(static_cast<size_t>(std::max(lod, 0)), it->second.size() - 1);
-  return &it->second[level];
+  return meshes_ ? meshes_->find(name, lod) : nullptr;
 }
 
 GLuint SceneRenderer::probeTexture(int owner) const {
@@ -234,6 +231,7 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
 
 Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, const FramePlan& plan,
                                           const glm::vec3& lightingEye) {
+  forgetReplacedGlassMeshes(scene);
   prepareGlassExits(scene, seconds);
   PassCounts counts;
   glEnable(GL_DEPTH_TEST);
@@ -340,6 +338,7 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Fra
                                    const ViewParams& camera, const std::vector<DrawItem>& draws,
                                    unsigned framebuffer, int width, int height,
                                    bool outputDirections) {
+  forgetReplacedGlassMeshes(scene);
   prepareGlassExits(scene, seconds);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
@@ -372,10 +371,7 @@ void SceneRenderer::abandon() {
   skybox_.reset();
   for (auto& [index, target] : probes_) target.abandon();
   probes_.clear();
-  for (auto& [name, levels] : meshes_) {
-    for (MeshBuffer& level : levels) level.abandon();
-  }
-  meshes_.clear();
+  meshes_ = nullptr;  // the owner of the set abandons it
 }
 
 }  // namespace reflect

@@ -51,9 +51,9 @@ class SceneRenderer {
   static Result<SceneRenderer> create(const AccuracySettings& accuracy = {});
   const AccuracySettings& accuracy() const { return accuracy_; }
 
-  // Uploads (or replaces) level `lod` of the mesh the scene knows by `name` (0 = full detail;
-  // setting level 0 drops the coarser levels, which belonged to the old mesh).
-  void setMesh(const std::string& name, int lod, const MeshData& mesh);
+  // The meshes it draws, by the names the scene knows them by; not owned. Every renderer of a
+  // demo draws from the same set, so each mesh is on the GPU once.
+  void setMeshes(const MeshBuffers* meshes) { meshes_ = meshes; }
   // The static cube map behind the scene (and the environment of Skybox-lit objects).
   std::string setSkybox(const CubeFaces& faces);
   void clearSkybox() { skybox_.reset(); }
@@ -142,6 +142,8 @@ class SceneRenderer {
   // surface, or no map).
   const GlassInteriorMap* glassExitOf(const SceneObject& object, const glm::mat4& model) const;
   const MeshBuffer* mesh(const std::string& name, int lod) const;
+  // Drops the interior maps of glass meshes replaced in the shared set since they were made.
+  void forgetReplacedGlassMeshes(const Scene& scene);
 
   std::map<ProgramKey, Program> programs_;
   std::set<ProgramKey> failedPrograms_;
@@ -157,7 +159,8 @@ class SceneRenderer {
   VertexArrayHandle emptyVertexArray_;  // the reduction's fullscreen triangle has no attributes
   std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
   AccuracySettings accuracy_;
-  std::map<std::string, std::vector<MeshBuffer>> meshes_;  // levels of detail by mesh name
+  const MeshBuffers* meshes_ = nullptr;
+  std::map<std::string, uint64_t> glassMeshSerials_;  // each glass mesh's serial when last seen
   const ExactTracer* exact_ = nullptr;
 };
 

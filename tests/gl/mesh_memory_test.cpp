@@ -5,6 +5,7 @@
 
 #include "app/headless_frames.h"
 #include "core/scene_file.h"
+#include "gfx/mesh_buffer.h"
 #include "gl_fixture.h"
 #include "platform/native/model_paths.h"
 
@@ -115,6 +116,49 @@ TEST(MeshMemory, TheFirstFrameComesBeforeTheLevels) {
   ASSERT_TRUE(later) << later.error();
   EXPECT_TRUE(demo->lastStats().lodReady);
   EXPECT_EQ(demo->levelInfo("mario.obj").size(), 3u);
+}
+
+// Every renderer of a demo (the frame's, and the error view's exact one) draws from one GPU copy
+// of each mesh level: turning the error view on uploads nothing, and the buffers alive hold
+// exactly the bytes meshGpuBytes() reports.
+TEST(MeshMemory, TheErrorViewDrawsFromTheSameGpuMeshes) {
+  const long buffersBefore = gLiveMeshBuffers;
+  const size_t bytesBefore = gLiveMeshBufferBytes;
+  std::unique_ptr<Demo> demo = testing::makeDemo(makeDynamicReflectionScene());
+  demo->waitForLevels();
+  ASSERT_TRUE(renderFrameAt(*demo, 1.0, 64, 64));
+  size_t levels = 0;
+  for (const std::string& name : demo->scene().meshNames()) levels += demo->levelInfo(name).size();
+  ASSERT_NE(demo->gpuMeshes(), nullptr);
+  EXPECT_EQ(demo->gpuMeshes()->levelCount(), levels);
+  EXPECT_GT(levels, demo->scene().meshNames().size());  // coarser levels are on the GPU too
+  const long buffers = gLiveMeshBuffers - buffersBefore;
+  EXPECT_EQ(buffers, static_cast<long>(levels));
+  EXPECT_EQ(gLiveMeshBufferBytes - bytesBefore, demo->meshGpuBytes());
+
+  ASSERT_EQ(demo->setShowError(true), "");
+  ASSERT_TRUE(renderFrameAt(*demo, 1.0, 64, 64));
+  EXPECT_TRUE(demo->lastStats().errorView);
+  EXPECT_EQ(gLiveMeshBuffers - buffersBefore, buffers);
+  EXPECT_EQ(gLiveMeshBufferBytes - bytesBefore, demo->meshGpuBytes());
+  // New settings remake both renderers; the meshes stay as they are.
+  AccuracySettings hierarchical = demo->accuracySettings();
+  hierarchical.search = Search::Hierarchical;
+  ASSERT_EQ(demo->setAccuracySettings(hierarchical), "");
+  ASSERT_TRUE(renderFrameAt(*demo, 1.5, 64, 64));
+  EXPECT_TRUE(demo->lastStats().errorView);
+  EXPECT_EQ(gLiveMeshBuffers - buffersBefore, buffers);
+
+  // A lost context forgets them; the restore uploads each level once again.
+  demo->loseGraphics();
+  EXPECT_EQ(gLiveMeshBuffers, buffersBefore);
+  ASSERT_EQ(demo->initGraphics(), "");
+  ASSERT_TRUE(renderFrameAt(*demo, 1.5, 64, 64));
+  EXPECT_TRUE(demo->lastStats().errorView);
+  EXPECT_EQ(gLiveMeshBuffers - buffersBefore, buffers);
+  demo->releaseGraphics();
+  EXPECT_EQ(gLiveMeshBuffers, buffersBefore);
+  EXPECT_EQ(gLiveMeshBufferBytes, bytesBefore);
 }
 
 }  // namespace
