@@ -72,15 +72,8 @@ void drawLegend(RgbaImage& view, const CrossGeometry& g, const std::array<FaceMa
 }  // namespace
 
 const char* facesChannelName(FacesChannel channel) {
-  switch (channel) {
-    case FacesChannel::Colour:
-      return "colour";
-    case FacesChannel::Distance:
-      return "distance";
-    case FacesChannel::SecondLayer:
-      return "layer2";
-  }
-  return "colour";
+  static const char* const kNames[] = {"colour", "distance", "layer2"};  // FacesChannel's order
+  return kNames[static_cast<size_t>(channel)];
 }
 
 CrossGeometry crossGeometry(int faceSize) {

@@ -18,10 +18,7 @@
 namespace {
 
 using nlohmann::json;
-using reflect::web::parseRequest;
-using reflect::web::reply;
-using reflect::web::replyError;
-using reflect::web::state;
+using namespace reflect::web;  // the bridge's helpers: web_state.h
 
 constexpr const char* kCanvas = "#canvas";
 

@@ -14,11 +14,7 @@
 namespace {
 
 using nlohmann::json;
-using reflect::web::parseRequest;
-using reflect::web::reply;
-using reflect::web::replyDone;
-using reflect::web::replyError;
-using reflect::web::state;
+using namespace reflect::web;  // the bridge's helpers: web_state.h
 
 // The current scene's level-0 mesh named by the request's "name", or null.
 const reflect::MeshData* requestedMesh(const json& request) {

@@ -21,11 +21,7 @@ namespace {
 
 using nlohmann::json;
 using reflect::JsonReader;
-using reflect::web::parseRequest;
-using reflect::web::reply;
-using reflect::web::replyDone;
-using reflect::web::replyError;
-using reflect::web::state;
+using namespace reflect::web;  // the bridge's helpers: web_state.h
 
 std::vector<std::string> skyboxFiles(const reflect::Scene& scene) {
   if (scene.skybox.empty()) return {};

@@ -14,12 +14,7 @@
 namespace {
 
 using nlohmann::json;
-using reflect::web::parseRequest;
-using reflect::web::reply;
-using reflect::web::replyDone;
-using reflect::web::replyError;
-using reflect::web::shortestText;
-using reflect::web::state;
+using namespace reflect::web;  // the bridge's helpers: web_state.h
 
 // The planner settings that only one policy reads: the panel shows them with that policy only,
 // and a link carries them with that policy only.
