@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/json_reader.h"
 #include "core/mesh_chunks.h"
 #include "core/mesh_lod.h"
 #include "core/scene_file.h"
@@ -14,12 +15,46 @@
 namespace {
 
 using nlohmann::json;
+using reflect::JsonReader;
 using namespace reflect::web;  // the bridge's helpers: web_state.h
 
 // The current scene's level-0 mesh named by the request's "name", or null.
 const reflect::MeshData* requestedMesh(const json& request) {
   if (!state().demo || !request.contains("name") || !request["name"].is_string()) return nullptr;
   return state().demo->meshLevel(request["name"].get<std::string>(), 0);
+}
+
+// The request's name, revision and chunk sizes, and `count` indices at `indices`.
+struct LevelRequest {
+  std::string name;
+  uint32_t revision = 0;
+  std::vector<uint32_t> chunkTriangles;
+  // The caller's indices, not copied: a level keeps a copy, the chunk order is copied over the
+  // mesh's own indices (a second array of a heavy mesh's would raise the wasm heap's peak).
+  std::span<const uint32_t> indices;
+};
+
+reflect::Result<LevelRequest> levelRequest(const char* request, const char* function,
+                                           const uint32_t* indices, int count) {
+  using Out = reflect::Result<LevelRequest>;
+  auto r = parseRequest(request, function);
+  if (!r) return Out::failure(r.error());
+  std::string error;
+  const JsonReader in(r.value(), "", &error);
+  in.onlyKeys({"name", "revision", "chunkTriangles"});
+  LevelRequest out;
+  out.name = in["name"].string("");
+  out.revision = static_cast<uint32_t>(in["revision"].integer(0, 0, 1 << 30));
+  if (r.value().contains("chunkTriangles") && r.value()["chunkTriangles"].is_array()) {
+    for (const json& n : r.value()["chunkTriangles"]) {
+      if (!n.is_number_unsigned())
+        return Out::failure(std::string(function) + ": bad chunkTriangles");
+      out.chunkTriangles.push_back(n.get<uint32_t>());
+    }
+  }
+  if (!error.empty()) return Out::failure(std::string(function) + ": " + error);
+  if (indices && count > 0) out.indices = {indices, static_cast<size_t>(count)};
+  return out;
 }
 
 }  // namespace
