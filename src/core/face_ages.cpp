@@ -1,25 +1,28 @@
 #include "core/face_ages.h"
 
+#include <algorithm>
+
 namespace reflect {
 
 void FaceAges::advance(const FramePlan& plan) {
-  std::map<int, std::array<FaceMark, 6>> next;
+  // In place: this runs every frame, views on or off, so a steady scene allocates nothing here
+  // (a map node only when a probe first appears).
+  std::erase_if(probes_, [&plan](const auto& entry) {
+    return std::none_of(plan.probes.begin(), plan.probes.end(),
+                        [&entry](const ProbePlan& p) { return p.reflector == entry.first; });
+  });
   for (const ProbePlan& probe : plan.probes) {
-    std::array<FaceMark, 6> marks;
-    for (FaceMark& mark : marks) mark.everCaptured = false;
-    if (const auto known = probes_.find(probe.reflector); known != probes_.end()) {
-      marks = known->second;
-    }
+    auto [it, added] = probes_.try_emplace(probe.reflector);
+    std::array<FaceMark, 6>& marks = it->second;
     for (FaceMark& mark : marks) {
+      if (added) mark.everCaptured = false;
       mark.captured = false;
       if (mark.everCaptured) ++mark.ageFrames;
     }
     for (const FacePlan& face : probe.faces) {
       marks[static_cast<size_t>(face.face)] = FaceMark{true, 0, true};
     }
-    next[probe.reflector] = marks;
   }
-  probes_ = std::move(next);
 }
 
 std::array<FaceMark, 6> FaceAges::marks(int reflector) const {

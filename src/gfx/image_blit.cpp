@@ -16,16 +16,22 @@ Result<ImageBlit> ImageBlit::create() {
 
 void ImageBlit::draw(const RgbaImage& image, int width, int height,
                      const std::array<uint8_t, 4>& background) {
-  // A new texture each time: the image's size follows the face size, and the view is drawn only
-  // while it is on (the normal frame never comes here).
-  texture_ = TextureHandle(genTexture());
+  // The view is drawn every frame while it is on: the texture is kept and only refilled, and made
+  // again only when the image's size changes (another face size, another canvas fit).
   glActiveTexture(GL_TEXTURE0);
+  if (!texture_ || image.width != textureWidth_ || image.height != textureHeight_) {
+    texture_ = TextureHandle(genTexture());
+    glBindTexture(GL_TEXTURE_2D, texture_.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, image.width, image.height);
+    textureWidth_ = image.width;
+    textureHeight_ = image.height;
+  }
   glBindTexture(GL_TEXTURE_2D, texture_.id());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-               image.pixels.data());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                  image.pixels.data());
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);

@@ -23,7 +23,8 @@ class ImageBlit {
  private:
   ShaderProgram program_;
   TextureHandle texture_;
-  VertexArrayHandle vertexArray_;  // empty: the full-screen triangle needs no attributes
+  int textureWidth_ = 0, textureHeight_ = 0;  // the size texture_ was made for
+  VertexArrayHandle vertexArray_;             // empty: the full-screen triangle needs no attributes
   GLint image_ = -1, origin_ = -1, background_ = -1;
 };
 
