@@ -30,7 +30,9 @@ uniform samplerCube u_environment;
 uniform samplerCube u_environment2;  // the probe's second layer (depth_search.glsl, 2 layers)
 uniform vec3 u_probeCentre;
 uniform float u_distanceUnit;  // the capture's near plane (depths are stored in its units)
-uniform int u_outputDirection; // 1: write the looked-up direction instead (for measuring)
+uniform int u_outputDirection; // 1: write the looked-up direction instead (for measuring), its
+                               // alpha saying whose: 2 a cube lookup, 3 a traced ray
+                               // (core/face_use.h kLookupMark*: the face-use view reads them)
 
 
 #include "capture_output.glsl"
@@ -63,4 +65,6 @@ void main() {
 #if SEARCH == SEARCH_EXACT && CAPTURE_OUTPUT == 0
   if (u_exactMark == 1) fragColour.a = 0.0;
 #endif
+  // A float target keeps alphas past 1; the lookup-direction pass always draws into one.
+  if (u_outputDirection == 1) fragColour.a = SEARCH == SEARCH_EXACT ? 3.0 : 2.0;
 }

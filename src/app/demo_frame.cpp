@@ -178,7 +178,12 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   }
   lastPlan_ = plan;
   inside_.afterFrame(plan);
-  if (inside_.on()) inside_.draw(*renderer, scene_, plan, framebuffer, width, height);
+  if (inside_.on()) {
+    const auto lookups = [this](unsigned target, int w, int h) {
+      renderLookupDirections(target, w, h);
+    };
+    inside_.draw(*renderer, scene_, plan, lookups, framebuffer, width, height);
+  }
   if (!firstFrameDrawn_) {
     // The first frame is on screen: now build what the meshes were drawn without.
     firstFrameDrawn_ = true;

@@ -1,15 +1,22 @@
 #include "app/inside_views.h"
 
+#include "gfx/offscreen_target.h"
+
 namespace reflect {
 
 std::string InsideViews::draw(const SceneRenderer& renderer, const Scene& scene,
-                              const FramePlan& plan, unsigned framebuffer, int width, int height) {
+                              const FramePlan& plan, const LookupPass& drawLookups,
+                              unsigned framebuffer, int width, int height) {
   if (!blit_) {
     Result<ImageBlit> blit = ImageBlit::create();
     if (!blit) return blit.error();
     blit_ = std::make_unique<ImageBlit>(blit.take());
   }
-  Result<RgbaImage> image = composeFacesView(renderer, scene, plan, ages_, channel_, width, height);
+  Result<RgbaImage> image =
+      view_ == InsideView::FaceUse
+          ? composeFaceUseView(scene, plan, ages_, drawLookups,
+                               readFramebuffer(framebuffer, width, height))
+          : composeFacesView(renderer, scene, plan, ages_, channel_, width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   if (!image) {
     blit_->draw(messageImage(image.error(), width, height), width, height, kCrossBackground);

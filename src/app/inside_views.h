@@ -1,11 +1,14 @@
 // Inside the frame: the teaching views a frame can be shown as instead of its picture (the
-// view setting `inside`). Each frame the demo tells it what the frame planned (afterFrame); when
-// a view is on, draw() puts that view on the framebuffer over the finished frame. With the views
-// off nothing here runs and nothing is allocated: the normal frame is untouched.
+// view setting `inside`): the faces view (faces_view.h) and the face-use view (face_use_view.h).
+// Each frame the demo tells it what the frame planned (afterFrame); when a view is on, draw() puts
+// that view on the framebuffer over the finished frame. With the views off nothing here runs and
+// nothing is allocated: the normal frame is untouched.
 #pragma once
 
+#include <functional>
 #include <memory>
 
+#include "app/face_use_view.h"
 #include "app/faces_view.h"
 #include "core/face_ages.h"
 #include "core/settings_schema.h"
@@ -23,10 +26,13 @@ class InsideViews {
   // Every frame, views on or off: the faces' ages must be known when the view is turned on.
   void afterFrame(const FramePlan& plan) { ages_.advance(plan); }
   const FaceAges& ages() const { return ages_; }
-  // Draws the view into `framebuffer` (width x height). Returns "" or why the view could not be
-  // made (then a message image is drawn in its place, so the screen says it too).
+  // Draws the view into `framebuffer` (width x height), which holds the finished frame.
+  // `drawLookups` renders the same frame's lookup directions into a float framebuffer (the
+  // face-use view reads them). Returns "" or why the view could not be made (then a message image
+  // is drawn in its place, so the screen says it too).
+  using LookupPass = std::function<void(unsigned framebuffer, int width, int height)>;
   std::string draw(const SceneRenderer& renderer, const Scene& scene, const FramePlan& plan,
-                   unsigned framebuffer, int width, int height);
+                   const LookupPass& drawLookups, unsigned framebuffer, int width, int height);
   // The context was lost: names are gone, ages start over (the cubes are empty again).
   void abandon();
   // The GL objects are freed (the context stays).

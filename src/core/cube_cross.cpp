@@ -22,17 +22,6 @@ std::string vectorText(const glm::vec3& v) {
   return "(" + component(v.x) + "," + component(v.y) + "," + component(v.z) + ")";
 }
 
-void fillRect(RgbaImage& image, int x, int y, int w, int h, const Rgba& rgba) {
-  for (int row = y; row < y + h; ++row) {
-    for (int column = x; column < x + w; ++column) {
-      std::memcpy(&image.pixels[(static_cast<size_t>(row) * static_cast<size_t>(image.width) +
-                                 static_cast<size_t>(column)) *
-                                4],
-                  rgba.data(), 4);
-    }
-  }
-}
-
 const Rgba& frameColour(const FaceMark& mark) {
   if (!mark.everCaptured) return kEmptyFrame;
   return mark.captured ? kCapturedFrame : kStaleFrame;

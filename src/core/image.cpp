@@ -54,6 +54,19 @@ void flipRows(RgbaImage& image) {
   }
 }
 
+void fillRect(RgbaImage& image, int x, int y, int w, int h, const std::array<uint8_t, 4>& rgba) {
+  const int x0 = std::max(x, 0);
+  const int x1 = std::min(x + w, image.width);
+  for (int row = std::max(y, 0); row < std::min(y + h, image.height); ++row) {
+    for (int column = x0; column < x1; ++column) {
+      std::memcpy(&image.pixels[(static_cast<size_t>(row) * static_cast<size_t>(image.width) +
+                                 static_cast<size_t>(column)) *
+                                4],
+                  rgba.data(), 4);
+    }
+  }
+}
+
 Result<RgbaImage> decodeImage(const uint8_t* data, size_t size, const std::string& name,
                               int maxDimension) {
   if (size == 0) return Result<RgbaImage>::failure(name + ": cannot read image (empty file)");

@@ -1,6 +1,7 @@
 // RGBA8 images in memory, PNG files, and the pixel comparisons the tests and benchmarks use.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,6 +23,9 @@ struct RgbaImage {
 
 // GL reads rows bottom-up; images and PNGs are top-down.
 void flipRows(RgbaImage& image);
+
+// Fills the w x h rectangle at (x, y) with `rgba`; the part outside the image is left out.
+void fillRect(RgbaImage& image, int x, int y, int w, int h, const std::array<uint8_t, 4>& rgba);
 
 // The largest width or height decodeImage accepts by default (8192 x 8192 RGBA8 is 256 MB).
 inline constexpr int kMaxImageDimension = 8192;

@@ -54,7 +54,7 @@ SettingInfo inFolder(SettingInfo info, std::string folder) {
 }
 
 constexpr const char* kInsideFolder = "Inside the frame";
-const std::vector<std::string> kInsideViews = {"off", "faces"};
+const std::vector<std::string> kInsideViews = {"off", "faces", "faceuse"};
 const std::vector<std::string> kFacesChannels = {facesChannelName(FacesChannel::Colour),
                                                  facesChannelName(FacesChannel::Distance),
                                                  facesChannelName(FacesChannel::SecondLayer)};
@@ -272,7 +272,8 @@ const std::vector<SettingField<ViewSettings>>& viewFields() {
            choice("inside", "view",
                   "inside the frame: off (the picture), faces (the probe's cube map unfolded as "
                   "a cross, each face with the course's look and up vectors, stale faces "
-                  "dimmed with their age)",
+                  "dimmed with their age), faceuse (each mirror and glass pixel in the colour "
+                  "of the cube face it read, with a legend of the pixels each face serves)",
                   kInsideViews),
            kInsideFolder),
        [](const V& s) { return json(insideViewName(s.inside)); },

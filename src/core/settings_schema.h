@@ -48,10 +48,11 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields();
 // How the page shows and picks (show error, auto with its frame budget): page settings, in the
 // link and the panel like the rest; natively `render --error-view` and `bench --budget`.
 // Inside the frame (the teaching views): `inside` replaces the picture with one of them, natively
-// also `render --faces FILE`.
+// also `render --faces FILE` and `render --face-use FILE`.
 enum class InsideView {
   Off,
-  Faces,  // the probe's cube map unfolded (core/cube_cross.h)
+  Faces,    // the probe's cube map unfolded (core/cube_cross.h)
+  FaceUse,  // each mirror and glass pixel in the colour of the face it read (core/face_use.h)
 };
 const char* insideViewName(InsideView view);
 

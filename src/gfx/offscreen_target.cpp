@@ -42,34 +42,42 @@ Result<OffscreenTarget> OffscreenTarget::create(int width, int height, bool floa
   return t;
 }
 
-RgbaImage OffscreenTarget::readPixels() const {
+RgbaImage readFramebuffer(GLuint framebuffer, int width, int height) {
   RgbaImage image;
-  image.width = width_;
-  image.height = height_;
-  image.pixels.resize(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  image.width = width;
+  image.height = height;
+  image.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   flipRows(image);
   return image;
 }
 
-std::vector<glm::vec3> OffscreenTarget::readFloats() const {
-  std::vector<float> rgba(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 4);
+RgbaImage OffscreenTarget::readPixels() const {
+  return readFramebuffer(framebuffer_.id(), width_, height_);
+}
+
+std::vector<glm::vec4> OffscreenTarget::readFloatsRgba() const {
+  std::vector<glm::vec4> rows(static_cast<size_t>(width_) * static_cast<size_t>(height_));
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rows.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  std::vector<glm::vec3> out(static_cast<size_t>(width_) * static_cast<size_t>(height_));
-  for (int y = 0; y < height_; ++y) {
-    for (int x = 0; x < width_; ++x) {
-      const size_t from = (static_cast<size_t>(height_ - 1 - y) * static_cast<size_t>(width_) +
-                           static_cast<size_t>(x)) *
-                          4;
-      out[static_cast<size_t>(y) * static_cast<size_t>(width_) + static_cast<size_t>(x)] = {
-          rgba[from], rgba[from + 1], rgba[from + 2]};
-    }
+  // GL's rows come bottom-up.
+  std::vector<glm::vec4> out(rows.size());
+  const size_t w = static_cast<size_t>(width_);
+  for (size_t y = 0; y < static_cast<size_t>(height_); ++y) {
+    std::copy_n(&rows[(static_cast<size_t>(height_) - 1 - y) * w], w, &out[y * w]);
   }
+  return out;
+}
+
+std::vector<glm::vec3> OffscreenTarget::readFloats() const {
+  const std::vector<glm::vec4> rgba = readFloatsRgba();
+  std::vector<glm::vec3> out;
+  out.reserve(rgba.size());
+  for (const glm::vec4& p : rgba) out.emplace_back(p);
   return out;
 }
 

@@ -12,6 +12,10 @@
 
 namespace reflect {
 
+// The RGBA8 pixels of `framebuffer` (0: the canvas), width x height from the origin, top row
+// first. Leaves framebuffer 0 bound.
+RgbaImage readFramebuffer(GLuint framebuffer, int width, int height);
+
 class OffscreenTarget {
  public:
   // floatColour: RGBA32F (needs EXT_color_buffer_float), read with readFloats.
@@ -25,6 +29,8 @@ class OffscreenTarget {
   RgbaImage readPixels() const;
   // RGB of every pixel of a float target, top row first.
   std::vector<glm::vec3> readFloats() const;
+  // RGBA of every pixel of a float target, top row first (alpha may be past 1).
+  std::vector<glm::vec4> readFloatsRgba() const;
 
  private:
   RenderbufferHandle colour_;

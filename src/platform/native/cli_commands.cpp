@@ -187,6 +187,11 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
                            "also write the faces view: the probe's cube map unfolded as a cross, "
                            "each face with the course's look and up vectors, captured or stale"),
               w, "FILE", "a PNG file name");
+  valueOption(c.add_option("--face-use", o.faceUseOut,
+                           "also write the face-use view: each mirror and glass pixel in the "
+                           "colour of the cube face it read, with a legend of the pixels each "
+                           "face serves"),
+              w, "FILE", "a PNG file name");
   for (const auto& field : viewFields()) {
     if (field.info.name == "facesChannel") addSetting(c, w, field, o.view);
   }

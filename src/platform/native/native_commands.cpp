@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/demo.h"
+#include "app/face_use_view.h"
 #include "app/faces_view.h"
 #include "app/headless_frames.h"
 #include "bench/accuracy.h"
@@ -128,6 +129,22 @@ std::string writeFacesView(const Demo& demo, const CliOptions& o) {
   return {};
 }
 
+// The face-use view of the frame just drawn (`frame`, its picture; --face-use): the same image
+// the page shows.
+std::string writeFaceUseView(Demo& demo, const CliOptions& o, const RgbaImage& frame) {
+  const auto lookups = [&demo](unsigned target, int w, int h) {
+    demo.renderLookupDirections(target, w, h);
+  };
+  Result<RgbaImage> view =
+      composeFaceUseView(demo.scene(), demo.lastPlan(), demo.insideViews().ages(), lookups, frame);
+  if (!view) return "--face-use: " + view.error();
+  std::string error = writePng(view.value(), o.faceUseOut);
+  if (!error.empty()) return error;
+  std::printf("wrote %s (the face-use view: %dx%d)\n", o.faceUseOut.c_str(), view.value().width,
+              view.value().height);
+  return {};
+}
+
 }  // namespace
 
 std::string runRenderCommand(const CliOptions& o) {
@@ -139,12 +156,17 @@ std::string runRenderCommand(const CliOptions& o) {
   std::string error = writePng(image.value(), o.out);
   if (!error.empty()) return error;
   std::printf("wrote %s (%dx%d, t=%.3f s)\n", o.out.c_str(), o.width, o.height, o.time);
-  if (!o.referenceOut.empty()) {
-    error = writeReference(*demo.value(), o);
-    if (!error.empty()) return error;
-  }
+  // The views of this frame first: the reference and the error view draw frames of their own.
   if (!o.facesOut.empty()) {
     error = writeFacesView(*demo.value(), o);
+    if (!error.empty()) return error;
+  }
+  if (!o.faceUseOut.empty()) {
+    error = writeFaceUseView(*demo.value(), o, image.value());
+    if (!error.empty()) return error;
+  }
+  if (!o.referenceOut.empty()) {
+    error = writeReference(*demo.value(), o);
     if (!error.empty()) return error;
   }
   if (o.errorViewOut.empty()) return {};
