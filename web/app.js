@@ -87,6 +87,8 @@ async function start() {
 
   const help = helpOverlay();
   const camera = (change) => session.camera(change);  // a change: the loop draws
+  // One teaching view on, or the picture back when it is the one already on.
+  const toggleInside = (view) => session.setView({ inside: bridge.view().inside === view ? 'off' : view });
   attachInput(canvas, {
     drag: (dx, dy) => camera((b) => b.dragCamera({ dx, dy, height: canvas.clientHeight })),
     move: (steps) => camera((b) => b.moveCamera({ forward: steps })),
@@ -95,8 +97,10 @@ async function start() {
     pan: (right, up) => camera((b) => b.moveCamera({ right, up })),
     reset: () => camera((b) => b.resetCamera()),
     togglePause: () => session.setPaused(!session.paused),
-    // Inside the frame: the faces view on and off (the panel's folder has its channel).
-    toggleFaces: () => session.setView({ inside: bridge.view().inside === 'faces' ? 'off' : 'faces' }),
+    // Inside the frame: the faces view and the face-use view on and off (the panel's folder has
+    // the faces view's channel).
+    toggleFaces: () => toggleInside('faces'),
+    toggleFaceUse: () => toggleInside('faceuse'),
     toggleHelp: () => help.toggle(),
     closeHelp: () => help.close(),
   });

@@ -1,6 +1,7 @@
 // Inside the frame: the faces view replaces the picture with the probe's cube map unfolded
 // (its pixels and marks are held natively: tests/gl/faces_view_test.cpp). Here: the link key, the
-// panel's folder, the F key, and the message when the frame has no cube map.
+// panel's folder, the F key, and the message when the frame has no cube map; the face-use
+// view (U) paints the mirror by the faces it reads.
 import { test, expect } from '@playwright/test';
 import { idle, openDemo, PANEL_OPEN_VIEWPORT, pixel, renderAndRead } from './helpers.mjs';
 
@@ -55,4 +56,34 @@ test('a channel the probe does not store is refused by name, and the link keeps 
   expect(backgroundShare(shown)).toBeGreaterThan(0.95);
   await expect(page).toHaveURL(/facesChannel=distance/);
   await expect(page).toHaveURL(/inside=faces/);
+});
+
+// core/face_use.h, kFaceUseColours: +X, -X, +Y, -Y, +Z, -Z.
+const FACE_COLOURS = [[230, 40, 40], [40, 210, 230], [50, 200, 60], [220, 60, 220], [50, 90, 240], [240, 220, 40]];
+
+function pixelsOfEachFace(image) {
+  const counts = FACE_COLOURS.map(() => 0);
+  for (let i = 0; i < image.data.length; i += 4) {
+    const face = FACE_COLOURS.findIndex(([r, g, b]) => image.data[i] === r && image.data[i + 1] === g && image.data[i + 2] === b);
+    if (face >= 0) ++counts[face];
+  }
+  return counts;
+}
+
+test('?inside=faceuse paints the course\'s mirror by the faces it reads, and U gives the picture back', async ({ page }) => {
+  await openDemo(page, '?preset=course&inside=faceuse&paused');
+  expect((await page.evaluate(() => window.demo.view())).inside).toBe('faceuse');
+  const shown = await renderAndRead(page, 1.0);
+  // The camera looks at the sphere from +Z: its middle reads +Z (the ray comes back), the ring
+  // around it +X, -X, +Y and -Y, and its rim -Z (behind the sphere). Where the view is exact is
+  // held natively (tests/gl/face_use_view_test.cpp); here, that the page shows the view.
+  const counts = pixelsOfEachFace(shown);
+  for (let face = 0; face < 6; ++face) expect(counts[face], `face ${face}`).toBeGreaterThan(20);
+  expect(counts[4]).toBeGreaterThan(counts[5]);
+
+  await page.keyboard.press('u');
+  await idle(page);
+  expect((await page.evaluate(() => window.demo.view())).inside).toBe('off');
+  const picture = await renderAndRead(page, 1.0);
+  expect(pixelsOfEachFace(picture).reduce((a, b) => a + b, 0)).toBeLessThan(20);
 });
