@@ -14,17 +14,40 @@ std::string eglFailure(const char* step) {
   return std::string("EGL: ") + step + " failed (" + code + ")";
 }
 
+// The first EGL device's display (EGL_EXT_platform_device): what a vendor driver without Mesa's
+// surfaceless platform (NVIDIA's) offers for rendering with no window system.
+EGLDisplay firstDeviceDisplay(PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay) {
+  auto queryDevices =
+      reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  EGLDeviceEXT device = nullptr;
+  EGLint count = 0;
+  if (!queryDevices || !queryDevices(1, &device, &count) || count < 1) return EGL_NO_DISPLAY;
+  return getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+}
+
+// Mesa's surfaceless platform (llvmpipe here, or a Mesa GPU driver), else the first device.
+Result<EGLDisplay> openDisplay() {
+  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (!getPlatformDisplay) {
+    return Result<EGLDisplay>::failure("EGL: eglGetPlatformDisplayEXT is not available");
+  }
+  EGLDisplay display =
+      getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) return display;
+  const std::string surfaceless = eglFailure("the surfaceless display");
+  display = firstDeviceDisplay(getPlatformDisplay);
+  if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) return display;
+  return Result<EGLDisplay>::failure(surfaceless + "; " + eglFailure("the first device's display"));
+}
+
 }  // namespace
 
 Result<std::unique_ptr<HeadlessGlContext>> HeadlessGlContext::create() {
   using Out = Result<std::unique_ptr<HeadlessGlContext>>;
-  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  if (!getPlatformDisplay) return Out::failure("EGL: eglGetPlatformDisplayEXT is not available");
-  EGLDisplay display =
-      getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  if (display == EGL_NO_DISPLAY) return Out::failure(eglFailure("surfaceless display"));
-  if (!eglInitialize(display, nullptr, nullptr)) return Out::failure(eglFailure("eglInitialize"));
+  Result<EGLDisplay> opened = openDisplay();
+  if (!opened) return Out::failure(opened.error());
+  EGLDisplay display = opened.value();
   if (!eglBindAPI(EGL_OPENGL_ES_API)) return Out::failure(eglFailure("eglBindAPI"));
 
   const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_SURFACE_TYPE,
