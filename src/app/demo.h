@@ -162,6 +162,7 @@ class Demo {
   // The view settings the demo draws by (show error, the inside views); "" or a message.
   std::string setViewSettings(const ViewSettings& view) {
     inside_.set(view.inside, view.facesChannel);
+    inside_.setProbe(view.facesProbe);
     return setShowError(view.showError);
   }
   bool showError() const { return showError_; }

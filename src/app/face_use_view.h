@@ -17,11 +17,12 @@ namespace reflect {
 
 // `frame` is the finished frame; `drawLookups` renders the same frame's lookup directions into the
 // float framebuffer it is given (of the frame's size). The legend's marks are those of
-// `plan`'s first probe (the title names its object); the painted pixels are every reflector's.
+// `plan`'s `probe`th probe (faces_view.h shownProbe; the title names its object); the painted
+// pixels are every reflector's.
 // Fails with a message when the GL cannot render into a float target (no EXT_color_buffer_float).
 Result<RgbaImage> composeFaceUseView(
     const Scene& scene, const FramePlan& plan, const FaceAges& ages,
     const std::function<void(unsigned framebuffer, int width, int height)>& drawLookups,
-    RgbaImage frame);
+    RgbaImage frame, int probe = 1);
 
 }  // namespace reflect

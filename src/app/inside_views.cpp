@@ -15,8 +15,8 @@ std::string InsideViews::draw(const SceneRenderer& renderer, const Scene& scene,
   Result<RgbaImage> image =
       view_ == InsideView::FaceUse
           ? composeFaceUseView(scene, plan, ages_, drawLookups,
-                               readFramebuffer(framebuffer, width, height))
-          : composeFacesView(renderer, scene, plan, ages_, channel_, width, height);
+                               readFramebuffer(framebuffer, width, height), probe_)
+          : composeFacesView(renderer, scene, plan, ages_, channel_, width, height, probe_);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   if (!image) {
     blit_->draw(messageImage(image.error(), width, height), width, height, kCrossBackground);

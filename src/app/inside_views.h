@@ -22,6 +22,8 @@ class InsideViews {
     view_ = view;
     channel_ = channel;
   }
+  // Which probe the views show: the frame's Nth (faces_view.h shownProbe).
+  void setProbe(int probe) { probe_ = probe; }
   bool on() const { return view_ != InsideView::Off; }
   // Every frame, views on or off: the faces' ages must be known when the view is turned on.
   void afterFrame(const FramePlan& plan) { ages_.advance(plan); }
@@ -41,6 +43,7 @@ class InsideViews {
  private:
   InsideView view_ = InsideView::Off;
   FacesChannel channel_ = FacesChannel::Colour;
+  int probe_ = 1;
   FaceAges ages_;
   std::unique_ptr<ImageBlit> blit_;  // made on the first draw
 };

@@ -291,6 +291,13 @@ const std::vector<SettingField<ViewSettings>>& viewFields() {
        [](V& s, const json& v) {
          s.facesChannel = enumAt<FacesChannel>(kFacesChannels, v.get<std::string>());
        }},
+      {inFolder(integer("facesProbe", "probe",
+                        "which probe the faces view shows and the face-use view's legend marks: "
+                        "the frame's Nth (1 = the first; past the last, the last)",
+                        1, 64),
+                kInsideFolder),
+       [](const V& s) { return json(s.facesProbe); },
+       [](V& s, const json& v) { s.facesProbe = v.get<int>(); }},
   };
   return fields;
 }

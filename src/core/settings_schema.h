@@ -62,6 +62,7 @@ struct ViewSettings {
   float budget = 0.0f;        // ms; 0 = the display's frame interval
   InsideView inside = InsideView::Off;
   FacesChannel facesChannel = FacesChannel::Colour;
+  int facesProbe = 1;  // the frame's Nth probe, for the faces view and the face-use legend
   bool operator==(const ViewSettings&) const = default;
 };
 const std::vector<SettingField<ViewSettings>>& viewFields();

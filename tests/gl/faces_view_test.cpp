@@ -10,6 +10,7 @@
 #include "gfx/cube_readback.h"
 #include "gfx/offscreen_target.h"
 #include "gl_fixture.h"
+#include "platform/native/model_paths.h"
 
 namespace reflect {
 namespace {
@@ -46,6 +47,40 @@ TEST(FacesView, TheSquaresAreTheProbesFacesAndTheMarksFollowTheFrames) {
   ASSERT_EQ(demo->lastPlan().facesCaptured(), 0);
   for (const FaceMark& mark : demo->insideViews().ages().marks(reflector)) {
     EXPECT_EQ(faceStatus(mark), "STALE 1 FRAME");
+  }
+}
+
+TEST(FacesView, TheProbeSettingPicksWhichOfTheFramesProbesIsShown) {
+  Result<Scene> scene = loadNamedScene("two-mirrors");
+  ASSERT_TRUE(scene) << scene.error();
+  auto demo = testing::makeCapturingDemo(scene.take());
+  auto screen = OffscreenTarget::create(64, 64);
+  ASSERT_TRUE(screen);
+  demo->frame(0.0, screen.value().framebuffer(), 64, 64, true);
+  const FramePlan& plan = demo->lastPlan();
+  ASSERT_EQ(plan.probes.size(), 2u);
+  EXPECT_EQ(shownProbe(plan, 1), &plan.probes[0]);
+  EXPECT_EQ(shownProbe(plan, 2), &plan.probes[1]);
+  EXPECT_EQ(shownProbe(plan, 9), &plan.probes[1]);  // past the last: the last
+  EXPECT_EQ(shownProbe(FramePlan{}, 1), nullptr);
+  // The second probe's cross holds the second probe's faces, which are not the first's.
+  const Result<RgbaImage> view =
+      composeFacesView(*demo->renderer(), demo->scene(), plan, demo->insideViews().ages(),
+                       FacesChannel::Colour, 0, 0, 2);
+  ASSERT_TRUE(view) << view.error();
+  const CubeCaptureTarget* second = demo->renderer()->probeTarget(plan.probes[1].reflector);
+  const CubeCaptureTarget* first = demo->renderer()->probeTarget(plan.probes[0].reflector);
+  ASSERT_TRUE(second && first);
+  const Result<CubeFaces> faces = readCubeFaces(*second, FacesChannel::Colour);
+  const Result<CubeFaces> others = readCubeFaces(*first, FacesChannel::Colour);
+  ASSERT_TRUE(faces && others);
+  ASSERT_NE(faces.value()[0].pixels, others.value()[0].pixels);
+  const CrossGeometry g = crossGeometry(second->faceSize());
+  for (int y = 0; y < second->faceSize(); ++y) {
+    ASSERT_EQ(std::memcmp(view.value().at(g.squareOrigin[0][0], g.squareOrigin[0][1] + y),
+                          faces.value()[0].at(0, y), static_cast<size_t>(second->faceSize()) * 4),
+              0)
+        << "row " << y;
   }
 }
 

@@ -193,7 +193,9 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
                            "face serves"),
               w, "FILE", "a PNG file name");
   for (const auto& field : viewFields()) {
-    if (field.info.name == "facesChannel") addSetting(c, w, field, o.view);
+    if (field.info.name == "facesChannel" || field.info.name == "facesProbe") {
+      addSetting(c, w, field, o.view);
+    }
   }
   defineScene(c, o, w);
   addSettingOptions(c, o, w);

@@ -119,8 +119,9 @@ std::string writeReference(Demo& demo, const CliOptions& o) {
 
 // The faces view of the frame just drawn (--faces): the same image the page shows.
 std::string writeFacesView(const Demo& demo, const CliOptions& o) {
-  Result<RgbaImage> view = composeFacesView(*demo.renderer(), demo.scene(), demo.lastPlan(),
-                                            demo.insideViews().ages(), o.view.facesChannel);
+  Result<RgbaImage> view =
+      composeFacesView(*demo.renderer(), demo.scene(), demo.lastPlan(), demo.insideViews().ages(),
+                       o.view.facesChannel, 0, 0, o.view.facesProbe);
   if (!view) return "--faces: " + view.error();
   std::string error = writePng(view.value(), o.facesOut);
   if (!error.empty()) return error;
@@ -135,8 +136,8 @@ std::string writeFaceUseView(Demo& demo, const CliOptions& o, const RgbaImage& f
   const auto lookups = [&demo](unsigned target, int w, int h) {
     demo.renderLookupDirections(target, w, h);
   };
-  Result<RgbaImage> view =
-      composeFaceUseView(demo.scene(), demo.lastPlan(), demo.insideViews().ages(), lookups, frame);
+  Result<RgbaImage> view = composeFaceUseView(
+      demo.scene(), demo.lastPlan(), demo.insideViews().ages(), lookups, frame, o.view.facesProbe);
   if (!view) return "--face-use: " + view.error();
   std::string error = writePng(view.value(), o.faceUseOut);
   if (!error.empty()) return error;
