@@ -30,7 +30,8 @@ uniform samplerCube u_environment;
 uniform samplerCube u_environment2;  // the probe's second layer (depth_search.glsl, 2 layers)
 uniform vec3 u_probeCentre;
 uniform float u_distanceUnit;  // the capture's near plane (depths are stored in its units)
-uniform int u_outputDirection; // 1: write the looked-up direction instead (for measuring)
+uniform int u_outputDirection; // 1: write the looked-up direction instead (for measuring);
+                               // 2: write `measured` as it is (the search's landing point)
 
 
 #include "capture_output.glsl"
@@ -59,6 +60,7 @@ void main() {
                    reflected);
 #endif
   if (u_outputDirection == 1) colour = normalize(measured);
+  if (u_outputDirection == 2) colour = measured;
   writeOutputs(colour, v_worldPosition, N, false);
 #if SEARCH == SEARCH_EXACT && CAPTURE_OUTPUT == 0
   if (u_exactMark == 1) fragColour.a = 0.0;

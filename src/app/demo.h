@@ -147,7 +147,10 @@ class Demo {
   std::string setAccuracySettings(const AccuracySettings& settings);
   // Renders the main view with mirrors and glass writing the direction they look up (RGB) into
   // `framebuffer` (a float target), for the accuracy measurement. Time does not advance.
-  void renderLookupDirections(unsigned framebuffer, int width, int height);
+  // `output` (SceneRenderer::kOutput...): what they write; pick a pixel reads the search's landing
+  // point (kOutputSearchPoint) and the frame's own colours (kOutputColour) this way.
+  void renderLookupDirections(unsigned framebuffer, int width, int height,
+                              int output = SceneRenderer::kOutputDirection);
   // Where each scene object (in the scene's order) lands on a width x height view now: its
   // bounding box projected by the camera (see screenBox), in fractions of the view.
   std::vector<ScreenBox> screenBoxes(int width, int height) const;

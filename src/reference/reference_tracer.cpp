@@ -5,7 +5,7 @@
 
 #include "core/cube_sampling.h"
 #include "core/trace_limits.h"
-#include "reference/reference_shading.h"
+#include "core/reference_shading.h"
 
 namespace reflect {
 namespace {
