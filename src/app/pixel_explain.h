@@ -48,7 +48,7 @@ struct PixelExplanation {
   glm::vec3 normal{0.0f};     // the interpolated vertex normal, unit
   glm::vec3 viewRay{0.0f};    // from the eye to the surface point, unit
   glm::vec3 reflected{0.0f};  // reflect(view ray, normal): the mirror's ray, glass's reflection
-  GlassPath glass;            // glass: the refracted ray entering and leaving
+  GlassRoute glass;           // glass: the refracted ray entering and leaving
   TraceRay lookupRay;         // what the lookups stand for: the mirror's ray, glass's leaving one
 
   glm::vec3 probeCentre{0.0f};

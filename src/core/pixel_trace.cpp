@@ -74,9 +74,9 @@ float selfEpsilon(const SceneBvh& scene, int object) {
   return std::max(1e-5f * glm::length(hi - lo), 1e-7f);
 }
 
-GlassPath followGlass(const SceneBvh& scene, const SurfacePoint& entry, const glm::vec3& incoming,
-                      float ior, bool twoSurfaces) {
-  GlassPath path;
+GlassRoute followGlass(const SceneBvh& scene, const SurfacePoint& entry, const glm::vec3& incoming,
+                       float ior, bool twoSurfaces) {
+  GlassRoute path;
   const glm::vec3 refracted = glm::refract(incoming, entry.normal, 1.0f / ior);
   path.exitPoint = entry.position;
   if (glm::dot(refracted, refracted) == 0.0f) {

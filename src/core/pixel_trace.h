@@ -55,7 +55,7 @@ float selfEpsilon(const SceneBvh& scene, int object);
 // ray `incoming` (unit): refracted in (air to n = ior), and, with `twoSurfaces`, on to its far
 // side and out (n to air), reflected inside where that is total (at most
 // kMaxInternalReflections times), as the reference's crossGlass does but on the mesh's own tree.
-struct GlassPath {
+struct GlassRoute {
   bool totalAtEntry = false;  // the view ray is reflected, not refracted (no path inside)
   glm::vec3 inside{0.0f};     // the refracted direction entering (unit)
   bool exited = false;        // it left the object (else `leaving` is its last direction)
@@ -63,8 +63,8 @@ struct GlassPath {
   glm::vec3 leaving{0.0f};    // the direction it leaves along (unit)
   int internalReflections = 0;
 };
-GlassPath followGlass(const SceneBvh& scene, const SurfacePoint& entry, const glm::vec3& incoming,
-                      float ior, bool twoSurfaces);
+GlassRoute followGlass(const SceneBvh& scene, const SurfacePoint& entry, const glm::vec3& incoming,
+                       float ior, bool twoSurfaces);
 
 // The angle between two directions (any length, not zero), in degrees.
 double angleDegrees(const glm::vec3& a, const glm::vec3& b);
