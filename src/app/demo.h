@@ -17,6 +17,7 @@
 #include "app/frame_stats.h"
 #include "app/inside_views.h"
 #include "app/mesh_library.h"
+#include "app/pick_overlay.h"
 #include "core/accuracy_settings.h"
 #include "core/animation_clock.h"
 #include "core/bvh.h"
@@ -168,6 +169,10 @@ class Demo {
     return setShowError(view.showError);
   }
   bool showError() const { return showError_; }
+  // Pick a pixel: rays drawn as 3D lines over each frame (app/pixel_explain.h's pickSegments);
+  // none turns them off.
+  void showPickedRays(std::vector<RaySegment> segments) { pick_.show(std::move(segments)); }
+  const PickOverlay& pickOverlay() const { return pick_; }
   // Mesh `name`'s tree for the exact mode (built when the mesh loaded), or null.
   const MeshBvh* meshBvh(const std::string& name) const { return meshes_.builtBvh(name); }
   // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;
@@ -210,6 +215,7 @@ class Demo {
   bool showError_ = false;
   DemoGraphics graphics_;
   InsideViews inside_;  // the teaching views (after graphics_: their GL objects go first)
+  PickOverlay pick_;    // pick a pixel's rays (after graphics_, as inside_)
   // The frame's state: the planner and what the last frame planned and measured.
   FramePlanner planner_;
   bool firstFrameDrawn_ = false;

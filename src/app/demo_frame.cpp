@@ -176,6 +176,10 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   if (errorView) {
     errorPass.render(scene_, objects, captureContext(), view, draws, framebuffer, stats_);
   }
+  if (pick_.on()) {
+    const std::string error = pick_.draw(view.projection * view.view, framebuffer, width, height);
+    if (!error.empty() && stats_.error.empty()) stats_.error = "pick a pixel: " + error;
+  }
   lastPlan_ = plan;
   inside_.afterFrame(plan);
   if (inside_.on()) inside_.draw(*renderer, scene_, plan, framebuffer, width, height);

@@ -231,6 +231,39 @@ Result<PixelExplanation> explainPixel(Demo& demo, int x, int y, int width, int h
   return e;
 }
 
+std::vector<RaySegment> pickSegments(const PixelExplanation& e) {
+  std::vector<RaySegment> segments;
+  if (!e.message.empty()) return segments;
+  constexpr float kOpenLength = 5.0f;  // a ray with no end point
+  const glm::vec3 white(1.0f), yellow(1.0f, 0.9f, 0.1f), red(1.0f, 0.15f, 0.15f);
+  const glm::vec3 green(0.1f, 1.0f, 0.3f), blue(0.2f, 0.5f, 1.0f);
+  const auto cross = [&segments](const glm::vec3& p, const glm::vec3& colour) {
+    const float arm = 0.08f;
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::vec3 d(0.0f);
+      d[axis] = arm;
+      segments.push_back({p - d, p + d, colour});
+    }
+  };
+  const bool exactEnds = e.exactObject >= 0 && !e.exactBeyondFar;
+  const glm::vec3 exactEnd =
+      exactEnds ? e.exactHit : e.lookupRay.origin + kOpenLength * e.lookupRay.direction;
+  const float lookupLength = glm::length(exactEnd - e.probeCentre);
+  segments.push_back({e.eye, e.surfacePoint, white});
+  if (e.material == Material::Glass && !e.glass.totalAtEntry) {
+    segments.push_back({e.surfacePoint, e.glass.exitPoint, yellow});
+  }
+  segments.push_back({e.lookupRay.origin, exactEnd, blue});
+  segments.push_back({e.probeCentre, e.probeCentre + lookupLength * e.courseDirection, red});
+  const glm::vec3 searchEnd =
+      e.searchAtInfinity ? e.probeCentre + lookupLength * e.searchDirection : e.searchPoint;
+  segments.push_back({e.probeCentre, searchEnd, green});
+  cross(e.probeCentre, red);
+  cross(searchEnd, green);
+  cross(exactEnd, blue);
+  return segments;
+}
+
 glm::ivec3 colourBytes(const glm::vec3& colour) {
   return glm::ivec3(glm::round(glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f)) * 255.0f));
 }

@@ -84,6 +84,14 @@ Result<PixelExplanation> explainPixel(Demo& demo, int x, int y, int width, int h
 // 0-255 RGB and its difference from the exact colour; or the message.
 std::vector<std::string> explanationLines(const PixelExplanation& e);
 
+// The explanation as 3D lines for the page (Demo::showPickedRays), each in its colour: the view
+// ray white; glass's refracted ray inside yellow; the reflected (glass: leaving) ray blue, from
+// the surface to its exact hit; the course's lookup red and the search's green, both from the
+// probe centre; a small cross at the probe centre (red), the search's point (green) and the exact
+// hit (blue). A lookup or ray with no end point (at infinity, to the sky) is drawn 5 units long.
+// None for a pixel with nothing to explain.
+std::vector<RaySegment> pickSegments(const PixelExplanation& e);
+
 // A colour 0..1 as 0..255 (clamped, rounded): how the lines and the page show it.
 glm::ivec3 colourBytes(const glm::vec3& colour);
 
