@@ -26,9 +26,14 @@ json bytes(const glm::vec3& colour) {
 // The numbers of an explanation (in the units explanationLines prints them: points in world
 // units, angles in degrees, colours 0-255), and its lines.
 json explanationJson(const reflect::PixelExplanation& e) {
-  json out = {{"x", e.x},           {"y", e.y},           {"width", e.width},
-              {"height", e.height}, {"seconds", e.seconds}, {"message", e.message},
-              {"outside", e.outside}, {"object", e.object}};
+  json out = {{"x", e.x},
+              {"y", e.y},
+              {"width", e.width},
+              {"height", e.height},
+              {"seconds", e.seconds},
+              {"message", e.message},
+              {"outside", e.outside},
+              {"object", e.object}};
   out["lines"] = reflect::explanationLines(e);
   if (!e.message.empty()) return out;
   out.update({{"mesh", e.mesh},
@@ -59,8 +64,10 @@ json explanationJson(const reflect::PixelExplanation& e) {
               {"frameColour", bytes(e.frameColour)},
               {"exactPixelColour", bytes(e.exactPixelColour)}});
   if (e.material == reflect::Material::Glass) {
-    out["glass"] = {{"totalAtEntry", e.glass.totalAtEntry}, {"inside", vec(e.glass.inside)},
-                    {"exited", e.glass.exited},             {"exitPoint", vec(e.glass.exitPoint)},
+    out["glass"] = {{"totalAtEntry", e.glass.totalAtEntry},
+                    {"inside", vec(e.glass.inside)},
+                    {"exited", e.glass.exited},
+                    {"exitPoint", vec(e.glass.exitPoint)},
                     {"leaving", vec(e.glass.leaving)}};
   }
   return out;
