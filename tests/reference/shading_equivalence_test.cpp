@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "../gl/gl_fixture.h"
+#include "core/reference_shading.h"
 #include "gfx/gl_handle.h"
 #include "gfx/offscreen_target.h"
 #include "gfx/shader_library.h"
 #include "gfx/shader_program.h"
-#include "core/reference_shading.h"
 
 namespace reflect {
 namespace {
