@@ -32,7 +32,8 @@ uniform vec3 u_probeCentre;
 uniform float u_distanceUnit;  // the capture's near plane (depths are stored in its units)
 uniform int u_outputDirection; // 1: write the looked-up direction instead (for measuring), its
                                // alpha saying whose: 2 a cube lookup, 3 a traced ray
-                               // (core/face_use.h kLookupMark*: the face-use view reads them)
+                               // (core/face_use.h kLookupMark*: the face-use view reads them);
+                               // 2: write `measured` as it is (the search's landing point)
 
 
 #include "capture_output.glsl"
@@ -61,6 +62,7 @@ void main() {
                    reflected);
 #endif
   if (u_outputDirection == 1) colour = normalize(measured);
+  if (u_outputDirection == 2) colour = measured;
   writeOutputs(colour, v_worldPosition, N, false);
 #if SEARCH == SEARCH_EXACT && CAPTURE_OUTPUT == 0
   if (u_exactMark == 1) fragColour.a = 0.0;

@@ -31,7 +31,7 @@ MUTATIONS = [
      "  return Blend(baseWeight * colour, 0.9 * reflectionWeight);",
      "MatchesGolden|ExactMode|AccuracyFloors|ShadingEquivalence",
      "the course's mix, 0.78 -> 0.70 (every program's: the traced default and the cube-map lookup)"),
-    ("mix-weight-reference", "src/reference/reference_shading.cpp",
+    ("mix-weight-reference", "src/core/reference_shading.cpp",
      "  return Blend{baseWeight * colour, reflectionWeight};",
      "  return Blend{baseWeight * colour, 0.9f * reflectionWeight};",
      "ShadingEquivalence|AccuracyTargets|AccuracyFloors|Reference", "the course's mix in the reference"),

@@ -22,6 +22,7 @@ import { sceneTitles } from './scene_loader.js';
 import { Session } from './session.js';
 import { Progress, Sparkline, StatsLine } from './stats.js';
 import { testApi } from './test_api.js';
+import { PickMode } from './pick.js';
 import { parseQuery } from './url_state.js';
 import { createBridge } from './wasm_bridge.js';
 
@@ -86,6 +87,7 @@ async function start() {
   document.getElementById('bench-close').onclick = () => { document.getElementById('bench-box').hidden = true; };
 
   const help = helpOverlay();
+  const pick = new PickMode(bridge, canvas, () => loop.changed());
   const camera = (change) => session.camera(change);  // a change: the loop draws
   // One teaching view on, or the picture back when it is the one already on.
   const toggleInside = (view) => session.setView({ inside: bridge.view().inside === view ? 'off' : view });
@@ -103,6 +105,8 @@ async function start() {
     toggleFaceUse: () => toggleInside('faceuse'),
     toggleHelp: () => help.toggle(),
     closeHelp: () => help.close(),
+    togglePick: () => pick.toggle(),
+    click: (x, y) => pick.click(x, y),
   });
   attachDrop(session);
 
@@ -135,7 +139,7 @@ async function start() {
   Object.assign(window.demo, testApi({
     session, addressBar, sparkline, progress, fps: () => statsLine.fps, panel: () => panel,
     readPixels: () => readPixels(canvas), screenshot: () => screenshot(session, canvas), bench,
-    framesDrawn: () => loop.framesDrawn, drawingIdle: () => loop.idle, autoPick,
+    framesDrawn: () => loop.framesDrawn, drawingIdle: () => loop.idle, autoPick, pick,
   }));
   resolveReady();
   if (link.bench) bench().catch(() => {});

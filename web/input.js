@@ -5,7 +5,7 @@
 //
 // actions: drag(dx, dy) in CSS pixels, move(steps) along the view, strafe(steps) to the right,
 // rise(steps) up, pan(rightSteps, upSteps) both at once, reset(), togglePause(), toggleHelp(),
-// closeHelp(). The steps' length and directions are the C++ camera's (LookCamera: move, strafe,
+// closeHelp(), togglePick(), click(x, y) (CSS pixels from the canvas's top-left corner). The steps' length and directions are the C++ camera's (LookCamera: move, strafe,
 // rise); this module only turns events into steps.
 
 // Typing in a control moves nothing; Space and Enter on a focused button press the button.
@@ -27,6 +27,10 @@ export const PAN_PIXELS_PER_STEP = 10;
 
 export function attachInput(canvas, actions) {
   const pointers = new Map();  // pointerId -> { x, y }
+  // A press that stays within kClickPixels of where it began is a click (actions.click: pick a
+  // pixel), besides the drag it also is.
+  const kClickPixels = 4;
+  let press = null;  // the one pointer down: { id, x, y } where it began, or null
   let pinch = null;  // with two pointers down: { distance, x, y } (the midpoint) when last seen
   const twoFingers = () => {
     const [a, b] = [...pointers.values()];
@@ -38,6 +42,7 @@ export function attachInput(canvas, actions) {
     canvas.setPointerCapture(e.pointerId);
     canvas.focus();
     pinch = pointers.size === 2 ? twoFingers() : null;
+    press = pointers.size === 1 ? { id: e.pointerId, x: e.clientX, y: e.clientY } : null;
   });
   canvas.addEventListener('pointermove', (e) => {
     const p = pointers.get(e.pointerId);
@@ -61,6 +66,12 @@ export function attachInput(canvas, actions) {
   });
   const end = (e) => {
     if (!pointers.delete(e.pointerId)) return;
+    if (e.type === 'pointerup' && press?.id === e.pointerId &&
+        Math.hypot(e.clientX - press.x, e.clientY - press.y) < kClickPixels) {
+      const box = canvas.getBoundingClientRect();
+      actions.click?.(e.clientX - box.left, e.clientY - box.top);
+    }
+    press = null;
     pinch = pointers.size === 2 ? twoFingers() : null;
   };
   canvas.addEventListener('pointerup', end);
@@ -86,6 +97,7 @@ export function attachInput(canvas, actions) {
     else if (key === 'r') actions.reset();
     else if (key === 'f') actions.toggleFaces();
     else if (key === 'u') actions.toggleFaceUse();
+    else if (key === 'p') actions.togglePick();
     else if (key === ' ') actions.togglePause();
     else if (key === '?' || key === 'h') actions.toggleHelp();
     else if (key === 'escape') { if (!actions.closeHelp()) return; }

@@ -20,7 +20,7 @@ export function inputKinds(win = window) {
 }
 
 export const HINTS = {
-  keys: 'drag: look · W/A/S/D, Q/E, wheel: move · R: reset · Space: pause · ?: help · ' +
+  keys: 'drag: look · W/A/S/D, Q/E, wheel: move · R: reset · Space: pause · P: pick a pixel · ?: help · ' +
         'drop .obj files to replace models or add figures',
   touch: 'touch: drag to look · pinch to move · two-finger drag to slide · Controls: more',
 };

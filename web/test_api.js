@@ -4,7 +4,7 @@ import { filesFromList, handleFiles } from './drop.js';
 import { messageHistory } from './messages.js';
 
 // page: { session, addressBar, canvas, readPixels, screenshot, bench, fps, sparkline, progress, panel,
-// framesDrawn, idle, autoPick }
+// framesDrawn, idle, autoPick, pick }
 export function testApi(page) {
   const { session, addressBar } = page;
   const { bridge } = session;
@@ -89,5 +89,11 @@ export function testApi(page) {
     // [{ name, accuracy, frameMs, psnrDb }] }), and the last such result (or null).
     runAutoPick: () => page.autoPick.run(),
     autoPick: () => page.autoPick.last,
+    // Pick a pixel: the mode (P) on or off; explainPixel(x, y): what a click on drawing-buffer
+    // pixel (x, y) shows (rf_explain_pixel's reply); the readout's text; the last explanation.
+    setPick: (on) => page.pick.toggle(on),
+    explainPixel: (x, y) => page.pick.explain(x, y),
+    pickReadout: () => page.pick.readout(),
+    lastPick: () => page.pick.last,
   };
 }

@@ -155,6 +155,10 @@ export async function createBridge(canvas) {
     heapBytes: () => Module.HEAPU8.length,
     // What that memory is made of: malloc's use, the stack's size and high water (rf_memory_json).
     memory: () => call('rf_memory_json'),
+    // Pick a pixel: the explanation of drawing-buffer pixel { x, y } of the frame on the canvas
+    // (its numbers and `lines`, as `reflect explain` prints them; or { error }), its rays drawn
+    // over the next frames; { clear: true } hides them.
+    explainPixel: (request) => call('rf_explain_pixel', request),
     // { min: [x, y, z], max } of mesh `name`, or null.
     meshBounds: (name) => {
       const bounds = call('rf_mesh_bounds_json', { name });

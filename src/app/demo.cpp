@@ -147,12 +147,14 @@ std::string Demo::setAccuracySettings(const AccuracySettings& settings) {
 void Demo::releaseGraphics() {
   graphics_.release(meshes_);
   inside_.release();
+  pick_.release();
   planner_.invalidate();
 }
 
 void Demo::loseGraphics() {
   graphics_.lose(meshes_);
   inside_.abandon();
+  pick_.abandon();
   planner_.invalidate();
 }
 

@@ -17,6 +17,7 @@
 #include "app/frame_stats.h"
 #include "app/inside_views.h"
 #include "app/mesh_library.h"
+#include "app/pick_overlay.h"
 #include "core/accuracy_settings.h"
 #include "core/animation_clock.h"
 #include "core/bvh.h"
@@ -147,7 +148,10 @@ class Demo {
   std::string setAccuracySettings(const AccuracySettings& settings);
   // Renders the main view with mirrors and glass writing the direction they look up (RGB) into
   // `framebuffer` (a float target), for the accuracy measurement. Time does not advance.
-  void renderLookupDirections(unsigned framebuffer, int width, int height);
+  // `output` (SceneRenderer::kOutput...): what they write; pick a pixel reads the search's landing
+  // point (kOutputSearchPoint) and the frame's own colours (kOutputColour) this way.
+  void renderLookupDirections(unsigned framebuffer, int width, int height,
+                              int output = SceneRenderer::kOutputDirection);
   // Where each scene object (in the scene's order) lands on a width x height view now: its
   // bounding box projected by the camera (see screenBox), in fractions of the view.
   std::vector<ScreenBox> screenBoxes(int width, int height) const;
@@ -166,6 +170,10 @@ class Demo {
     return setShowError(view.showError);
   }
   bool showError() const { return showError_; }
+  // Pick a pixel: rays drawn as 3D lines over each frame (app/pixel_explain.h's pickSegments);
+  // none turns them off.
+  void showPickedRays(std::vector<RaySegment> segments) { pick_.show(std::move(segments)); }
+  const PickOverlay& pickOverlay() const { return pick_; }
   // Mesh `name`'s tree for the exact mode (built when the mesh loaded), or null.
   const MeshBvh* meshBvh(const std::string& name) const { return meshes_.builtBvh(name); }
   // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;
@@ -208,6 +216,7 @@ class Demo {
   bool showError_ = false;
   DemoGraphics graphics_;
   InsideViews inside_;  // the teaching views (after graphics_: their GL objects go first)
+  PickOverlay pick_;    // pick a pixel's rays (after graphics_, as inside_)
   // The frame's state: the planner and what the last frame planned and measured.
   FramePlanner planner_;
   bool firstFrameDrawn_ = false;

@@ -79,7 +79,7 @@ std::vector<ScreenBox> Demo::screenBoxes(int width, int height) const {
   return boxes;
 }
 
-void Demo::renderLookupDirections(unsigned framebuffer, int width, int height) {
+void Demo::renderLookupDirections(unsigned framebuffer, int width, int height, int output) {
   SceneRenderer* renderer = graphics_.renderer();
   if (!renderer || width < 1 || height < 1) return;
   const std::vector<PlannedObject> objects = plannedObjects(clock_.seconds());
@@ -91,7 +91,7 @@ void Demo::renderLookupDirections(unsigned framebuffer, int width, int height) {
   });
   plan.traced = lastTraced_;
   renderer->drawMain(scene_, clock_.seconds(), plan, viewParams(width, height),
-                     viewDraws(objects, width, height), framebuffer, width, height, true);
+                     viewDraws(objects, width, height), framebuffer, width, height, output);
 }
 
 void Demo::startStats(bool waitForGpu, int width, int height) {
@@ -175,6 +175,10 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   }
   if (errorView) {
     errorPass.render(scene_, objects, captureContext(), view, draws, framebuffer, stats_);
+  }
+  if (pick_.on()) {
+    const std::string error = pick_.draw(view.projection * view.view, framebuffer, width, height);
+    if (!error.empty() && stats_.error.empty()) stats_.error = "pick a pixel: " + error;
   }
   lastPlan_ = plan;
   inside_.afterFrame(plan);

@@ -1,6 +1,6 @@
 // Schlick's F0 from a material's index of refraction, in one place for every C++ user: the
 // renderer hands it to environment.frag (u_fresnelF0), and the reference shades with it
-// (reference/reference_shading.h). shaders/shading.glsl's fresnelF0() is the same expression,
+// (core/reference_shading.h). shaders/shading.glsl's fresnelF0() is the same expression,
 // for the exact tracer, which reads each object's index from its scene texture.
 #pragma once
 

@@ -125,7 +125,7 @@ const CubeCaptureTarget* SceneRenderer::probeTarget(int owner) const {
 
 void SceneRenderer::use(const Program& p, const Scene& scene, const glm::mat4& viewProj,
                         const glm::vec3& viewPosition, const CaptureState& pass,
-                        bool outputDirections) {
+                        int outputDirections) {
   current_ = &p;
   glUseProgram(p.program.id());
   p.capture.set(pass);
@@ -140,7 +140,7 @@ void SceneRenderer::use(const Program& p, const Scene& scene, const glm::mat4& v
       glUniform1f(p.phong.shininess, scene.light.shininess);
       break;
     case Look::Environment:
-      glUniform1i(p.environment.outputDirection, outputDirections ? 1 : 0);
+      glUniform1i(p.environment.outputDirection, outputDirections);
       if (p.key.search == Search::Exact && exact_) exact_->bind(p.program.id());
       break;
     case Look::CubeTextured:
@@ -202,7 +202,7 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
                                     const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
                                     const glm::vec3& viewPosition,
                                     const glm::vec3& environmentViewPosition,
-                                    const CaptureState& pass, bool outputDirections) {
+                                    const CaptureState& pass, int outputDirections) {
   // One program switch per variant present, in the keys' order (Phong first).
   std::vector<std::pair<ProgramKey, const DrawItem*>> keyed;
   keyed.reserve(draws.size());
@@ -337,7 +337,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
 PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const FramePlan& plan,
                                    const ViewParams& camera, const std::vector<DrawItem>& draws,
                                    unsigned framebuffer, int width, int height,
-                                   bool outputDirections) {
+                                   int outputDirections) {
   forgetReplacedGlassMeshes(scene);
   prepareGlassExits(scene, seconds);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);

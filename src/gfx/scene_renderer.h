@@ -63,12 +63,19 @@ class SceneRenderer {
   Result<PassCounts> capture(const Scene& scene, double seconds, const FramePlan& plan,
                              const glm::vec3& lightingEye);
   // `draws`: every object with its level of detail (planViewDraws). Probed objects sample the
-  // cubes of `plan`'s probes (as a capture left them). With `outputDirections`, mirrors and glass
-  // write the direction they look up (unit vector in RGB) instead of a colour: the accuracy
-  // measurement reads it back from a float target.
+  // cubes of `plan`'s probes (as a capture left them). With `outputDirections` (one of the
+  // kOutput values below), mirrors and glass write what they looked up instead of a colour, for
+  // a float target to read back.
   PassCounts drawMain(const Scene& scene, double seconds, const FramePlan& plan,
                       const ViewParams& camera, const std::vector<DrawItem>& draws,
-                      unsigned framebuffer, int width, int height, bool outputDirections = false);
+                      unsigned framebuffer, int width, int height, int outputDirections = 0);
+  // drawMain's outputDirections (environment.frag's u_outputDirection): the colour; the unit
+  // direction looked up along (the accuracy measurement); or the search's own result unnormalised
+  // (pick a pixel): the point it landed on relative to the probe centre, in the capture's
+  // near-plane units, or the ray's direction itself where it searched nothing.
+  static constexpr int kOutputColour = 0;
+  static constexpr int kOutputDirection = 1;
+  static constexpr int kOutputSearchPoint = 2;
 
   // The cube captured for the probe owned by object `owner` (0 before its first capture).
   GLuint probeTexture(int owner) const;
@@ -124,11 +131,11 @@ class SceneRenderer {
   PassCounts drawItems(const Scene& scene, double seconds, const FramePlan& plan,
                        const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
                        const glm::vec3& viewPosition, const glm::vec3& environmentViewPosition,
-                       const CaptureState& pass, bool outputDirections);
+                       const CaptureState& pass, int outputDirections);
   PassCounts drawObject(const Scene& scene, const FramePlan& plan, const DrawItem& item,
                         double seconds);
   void use(const Program& program, const Scene& scene, const glm::mat4& viewProj,
-           const glm::vec3& viewPosition, const CaptureState& pass, bool outputDirections);
+           const glm::vec3& viewPosition, const CaptureState& pass, int outputDirections);
   // Binds object `index`'s environment (its probe's layers, or the sky) for the environment
   // program in use and sets the search's uniforms.
   void bindEnvironment(const Scene& scene, const FramePlan& plan, int index);

@@ -4,8 +4,8 @@
 #include <limits>
 
 #include "core/cube_sampling.h"
+#include "core/reference_shading.h"
 #include "core/trace_limits.h"
-#include "reference/reference_shading.h"
 
 namespace reflect {
 namespace {

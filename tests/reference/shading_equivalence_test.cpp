@@ -1,5 +1,5 @@
 // The shading written twice on purpose, once in GLSL for the GPU (shaders/shading.glsl) and once
-// in C++ for the reference (src/reference/reference_shading.h), held equal: a tiny program that
+// in C++ for the reference (src/core/reference_shading.h), held equal: a tiny program that
 // includes shading.glsl runs each of its functions on the GPU for a set of sample inputs (normals,
 // view directions from head-on to grazing and from behind, colours, what the rays see, indices
 // of refraction from below 1 to diamond's, Fresnel on and off, glass past its critical angle)
@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "../gl/gl_fixture.h"
+#include "core/reference_shading.h"
 #include "gfx/gl_handle.h"
 #include "gfx/offscreen_target.h"
 #include "gfx/shader_library.h"
 #include "gfx/shader_program.h"
-#include "reference/reference_shading.h"
 
 namespace reflect {
 namespace {

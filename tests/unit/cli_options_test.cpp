@@ -64,6 +64,32 @@ TEST(CliOptions, ParsesRender) {
   EXPECT_FALSE(mustParse({"render"}).eye.has_value());  // the scene's own
 }
 
+// explain takes render's frame options (scene, time, camera, size, settings) and --pixel X,Y.
+TEST(CliOptions, ParsesExplain) {
+  const CliOptions o =
+      mustParse({"explain", "--pixel", "120,45", "--size", "320x240", "--time", "2", "--scene",
+                 "skybox", "--yaw", "10", "--eye", "0,1,6", "--search", "linear"});
+  EXPECT_EQ(o.command, "explain");
+  EXPECT_EQ(o.pixel, glm::ivec2(120, 45));
+  EXPECT_EQ(o.width, 320);
+  EXPECT_EQ(o.height, 240);
+  EXPECT_DOUBLE_EQ(o.time, 2.0);
+  EXPECT_EQ(o.scene, "skybox");
+  EXPECT_EQ(o.yawDeg, 10.0f);
+  EXPECT_EQ(o.eye, glm::vec3(0.0f, 1.0f, 6.0f));
+  EXPECT_EQ(o.accuracy.search, Search::Linear);
+  EXPECT_EQ(mustParse({"explain", "--pixel", "0,0"}).pixel, glm::ivec2(0, 0));
+  EXPECT_EQ(errorOf({"explain", "--pixel", "3"}),
+            "--pixel: 3 is not a pixel X,Y (two whole numbers from 0)");
+  EXPECT_EQ(errorOf({"explain", "--pixel", "-1,4"}),
+            "--pixel: -1,4 is not a pixel X,Y (two whole numbers from 0)");
+  EXPECT_EQ(errorOf({"explain", "--pixel", "1.5,4"}),
+            "--pixel: 1.5,4 is not a pixel X,Y (two whole numbers from 0)");
+  EXPECT_NE(errorOf({"explain"}).find("--pixel"), std::string::npos) << errorOf({"explain"});
+  EXPECT_EQ(mustParse({"help", "explain"}).helpTopic, "explain");
+  EXPECT_NE(cliHelp("explain").find("--pixel X,Y"), std::string::npos) << cliHelp("explain");
+}
+
 TEST(CliOptions, ParsesTheFacesView) {
   const CliOptions o = mustParse({"render", "--faces", "cross.png", "--faces-channel", "distance"});
   EXPECT_EQ(o.facesOut, "cross.png");

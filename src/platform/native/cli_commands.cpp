@@ -206,6 +206,27 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
   });
 }
 
+// Everything render takes for the frame (scene, time, camera, size, settings) and the pixel.
+void defineExplain(CLI::App& c, CliOptions& o, CliWording& w) {
+  auto pixel = [&o](const std::string& text) { o.pixel = *parsePixelPosition(text); };
+  valueOption(
+      c.add_option_function<std::string>(
+          "--pixel", pixel, "the pixel to explain, X,Y from the frame's top-left corner (0,0)"),
+      w, "X,Y", "a pixel X,Y")
+      ->required()
+      ->check(pixelPosition());
+  valueOption(c.add_option("--time", o.time, "scene time in seconds (default 0)"), w, "SECONDS",
+              "a number of seconds")
+      ->check(decimalNumber("seconds"));
+  defineScene(c, o, w);
+  addSettingOptions(c, o, w);
+  c.callback([&c, &o] {
+    o.command = "explain";
+    applyPreset(c, o);
+    o.policySet = c.count("--policy") > 0;
+  });
+}
+
 void defineBench(CLI::App& c, CliOptions& o, CliWording& w) {
   defineModes(c, o, w);
   defineCounts(c, o, w);
@@ -221,9 +242,9 @@ void defineBench(CLI::App& c, CliOptions& o, CliWording& w) {
 }
 
 void defineHelp(CLI::App& c, CliOptions& o) {
-  c.add_option("COMMAND", o.helpTopic, "render or bench: that command's options alone")
+  c.add_option("COMMAND", o.helpTopic, "render, explain or bench: that command's options alone")
       ->type_name("")
-      ->check(commandName({"render", "bench"}));
+      ->check(commandName({"render", "explain", "bench"}));
   c.callback([&o] { o.command = "help"; });
 }
 

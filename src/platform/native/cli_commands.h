@@ -10,6 +10,7 @@
 namespace reflect {
 
 void defineRender(CLI::App& render, CliOptions& options, CliWording& wording);
+void defineExplain(CLI::App& explain, CliOptions& options, CliWording& wording);
 void defineBench(CLI::App& bench, CliOptions& options, CliWording& wording);
 void defineHelp(CLI::App& help, CliOptions& options);
 

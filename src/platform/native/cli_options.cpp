@@ -38,6 +38,12 @@ std::unique_ptr<CLI::App> makeCli(CliOptions& options, CliWording& wording) {
                           "render one frame of a scene to a PNG, headless "
                           "(EGL, GL ES 3)"),
                options, wording);
+  defineExplain(addCommand(*app, "explain",
+                           "render one frame as render does, then explain one mirror or glass "
+                           "pixel of it: the view ray, the reflected or refracted ray, the probe "
+                           "centre, the course's lookup, where the search lands and the exact "
+                           "hit, each lookup's angular error and colour against the exact"),
+                options, wording);
   defineBench(
       addCommand(*app, "bench",
                  "time the capture update policies on the scene, interleaved frame by frame, and "

@@ -21,7 +21,7 @@
 namespace reflect {
 
 struct CliOptions {
-  std::string command;    // "render", "bench" or "help"
+  std::string command;    // "render", "explain", "bench" or "help"
   std::string helpTopic;  // help: "" (every command), "render" or "bench"
   int width = 800;
   int height = 800;
@@ -32,6 +32,7 @@ struct CliOptions {
   std::string errorViewOut;       // render: also write the error view (heat map) of the frame
   std::string facesOut;           // render: also write the faces view (view.facesChannel)
   std::string faceUseOut;         // render: also write the face-use view
+  glm::ivec2 pixel{0};            // explain: the pixel (x, y), (0, 0) the top-left one
   std::string assets;             // a folder with the course's models, by their file names
   std::string scene = "ex12-2";   // a shipped scene's name, or a .json path
   std::string preset;             // --preset: a named preset (core/presets.h), or ""

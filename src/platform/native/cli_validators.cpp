@@ -148,6 +148,27 @@ CLI::Validator frameSize() {
   });
 }
 
+std::optional<glm::ivec2> parsePixelPosition(const std::string& text) {
+  const std::vector<std::string> items = commaItems(text);
+  if (items.size() != 2) return std::nullopt;
+  glm::ivec2 pixel(0);
+  for (int k = 0; k < 2; ++k) {
+    const json value = decimalJson(items[static_cast<size_t>(k)]);
+    if (value.is_null()) return std::nullopt;
+    const double number = value.get<double>();
+    if (number != std::floor(number) || number < 0 || number >= kMaxFrameSide) return std::nullopt;
+    pixel[k] = static_cast<int>(number);
+  }
+  return pixel;
+}
+
+CLI::Validator pixelPosition() {
+  return validator([](std::string& text) {
+    return parsePixelPosition(text) ? std::string()
+                                    : text + " is not a pixel X,Y (two whole numbers from 0)";
+  });
+}
+
 std::optional<glm::vec3> parseThreeNumbers(const std::string& text) {
   const std::vector<std::string> items = commaItems(text);
   if (items.size() != 3) return std::nullopt;

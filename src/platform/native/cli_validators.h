@@ -46,6 +46,8 @@ CLI::Validator frameSize();
 // "640x480" -> {640, 480}; nothing unless it passes frameSize.
 std::optional<glm::ivec2> parseFrameSize(const std::string& text);
 
+CLI::Validator pixelPosition();  // explain --pixel X,Y: two whole numbers, 0 or more
+std::optional<glm::ivec2> parsePixelPosition(const std::string& text);
 CLI::Validator threeNumbers();  // --eye X,Y,Z
 std::optional<glm::vec3> parseThreeNumbers(const std::string& text);
 CLI::Validator numberList();  // --times T1,T2,...

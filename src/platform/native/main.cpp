@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
   auto context = reflect::HeadlessGlContext::create();
   if (!context) return fail(context.error());
   if (o.command == "bench") std::printf("GL: %s\n", context.value()->description().c_str());
-  const std::string error =
-      o.command == "render" ? reflect::runRenderCommand(o) : reflect::runBenchCommand(o);
+  const std::string error = o.command == "render"    ? reflect::runRenderCommand(o)
+                            : o.command == "explain" ? reflect::runExplainCommand(o)
+                                                     : reflect::runBenchCommand(o);
   return error.empty() ? 0 : fail(error);
 }

@@ -10,6 +10,7 @@
 #include "app/face_use_view.h"
 #include "app/faces_view.h"
 #include "app/headless_frames.h"
+#include "app/pixel_explain.h"
 #include "bench/accuracy.h"
 #include "bench/bench_commands.h"
 #include "bench/budget_bench.h"
@@ -186,6 +187,26 @@ std::string runRenderCommand(const CliOptions& o) {
       "ms, the frame %.1f ms\n",
       o.errorViewOut.c_str(), psnr, s.errorPixelsOver32, s.errorReflectorPixels, s.errorMax,
       s.errorViewMs, s.frameMs);
+  return {};
+}
+
+std::string runExplainCommand(const CliOptions& o) {
+  if (o.pixel.x >= o.width || o.pixel.y >= o.height) {
+    return "--pixel: " + std::to_string(o.pixel.x) + "," + std::to_string(o.pixel.y) +
+           " is outside the " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+           " frame (x 0.." + std::to_string(o.width - 1) + ", y 0.." +
+           std::to_string(o.height - 1) + ")";
+  }
+  WarningPrinter warnings;
+  auto demo = makeDemo(o, {}, warnings);
+  if (!demo) return demo.error();
+  auto image = renderFrameAt(*demo.value(), o.time, o.width, o.height);
+  if (!image) return image.error();
+  auto explained = explainPixel(*demo.value(), o.pixel.x, o.pixel.y, o.width, o.height);
+  if (!explained) return explained.error();
+  for (const std::string& line : explanationLines(explained.value())) {
+    std::printf("%s\n", line.c_str());
+  }
   return {};
 }
 

@@ -13,5 +13,8 @@ namespace reflect {
 // once each), and returns "" or the error.
 std::string runRenderCommand(const CliOptions& options);
 std::string runBenchCommand(const CliOptions& options);
+// `explain`: renders the frame as render does (nothing written), then prints the explanation of
+// options.pixel (app/pixel_explain.h); a pixel outside the frame is an error.
+std::string runExplainCommand(const CliOptions& options);
 
 }  // namespace reflect

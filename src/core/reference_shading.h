@@ -1,4 +1,5 @@
-// The shading terms of shaders/shading.glsl in C++, for the reference: each function here is the
+// The shading terms of shaders/shading.glsl in C++, for the reference and for pick a pixel's exact
+// colour (app/pixel_explain.h; here in core so the page has it too): each function here is the
 // GLSL function of the same name, term by term and in the same order, so that the reference and
 // the raster shade what they meet alike (tests/reference/shading_equivalence_test.cpp runs both
 // on the same inputs and holds them equal). A change to one is a change to the other.

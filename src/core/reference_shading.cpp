@@ -1,5 +1,5 @@
 // Each function mirrors shaders/shading.glsl's of the same name (see reference_shading.h).
-#include "reference/reference_shading.h"
+#include "core/reference_shading.h"
 
 #include <algorithm>
 #include <cmath>

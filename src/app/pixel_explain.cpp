@@ -1,0 +1,271 @@
+#include "app/pixel_explain.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/accuracy_settings.h"
+#include "core/cube_sampling.h"
+#include "core/fresnel.h"
+#include "core/reference_shading.h"
+#include "core/settings_schema.h"
+#include "gfx/cube_readback.h"
+#include "gfx/offscreen_target.h"
+
+namespace reflect {
+namespace {
+
+// What the exact ray meets, and the colour the reference would give it.
+struct ExactSight {
+  SurfacePoint met;
+  bool beyondFar = false;
+  bool shaded = true;  // false: it meets a reflector, not traced further here
+  glm::vec3 colour{0.0f};
+};
+
+// The level-0 trees the demo already holds (the exact mode's), or one built here for a mesh that
+// has none yet. The demo's trees are shared without ownership: they outlive this explanation.
+SceneBvh placedObjects(const Demo& demo, double seconds) {
+  return placeScene(
+      demo.scene(), seconds, [&demo](const std::string& name) -> std::shared_ptr<const MeshBvh> {
+        if (const MeshBvh* tree = demo.meshBvh(name)) {
+          return std::shared_ptr<const MeshBvh>(std::shared_ptr<const MeshBvh>(), tree);
+        }
+        const MeshData* mesh = demo.meshLevel(name, 0);
+        if (mesh == nullptr) return nullptr;
+        return std::make_shared<const MeshBvh>(
+            buildMeshBvh(std::shared_ptr<const MeshData>(std::shared_ptr<const MeshData>(), mesh)));
+      });
+}
+
+glm::vec3 background(const Demo& demo, const glm::vec3& direction) {
+  const CubeFaces* sky = demo.skyboxFaces();
+  return sky ? glm::vec3(sampleCubeLinear(*sky, direction)) : demo.scene().clearColour;
+}
+
+// As the reference's radiance(): the first object met, leaving out the reflector itself; past
+// the capture's far plane (a box around the probe centre) nothing was captured, so it is the sky.
+ExactSight exactAlong(const Demo& demo, const SceneBvh& placed, const TraceRay& ray, int reflector,
+                      const glm::vec3& probeCentre) {
+  const Scene& scene = demo.scene();
+  ExactSight sight;
+  sight.met = firstSurface(placed, ray, 0.0f, reflector);
+  if (sight.met.object >= 0) {
+    const glm::vec3 away = glm::abs(sight.met.position - probeCentre);
+    sight.beyondFar = std::max({away.x, away.y, away.z}) > scene.capture.far;
+  }
+  if (sight.met.object < 0 || sight.beyondFar) {
+    sight.colour = background(demo, ray.direction);
+    return sight;
+  }
+  const SceneObject& object = scene.objects[static_cast<size_t>(sight.met.object)];
+  if (object.material != Material::Phong) {
+    sight.shaded = false;
+    return sight;
+  }
+  const PhongLight& light = scene.light;
+  sight.colour = glm::clamp(
+      phongShade(object.colour, sight.met.position, sight.met.normal, light.position,
+                 demo.camera().eye(),
+                 glm::vec4(light.ambient, light.diffuse, light.specular, light.shininess)),
+      glm::vec3(0.0f), glm::vec3(1.0f));
+  return sight;
+}
+
+// Why pixel `e` has no numbers to explain, or "" when it is a probed mirror or glass pixel.
+std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
+  if (e.object < 0) return "the view ray meets nothing there: the pixel shows the background";
+  const SceneObject& object = demo.scene().objects[static_cast<size_t>(e.object)];
+  const std::string what = "object " + std::to_string(e.object + 1) + " (" + object.mesh + ")";
+  if (object.material != Material::Mirror && object.material != Material::Glass) {
+    return what + " is " + materialName(object.material) +
+           ", not a mirror or glass: it looks nothing up";
+  }
+  if (object.environment == Environment::Skybox) {
+    return what +
+           " reflects the static skybox: its lookup is the ray's direction alone, exact "
+           "for a sky infinitely far away; there is no probe to explain";
+  }
+  if (demo.lastPlan().traces(e.object)) {
+    return what +
+           "'s rays were traced exactly this frame (search: exact, or search: planned "
+           "found tracing cheaper): there is no probe lookup to explain";
+  }
+  if (demo.lastPlan().probeOf(e.object) == nullptr) {
+    return what + " has no probe captured this frame";
+  }
+  return {};
+}
+
+// The view ray's surface, the reflected or refracted ray, and the ray the lookups stand for.
+void followRays(const Demo& demo, const SceneBvh& placed, const SurfacePoint& surface,
+                PixelExplanation& e) {
+  const SceneObject& object = demo.scene().objects[static_cast<size_t>(e.object)];
+  e.surfacePoint = surface.position;
+  e.normal = surface.normal;
+  e.viewRay = glm::normalize(surface.position - e.eye);
+  e.reflected = glm::reflect(e.viewRay, e.normal);
+  e.lookupRay = {e.surfacePoint, e.reflected};
+  if (object.material != Material::Glass) return;
+  e.glass = followGlass(placed, surface, e.viewRay, clampedIor(object.ior),
+                        demo.accuracySettings().glassSurfaces == 2);
+  e.lookupRay = {e.glass.exitPoint, e.glass.leaving};
+}
+
+// The search the renderer drew object `object` with (SceneRenderer::searchesFor's rule).
+std::string searchOf(const Demo& demo, int object) {
+  const Search search = capturedSearch(demo.accuracySettings().search);
+  const ProbePlan* probe = demo.lastPlan().probeOf(object);
+  if (search == Search::Plain || probe == nullptr || probe->plainLookupSuffices) return "plain";
+  return searchName(search);
+}
+
+// The main pass drawn again into a float target, mirrors and glass writing `output`; pixel
+// (x, y)'s RGB.
+Result<glm::vec3> drawnValue(Demo& demo, int output, int x, int y, int width, int height) {
+  Result<OffscreenTarget> target = OffscreenTarget::create(width, height, true);
+  if (!target) return Result<glm::vec3>::failure(target.error());
+  demo.renderLookupDirections(target.value().framebuffer(), width, height, output);
+  const std::vector<glm::vec3> values = target.value().readFloats();
+  return values[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)];
+}
+
+// Where the search landed: the GPU's `measured`, in near-plane units from the probe centre; a
+// unit vector is the ray's direction itself (the search met nothing, or there was none).
+std::string readSearch(Demo& demo, PixelExplanation& e) {
+  Result<glm::vec3> measured =
+      drawnValue(demo, SceneRenderer::kOutputSearchPoint, e.x, e.y, e.width, e.height);
+  if (!measured) return measured.error();
+  const glm::vec3 m = measured.value();
+  e.searchAtInfinity = e.search == "plain" || std::abs(glm::length(m) - 1.0f) < 1e-5f;
+  e.searchDirection = glm::normalize(m);
+  if (!e.searchAtInfinity) e.searchPoint = e.probeCentre + m * demo.scene().capture.near;
+  return {};
+}
+
+// The colours each lookup returns, from the probe's colour cube read back.
+std::string readLookupColours(const Demo& demo, PixelExplanation& e) {
+  const ProbePlan* probe = demo.lastPlan().probeOf(e.object);
+  const CubeCaptureTarget* target =
+      demo.renderer() ? demo.renderer()->probeTarget(probe->reflector) : nullptr;
+  if (target == nullptr)
+    return "the probe of object " + std::to_string(e.object + 1) + " has not been captured";
+  Result<CubeFaces> faces = readCubeFaces(*target, FacesChannel::Colour);
+  if (!faces) return faces.error();
+  e.courseColour = glm::vec3(sampleCubeLinear(faces.value(), e.courseDirection));
+  e.searchColour = glm::vec3(sampleCubeLinear(faces.value(), e.searchDirection));
+  return {};
+}
+
+// The pixel as the exact environment would make it: the material's mix of what the lookup ray
+// (and, for glass, its reflection) really sees.
+glm::vec3 exactPixel(const Demo& demo, const SceneBvh& placed, const PixelExplanation& e) {
+  const SceneObject& object = demo.scene().objects[static_cast<size_t>(e.object)];
+  const float schlick = schlickWeight(fresnelF0(object.ior), -e.viewRay, e.normal);
+  if (object.material == Material::Mirror) {
+    return blended(
+        mirrorBlend(object.colour, object.reflection, object.base, object.fresnel, schlick),
+        e.exactColour);
+  }
+  const glm::vec3 reflected =
+      e.glass.totalAtEntry
+          ? e.exactColour
+          : exactAlong(demo, placed, {e.surfacePoint, e.reflected}, e.object, e.probeCentre).colour;
+  return blended(glassBlend(object.colour, reflected, e.glass.totalAtEntry, object.reflection,
+                            object.base, object.fresnel, schlick),
+                 e.exactColour);
+}
+
+}  // namespace
+
+Result<PixelExplanation> explainPixel(Demo& demo, int x, int y, int width, int height) {
+  PixelExplanation e;
+  e.x = x;
+  e.y = y;
+  e.width = width;
+  e.height = height;
+  e.seconds = demo.clock().seconds();
+  e.eye = demo.camera().eye();
+  const std::optional<TraceRay> view = pixelRay(demo.camera(), x, y, width, height);
+  if (!view) {
+    e.outside = true;
+    e.message = "pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
+                std::to_string(width) + "x" + std::to_string(height) + " frame (x 0.." +
+                std::to_string(width - 1) + ", y 0.." + std::to_string(height - 1) + ")";
+    return e;
+  }
+  const SceneBvh placed = placedObjects(demo, e.seconds);
+  const SurfacePoint surface = firstSurface(placed, *view);
+  e.object = surface.object;
+  e.message = noExplanation(demo, e);
+  if (e.object >= 0) {
+    e.mesh = demo.scene().objects[static_cast<size_t>(e.object)].mesh;
+    e.material = demo.scene().objects[static_cast<size_t>(e.object)].material;
+  }
+  if (!e.message.empty()) return e;
+
+  followRays(demo, placed, surface, e);
+  e.search = searchOf(demo, e.object);
+  e.probeCentre = demo.lastPlan().probeOf(e.object)->centre;
+  e.courseDirection = e.lookupRay.direction;
+  const ExactSight sight = exactAlong(demo, placed, e.lookupRay, e.object, e.probeCentre);
+  e.exactObject = sight.met.object;
+  e.exactBeyondFar = sight.beyondFar;
+  e.exactHit = sight.met.position;
+  e.exactShaded = sight.shaded;
+  e.exactColour = sight.colour;
+  e.exactDirection = sight.met.object >= 0 && !sight.beyondFar
+                         ? glm::normalize(sight.met.position - e.probeCentre)
+                         : e.lookupRay.direction;
+  e.courseErrorDeg = angleDegrees(e.courseDirection, e.exactDirection);
+
+  std::string error = readSearch(demo, e);
+  if (error.empty()) error = readLookupColours(demo, e);
+  if (!error.empty()) return Result<PixelExplanation>::failure(error);
+  e.searchErrorDeg = angleDegrees(e.searchDirection, e.exactDirection);
+  Result<glm::vec3> frame = drawnValue(demo, SceneRenderer::kOutputColour, x, y, width, height);
+  if (!frame) return Result<PixelExplanation>::failure(frame.error());
+  e.frameColour = glm::clamp(frame.value(), glm::vec3(0.0f), glm::vec3(1.0f));
+  if (e.exactShaded) {
+    e.exactPixelColour = glm::clamp(exactPixel(demo, placed, e), glm::vec3(0.0f), glm::vec3(1.0f));
+  }
+  return e;
+}
+
+std::vector<RaySegment> pickSegments(const PixelExplanation& e) {
+  std::vector<RaySegment> segments;
+  if (!e.message.empty()) return segments;
+  constexpr float kOpenLength = 5.0f;  // a ray with no end point
+  const glm::vec3 white(1.0f), yellow(1.0f, 0.9f, 0.1f), red(1.0f, 0.15f, 0.15f);
+  const glm::vec3 green(0.1f, 1.0f, 0.3f), blue(0.2f, 0.5f, 1.0f);
+  const auto cross = [&segments](const glm::vec3& p, const glm::vec3& colour) {
+    const float arm = 0.08f;
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::vec3 d(0.0f);
+      d[axis] = arm;
+      segments.push_back({p - d, p + d, colour});
+    }
+  };
+  const bool exactEnds = e.exactObject >= 0 && !e.exactBeyondFar;
+  const glm::vec3 exactEnd =
+      exactEnds ? e.exactHit : e.lookupRay.origin + kOpenLength * e.lookupRay.direction;
+  const float lookupLength = glm::length(exactEnd - e.probeCentre);
+  segments.push_back({e.eye, e.surfacePoint, white});
+  if (e.material == Material::Glass && !e.glass.totalAtEntry) {
+    segments.push_back({e.surfacePoint, e.glass.exitPoint, yellow});
+  }
+  segments.push_back({e.lookupRay.origin, exactEnd, blue});
+  segments.push_back({e.probeCentre, e.probeCentre + lookupLength * e.courseDirection, red});
+  const glm::vec3 searchEnd =
+      e.searchAtInfinity ? e.probeCentre + lookupLength * e.searchDirection : e.searchPoint;
+  segments.push_back({e.probeCentre, searchEnd, green});
+  cross(e.probeCentre, red);
+  cross(searchEnd, green);
+  cross(exactEnd, blue);
+  return segments;
+}
+
+glm::ivec3 colourBytes(const glm::vec3& colour) {
+  return glm::ivec3(glm::round(glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f)) * 255.0f));
+}
+
+}  // namespace reflect
