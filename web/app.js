@@ -87,7 +87,10 @@ async function start() {
   document.getElementById('bench-close').onclick = () => { document.getElementById('bench-box').hidden = true; };
 
   const help = helpOverlay();
-  const pick = new PickMode(bridge, canvas, () => loop.changed());
+  const pick = new PickMode(bridge, canvas, () => loop.changed(), (pixel) => {
+    session.pickedPixel = pixel;
+    addressBar.changed();
+  });
   const camera = (change) => session.camera(change);  // a change: the loop draws
   // One teaching view on, or the picture back when it is the one already on.
   const toggleInside = (view) => session.setView({ inside: bridge.view().inside === view ? 'off' : view });
@@ -135,6 +138,7 @@ async function start() {
 
   loop.start();
   autoPick.schedule();
+  if (link.pick) pick.explainOnceDrawn(link.pick[0], link.pick[1], () => loop.framesDrawn);
 
   Object.assign(window.demo, testApi({
     session, addressBar, sparkline, progress, fps: () => statsLine.fps, panel: () => panel,

@@ -49,6 +49,7 @@ function linkState(session) {
     camera: session.bridge.camera(), home: session.homeCamera, assets: session.assets,
     acc: session.modes.linkName(accuracy, session.defaultAccuracy), accuracy,
     materials: session.changedMaterials(), view: session.bridge.view(),
+    pick: session.pickedPixel || null,
   };
 }
 

@@ -5,11 +5,13 @@
 // and the search's green from the probe centre). Turning the mode off hides both; with it off
 // nothing here runs and the frame is untouched.
 export class PickMode {
-  // changed(): the picture must be drawn again (the frame loop's).
-  constructor(bridge, canvas, changed) {
+  // changed(): the picture must be drawn again (the frame loop's). picked(pixel): the pixel
+  // explained now ([x, y], or null: none), for the link.
+  constructor(bridge, canvas, changed, picked = () => {}) {
     this.bridge = bridge;
     this.canvas = canvas;
     this.changed = changed;
+    this.picked = picked;
     this.on = false;
     this.last = null;  // the last explanation (rf_explain_pixel's reply), or null
     this.box = document.getElementById('pick-box');
@@ -21,6 +23,7 @@ export class PickMode {
     this.on = on;
     this.last = null;
     if (!on) this.bridge.explainPixel({ clear: true });
+    this.picked(null);
     this.box.hidden = !on;
     this.text.textContent = on ? 'pick a pixel: click a mirror or glass pixel (P again: off)' : '';
     this.changed();
@@ -40,9 +43,16 @@ export class PickMode {
     if (!this.on) this.toggle(true);
     const reply = this.bridge.explainPixel({ x, y });
     this.last = reply;
+    this.picked(reply.error ? null : [x, y]);
     this.text.textContent = reply.error ? reply.error : reply.lines.join('\n');
     this.changed();
     return reply;
+  }
+
+  // A link's pick=X,Y: explained once the first frame is drawn (the explanation reads that frame).
+  explainOnceDrawn(x, y, framesDrawn) {
+    const attempt = () => (framesDrawn() > 0 ? this.explain(x, y) : requestAnimationFrame(attempt));
+    attempt();
   }
 
   // What the readout shows now.

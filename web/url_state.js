@@ -10,6 +10,7 @@
 //   mat=INDEX:NAME=VALUE,…;…   (changed material settings; INDEX is the object's place from 0)
 //   showError=true&auto=true&budget=MS   (the view settings, written when not at their default)
 //   paused  t=SECONDS (while paused)  cam=x,y,z,yaw,pitch (unless the scene's own)  assets=PREFIX
+//   pick=X,Y (pick a pixel: the drawing buffer's pixel explained, its rays drawn)
 // Not written (one-off actions): bench, frames.
 
 export const DEFAULT_SCENE = 'ex12-2';
@@ -78,7 +79,7 @@ export function parseQuery(search, schema) {
   const state = {
     scene: params.get('scene') || DEFAULT_SCENE, cube: 0, paused: params.has('paused'), t: null,
     cam: null, assets: params.get('assets'), bench: params.has('bench'), frames: null, acc: null,
-    planner: {}, accuracy: {}, materials: [], view: {},
+    planner: {}, accuracy: {}, materials: [], view: {}, pick: null,
   };
   const number = (key, ok, expected) => {
     if (!params.has(key)) return null;
@@ -92,6 +93,14 @@ export function parseQuery(search, schema) {
   state.cube = number('cube', (v) => Number.isInteger(v) && v >= 1, "a whole number of pixels (the scene's size stays)") || 0;
   state.t = number('t', (v) => Math.abs(v) <= 1e9, 'a number of seconds');
   state.frames = number('frames', (v) => Number.isInteger(v) && v >= 1 && v <= 100000, 'a whole number from 1 to 100000');
+  if (params.has('pick')) {
+    const parts = params.get('pick').split(',').map(Number);
+    if (parts.length !== 2 || parts.some((v) => !Number.isInteger(v) || v < 0)) {
+      problems.push(`pick=${params.get('pick')}: expected X,Y, a pixel of the canvas from its top-left corner; no pixel picked`);
+    } else {
+      state.pick = parts;
+    }
+  }
   if (params.has('cam')) {
     const parts = params.get('cam').split(',').map(Number);
     if (parts.length !== 5 || parts.some((v) => !Number.isFinite(v))) {
@@ -186,6 +195,7 @@ export function buildQuery(link, schema) {
     parts.push('paused');
     if (Number.isFinite(link.time)) parts.push(`t=${round(link.time, 4)}`);
   }
+  if (link.pick) parts.push(`pick=${link.pick.join(',')}`);
   if (link.camera?.eye && !sameCamera(link.camera, link.home)) {
     const c = link.camera;
     parts.push(`cam=${[...c.eye.map((v) => round(v, 4)), round(c.yaw, 3), round(c.pitch, 3)].join(',')}`);

@@ -95,3 +95,19 @@ test('a pixel with nothing to explain says so, and the default search says the s
   expect(outside.outside).toBe(true);
   expect(outside.message).toBe('pixel 800,0 is outside the 800x600 frame (x 0..799, y 0..599)');
 });
+
+test('a link\'s pick=X,Y explains that pixel once the frame is drawn, and the address bar keeps it while it is shown', async ({ page }) => {
+  await openDemo(page, `?paused&t=0&search=hierarchical&pick=${PIXEL.x},${PIXEL.y}`);
+  await expect(page.locator('#pick')).toContainText(`pixel ${PIXEL.x},${PIXEL.y} of 800x600`);
+  const shown = await page.evaluate(() => window.demo.lastPick());
+  expect(shown.material).toBe('mirror');
+  await expect(page).toHaveURL(new RegExp(`pick=${PIXEL.x},${PIXEL.y}`));
+  await page.keyboard.press('p');
+  await expect(page).not.toHaveURL(/pick=/);
+  await expect(page.locator('#pick-box')).toBeHidden();
+});
+
+test('a pick= that is not a pixel is refused by name', async ({ page }) => {
+  await openDemo(page, '?paused&pick=12');
+  await expect(page.locator('#messages')).toContainText('pick=12: expected X,Y');
+});
