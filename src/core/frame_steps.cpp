@@ -23,7 +23,7 @@ std::string countText(int objects, size_t triangles) {
 }
 
 std::string probeName(const ProbePlan& probe) {
-  return "probe of object " + std::to_string(probe.reflector + 1);
+  return "the probe of object " + std::to_string(probe.reflector + 1);
 }
 
 FrameStep faceStep(const ProbePlan& probe, int probeIndex, const FacePlan& face, StepPass pass) {
@@ -86,7 +86,8 @@ std::vector<FrameStep> frameSteps(const FramePlan& plan, const AccuracySettings&
     pyramid.pass = StepPass::DepthPyramid;
     pyramid.probe = static_cast<int>(p);
     pyramid.reflector = probe.reflector;
-    pyramid.label = "depth pyramid of " + probeName(probe) + ": every level of the " +
+    pyramid.label = "depth pyramid of " + probeName(probe) +
+                    ": every level, from the distances of the " +
                     std::to_string(probe.faces.size()) + " faces drawn (no scene triangles)";
     steps.push_back(pyramid);
   }

@@ -73,8 +73,9 @@ TEST(FrameSteps, EveryFaceOfTheCourseIsOneStepThenTheMainPass) {
     EXPECT_EQ(step.triangles, 12000u);
     EXPECT_EQ(step.objects, 3);
   }
-  EXPECT_EQ(steps[4].label,
-            "colour (pass 1) into probe of object 1, face +Z, layer 1: 3 objects, 12000 triangles");
+  EXPECT_EQ(
+      steps[4].label,
+      "colour (pass 1) into the probe of object 1, face +Z, layer 1: 3 objects, 12000 triangles");
   EXPECT_EQ(steps.back().pass, StepPass::Main);
   EXPECT_EQ(steps.back().objects, 4);
   EXPECT_EQ(steps.back().triangles, 16000u);

@@ -187,6 +187,11 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
                            "also write the faces view: the probe's cube map unfolded as a cross, "
                            "each face with the course's look and up vectors, captured or stale"),
               w, "FILE", "a PNG file name");
+  valueOption(c.add_option("--steps", o.stepsDir,
+                           "also step through the frame: write one PNG per draw step into DIR "
+                           "(step-01.png ...: each face's capture passes, then the main pass, "
+                           "which is the frame) and print each step's label and triangles"),
+              w, "DIR", "a writable folder");
   for (const auto& field : viewFields()) {
     if (field.info.name == "facesChannel") addSetting(c, w, field, o.view);
   }

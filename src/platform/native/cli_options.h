@@ -31,6 +31,7 @@ struct CliOptions {
   std::string referenceOut;       // render: also write the ray-traced reference of the frame
   std::string errorViewOut;       // render: also write the error view (heat map) of the frame
   std::string facesOut;           // render: also write the faces view (view.facesChannel)
+  std::string stepsDir;           // render: also write the frame's steps, one PNG each
   std::string assets;             // a folder with the course's models, by their file names
   std::string scene = "ex12-2";   // a shipped scene's name, or a .json path
   std::string preset;             // --preset: a named preset (core/presets.h), or ""
