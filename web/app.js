@@ -97,6 +97,8 @@ async function start() {
     togglePause: () => session.setPaused(!session.paused),
     // Inside the frame: the faces view on and off (the panel's folder has its channel).
     toggleFaces: () => session.setView({ inside: bridge.view().inside === 'faces' ? 'off' : 'faces' }),
+    // Step through a frame: the next draw of the frame, paused.
+    stepFrame: () => session.stepFrame(),
     toggleHelp: () => help.toggle(),
     closeHelp: () => help.close(),
   });

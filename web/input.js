@@ -85,6 +85,7 @@ export function attachInput(canvas, actions) {
     else if (key === 'e') actions.rise(1);
     else if (key === 'r') actions.reset();
     else if (key === 'f') actions.toggleFaces();
+    else if (key === '.') actions.stepFrame();
     else if (key === ' ') actions.togglePause();
     else if (key === '?' || key === 'h') actions.toggleHelp();
     else if (key === 'escape') { if (!actions.closeHelp()) return; }

@@ -174,6 +174,13 @@ class Demo {
   void setStepCallback(StepCallback callback) { stepCallback_ = std::move(callback); }
   // The last frame's steps (core/frame_steps.h): its captures' passes, then its main pass.
   std::vector<FrameStep> lastSteps() const;
+  // The page's stepping (paused): the frame now, as a first frame draws it (a fresh planner:
+  // every face it needs), drawn into `framebuffer` up to step `step` (clamped to the steps): a
+  // capture step's image (frame_step_view.h) in place of the picture, or at the main step the
+  // frame itself. The demo's own planner, plan and stats are left as they were. Returns the
+  // steps, or why none could be drawn.
+  Result<std::vector<FrameStep>> drawFrameStep(int step, unsigned framebuffer, int width,
+                                               int height);
   // Mesh `name`'s tree for the exact mode (built when the mesh loaded), or null.
   const MeshBvh* meshBvh(const std::string& name) const { return meshes_.builtBvh(name); }
   // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;

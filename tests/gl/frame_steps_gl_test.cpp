@@ -7,9 +7,11 @@
 #include <filesystem>
 
 #include "app/frame_step_files.h"
+#include "app/frame_step_view.h"
 #include "app/headless_frames.h"
 #include "core/scene.h"
 #include "gfx/cube_readback.h"
+#include "gfx/offscreen_target.h"
 #include "gl_fixture.h"
 
 namespace reflect {
@@ -111,6 +113,43 @@ TEST(FrameStepsGl, TheCallbackStopsTheCaptureAfterTheStepItRefuses) {
   auto whole = testing::makeCapturingDemo(makeDynamicReflectionScene());
   ASSERT_TRUE(renderFrameAt(*whole, 0.0, 64, 64));
   EXPECT_LT(demo->lastStats().captureTriangles, whole->lastStats().captureTriangles);
+}
+
+TEST(FrameStepsGl, ThePagesStepsAreTheCommandLinesAndItsLastIsTheFrame) {
+  auto cli = testing::makeCapturingDemo(makeDynamicReflectionScene());
+  const std::string dir = freshFolder("frame_steps_page");
+  std::vector<std::string> lines;
+  const Result<RgbaImage> frame = renderFrameInSteps(*cli, 0.5, kSize, kSize, dir, lines);
+  ASSERT_TRUE(frame) << frame.error();
+
+  // The page: frames drawn, then paused (a frame that captures nothing), then stepped.
+  auto page = testing::makeCapturingDemo(makeDynamicReflectionScene());
+  auto screen = OffscreenTarget::create(kSize, kSize);
+  ASSERT_TRUE(screen);
+  page->clock().set(0.5);
+  page->frame(0.0, screen.value().framebuffer(), kSize, kSize, true);
+  page->frame(0.0, screen.value().framebuffer(), kSize, kSize, true);
+  ASSERT_EQ(page->lastPlan().facesCaptured(), 0);
+  const FramePlan pausedPlan = page->lastPlan();
+  Result<std::vector<FrameStep>> steps =
+      page->drawFrameStep(0, screen.value().framebuffer(), kSize, kSize);
+  ASSERT_TRUE(steps) << steps.error();
+  const int count = static_cast<int>(steps.value().size());
+  ASSERT_EQ(static_cast<size_t>(count), lines.size());
+  for (int i = 0; i < count; ++i) {
+    EXPECT_EQ(stepTitle(steps.value()[static_cast<size_t>(i)], i, count),
+              lines[static_cast<size_t>(i)]);
+  }
+  // Step 1 on the screen is step-01.png; the last step is the frame.
+  const Result<RgbaImage> first = readPng(stepFileName(dir, 0, count));
+  ASSERT_TRUE(first) << first.error();
+  EXPECT_EQ(screen.value().readPixels().pixels, first.value().pixels);
+  ASSERT_TRUE(page->drawFrameStep(count - 1, screen.value().framebuffer(), kSize, kSize));
+  EXPECT_EQ(screen.value().readPixels().pixels, frame.value().pixels);
+  // Past the end is the end; the demo's own plan is untouched.
+  ASSERT_TRUE(page->drawFrameStep(count + 5, screen.value().framebuffer(), kSize, kSize));
+  EXPECT_EQ(screen.value().readPixels().pixels, frame.value().pixels);
+  EXPECT_EQ(page->lastPlan().facesCaptured(), pausedPlan.facesCaptured());
 }
 
 TEST(FrameStepsGl, AFolderThatIsNotThereIsAnError) {
