@@ -71,6 +71,7 @@ async function start() {
   session.onChange(() => loop.changed());
   canvas.addEventListener('webglcontextrestored', () => loop.changed());
   session.frame(0, true);
+  if (link.step) session.showStep(link.step - 1);  // step through a frame, from a link
   const addressBar = new AddressBar(session);
   addressBar.sync();
 

@@ -49,6 +49,7 @@ function linkState(session) {
     camera: session.bridge.camera(), home: session.homeCamera, assets: session.assets,
     acc: session.modes.linkName(accuracy, session.defaultAccuracy), accuracy,
     materials: session.changedMaterials(), view: session.bridge.view(),
+    step: session.shownStep === undefined ? null : session.shownStep + 1,
   };
 }
 
@@ -61,6 +62,7 @@ export class AddressBar {
     this.last = 0;
     this.timer = null;
     session.onChange(() => this.changed());
+    session.onStep(() => this.changed());
   }
 
   query() { return buildQuery(linkState(this.session), this.session.schema); }

@@ -19,10 +19,12 @@ function addStepControl(folder, session) {
   readout.className = 'readout';
   readout.title = 'each face\'s passes, then the main pass: reflect render --steps DIR writes the same steps';
   folder.$children.appendChild(readout);
-  session.onStep((reply) => {
+  const show = (reply) => {
     const shown = reply?.steps?.[reply.step];
     readout.textContent = shown ? `step ${reply.step + 1} of ${reply.count}: ${shown.label}` : '';
-  });
+  };
+  session.onStep(show);
+  show(session.stepReply);  // a link's step= is shown before the panel is made
 }
 
 function addSetting(folder, target, info, apply, id) {

@@ -264,7 +264,12 @@ export class Session {
   stepFrame() {
     if (!this.paused) this.setPaused(true);
     const count = this.stepReply?.count || 0;
-    this.shownStep = this.shownStep === undefined || this.shownStep + 1 >= count ? 0 : this.shownStep + 1;
+    return this.showStep(this.shownStep === undefined || this.shownStep + 1 >= count ? 0 : this.shownStep + 1);
+  }
+  // Pauses and shows step `index` (from 0; past the last, the last): a link's step=.
+  showStep(index) {
+    if (!this.paused) this.setPaused(true);
+    this.shownStep = index;
     return this.drawShownStep();
   }
   // A frame drawn while stepping is drawn over by the step shown (the camera may have moved); once
@@ -281,7 +286,12 @@ export class Session {
   }
   drawShownStep() {
     this.stepReply = this.bridge.frameStep(this.shownStep);
-    if (this.stepReply.error) showMessage(this.stepReply.error);
+    if (this.stepReply.error) {
+      showMessage(this.stepReply.error);
+      this.shownStep = undefined;
+    } else {
+      this.shownStep = this.stepReply.step;  // clamped to the frame's steps
+    }
     for (const listener of this.stepListeners || []) listener(this.stepReply);
     return this.stepReply;
   }

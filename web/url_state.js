@@ -10,6 +10,7 @@
 //   mat=INDEX:NAME=VALUE,…;…   (changed material settings; INDEX is the object's place from 0)
 //   showError=true&auto=true&budget=MS   (the view settings, written when not at their default)
 //   paused  t=SECONDS (while paused)  cam=x,y,z,yaw,pitch (unless the scene's own)  assets=PREFIX
+//   step=N (step N of the frame shown, from 1: step through a frame; it pauses)
 // Not written (one-off actions): bench, frames.
 
 export const DEFAULT_SCENE = 'ex12-2';
@@ -92,6 +93,7 @@ export function parseQuery(search, schema) {
   state.cube = number('cube', (v) => Number.isInteger(v) && v >= 1, "a whole number of pixels (the scene's size stays)") || 0;
   state.t = number('t', (v) => Math.abs(v) <= 1e9, 'a number of seconds');
   state.frames = number('frames', (v) => Number.isInteger(v) && v >= 1 && v <= 100000, 'a whole number from 1 to 100000');
+  state.step = number('step', (v) => Number.isInteger(v) && v >= 1 && v <= 100000, 'a step of the frame, from 1');
   if (params.has('cam')) {
     const parts = params.get('cam').split(',').map(Number);
     if (parts.length !== 5 || parts.some((v) => !Number.isFinite(v))) {
@@ -185,6 +187,7 @@ export function buildQuery(link, schema) {
   if (link.paused) {
     parts.push('paused');
     if (Number.isFinite(link.time)) parts.push(`t=${round(link.time, 4)}`);
+    if (link.step) parts.push(`step=${link.step}`);
   }
   if (link.camera?.eye && !sameCamera(link.camera, link.home)) {
     const c = link.camera;

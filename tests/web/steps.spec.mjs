@@ -73,3 +73,22 @@ test('running again ends the stepping, and a page that never steps draws nothing
   await animationFrames(page, 3);
   expect(await page.evaluate(() => window.demo.frameStep())).toBe(null);
 });
+
+test('step=N links to a step: the page opens on it paused, and the address bar follows the steps', async ({ page }) => {
+  await page.setViewportSize(PANEL_OPEN_VIEWPORT);
+  await openDemo(page, '?preset=course&paused&t=1&step=3');
+  const shown = await page.evaluate(() => window.demo.frameStep());
+  expect(shown.step).toBe(2);
+  expect(shown.count).toBe(7);
+  await expect(page.locator('#step-readout')).toHaveText(/^step 3 of 7: colour \(pass 1\) into the probe of object 4, face \+Y/);
+  await expect(page).toHaveURL(/[?&]step=3(&|$)/);
+  await page.keyboard.press('.');
+  await expect(page).toHaveURL(/[?&]step=4(&|$)/);
+  // A step past the frame's last is its last.
+  await openDemo(page, '?preset=course&paused&step=99');
+  expect((await page.evaluate(() => window.demo.frameStep())).step).toBe(6);
+  await expect(page).toHaveURL(/[?&]step=7(&|$)/);
+  // Running again ends the stepping, and the link loses its step.
+  await page.keyboard.press(' ');
+  await expect(page).not.toHaveURL(/step=/);
+});
