@@ -60,7 +60,7 @@ MUTATIONS = [
      "  return a.model == b.model && a.colour == b.colour && a.look == b.look &&",
      "  return a.model == b.model && a.look == b.look &&",
      "FramePlanner|PolicyEquivalence", "a colour change does not redraw the faces that show it"),
-    ("pyramid-faces", "src/gfx/scene_renderer.cpp",
+    ("pyramid-faces", "src/gfx/scene_renderer_capture.cpp",
      "    t.finish(pyramid_.uses, captured);", "    t.finish(pyramid_.uses, (captured << 1 | captured >> 5) & 63u);",
      "DepthPyramid|PolicyEquivalence", "the depth pyramid rebuilt for the wrong faces"),
     ("lod-choice", "src/core/planner_draws.cpp",

@@ -72,6 +72,7 @@ async function start() {
   session.onChange(() => loop.changed());
   canvas.addEventListener('webglcontextrestored', () => loop.changed());
   session.frame(0, true);
+  if (link.step) session.showStep(link.step - 1);  // step through a frame, from a link
   const addressBar = new AddressBar(session);
   addressBar.sync();
 
@@ -106,6 +107,8 @@ async function start() {
     // the faces view's channel).
     toggleFaces: () => toggleInside('faces'),
     toggleFaceUse: () => toggleInside('faceuse'),
+    // Step through a frame: the next draw of the frame, paused.
+    stepFrame: () => session.stepFrame(),
     toggleHelp: () => help.toggle(),
     closeHelp: () => help.close(),
     togglePick: () => pick.toggle(),

@@ -50,6 +50,7 @@ function linkState(session) {
     acc: session.modes.linkName(accuracy, session.defaultAccuracy), accuracy,
     materials: session.changedMaterials(), view: session.bridge.view(),
     pick: session.pickedPixel || null,
+    step: session.shownStep === undefined ? null : session.shownStep + 1,
   };
 }
 
@@ -62,6 +63,7 @@ export class AddressBar {
     this.last = 0;
     this.timer = null;
     session.onChange(() => this.changed());
+    session.onStep(() => this.changed());
   }
 
   query() { return buildQuery(linkState(this.session), this.session.schema); }

@@ -98,6 +98,7 @@ export function attachInput(canvas, actions) {
     else if (key === 'f') actions.toggleFaces();
     else if (key === 'u') actions.toggleFaceUse();
     else if (key === 'p') actions.togglePick();
+    else if (key === '.') actions.stepFrame();
     else if (key === ' ') actions.togglePause();
     else if (key === '?' || key === 'h') actions.toggleHelp();
     else if (key === 'escape') { if (!actions.closeHelp()) return; }

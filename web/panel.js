@@ -8,6 +8,25 @@ import { dockPanel } from './layout.js';
 export const CUBE_SIZES = [32, 64, 128, 256, 512, 1024];
 
 // A control for schema entry `info` on target[info.name]; `apply(value)` is called with changes.
+// Step through a frame: a button that draws the frame's next step (pausing), and the step's name
+// and triangles as the C++ side words them.
+function addStepControl(folder, session) {
+  if (!folder) return;
+  const step = folder.add({ step: () => session.stepFrame() }, 'step').name('step through the frame (.)');
+  step.domElement.id = 'control-frame-step';
+  const readout = document.createElement('div');
+  readout.id = 'step-readout';
+  readout.className = 'readout';
+  readout.title = 'each face\'s passes, then the main pass: reflect render --steps DIR writes the same steps';
+  folder.$children.appendChild(readout);
+  const show = (reply) => {
+    const shown = reply?.steps?.[reply.step];
+    readout.textContent = shown ? `step ${reply.step + 1} of ${reply.count}: ${shown.label}` : '';
+  };
+  session.onStep(show);
+  show(session.stepReply);  // a link's step= is shown before the panel is made
+}
+
 function addSetting(folder, target, info, apply, id) {
   let c;
   if (info.kind === 'choice') {
@@ -109,6 +128,7 @@ export function buildPanel(GUI, session, actions) {
   for (const info of schema.view || []) {
     addSetting(folderOf(info), view.view, info, (v) => session.setView({ [info.name]: v }), `control-view-${info.name}`);
   }
+  addStepControl(viewFolders.get('Inside the frame'), session);
   const autoReadout = document.createElement('div');
   autoReadout.id = 'auto-readout';
   autoReadout.className = 'readout';

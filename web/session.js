@@ -68,6 +68,7 @@ export class Session {
   faceSize() { return this.bridge.scene().cubeFaceSize || this.cubeSize; }
   frame(dt, waitForGpu = false) {
     this.lastStats = this.bridge.frame({ dt, waitForGpu });
+    this.redrawStep();
     return this.lastStats;
   }
 
@@ -254,5 +255,46 @@ export class Session {
     this.paused = on;
     this.changed('time');
   }
+
+  // --- step through a frame (Inside the frame) ---------------------------------------------------
+
+  // Pauses, and draws the next step of the frame now (after the last, the first again): the canvas
+  // shows it until the page runs again. Returns the C++ side's reply ({ step, count, steps } or
+  // { error }); onStep listeners hear it.
+  stepFrame() {
+    if (!this.paused) this.setPaused(true);
+    const count = this.stepReply?.count || 0;
+    return this.showStep(this.shownStep === undefined || this.shownStep + 1 >= count ? 0 : this.shownStep + 1);
+  }
+  // Pauses and shows step `index` (from 0; past the last, the last): a link's step=.
+  showStep(index) {
+    if (!this.paused) this.setPaused(true);
+    this.shownStep = index;
+    return this.drawShownStep();
+  }
+  // A frame drawn while stepping is drawn over by the step shown (the camera may have moved); once
+  // the page runs again, stepping ends.
+  redrawStep() {
+    if (this.shownStep === undefined) return;
+    if (this.paused) {
+      this.drawShownStep();
+      return;
+    }
+    this.shownStep = undefined;
+    this.stepReply = null;
+    for (const listener of this.stepListeners || []) listener(null);
+  }
+  drawShownStep() {
+    this.stepReply = this.bridge.frameStep(this.shownStep);
+    if (this.stepReply.error) {
+      showMessage(this.stepReply.error);
+      this.shownStep = undefined;
+    } else {
+      this.shownStep = this.stepReply.step;  // clamped to the frame's steps
+    }
+    for (const listener of this.stepListeners || []) listener(this.stepReply);
+    return this.stepReply;
+  }
+  onStep(listener) { (this.stepListeners ||= []).push(listener); }
 
 }

@@ -84,6 +84,10 @@ export function testApi(page) {
     drawingIdle: () => page.drawingIdle(),
     // The view settings { showError, auto, budget }; setView({ showError: true }): "" or the error.
     view: () => bridge.view(),
+    // Step through a frame: stepFrame() draws the next step (pausing); frameStep() is the last
+    // reply, { step, count, steps: [{ label, pass, face, objects, triangles }] }, or null.
+    stepFrame: () => session.stepFrame(),
+    frameStep: () => session.stepReply || null,
     setView: (changes) => session.setView(changes),
     // auto: measure now (a promise of { budget, pick: { index, fits, reason, table }, candidates:
     // [{ name, accuracy, frameMs, psnrDb }] }), and the last such result (or null).

@@ -11,6 +11,7 @@
 //   showError=true&auto=true&budget=MS   (the view settings, written when not at their default)
 //   paused  t=SECONDS (while paused)  cam=x,y,z,yaw,pitch (unless the scene's own)  assets=PREFIX
 //   pick=X,Y (pick a pixel: the drawing buffer's pixel explained, its rays drawn)
+//   step=N (step N of the frame shown, from 1: step through a frame; it pauses)
 // Not written (one-off actions): bench, frames.
 
 export const DEFAULT_SCENE = 'ex12-2';
@@ -101,6 +102,7 @@ export function parseQuery(search, schema) {
       state.pick = parts;
     }
   }
+  state.step = number('step', (v) => Number.isInteger(v) && v >= 1 && v <= 100000, 'a step of the frame, from 1');
   if (params.has('cam')) {
     const parts = params.get('cam').split(',').map(Number);
     if (parts.length !== 5 || parts.some((v) => !Number.isFinite(v))) {
@@ -194,6 +196,7 @@ export function buildQuery(link, schema) {
   if (link.paused) {
     parts.push('paused');
     if (Number.isFinite(link.time)) parts.push(`t=${round(link.time, 4)}`);
+    if (link.step) parts.push(`step=${link.step}`);
   }
   if (link.pick) parts.push(`pick=${link.pick.join(',')}`);
   if (link.camera?.eye && !sameCamera(link.camera, link.home)) {

@@ -55,6 +55,9 @@ export async function createBridge(canvas) {
 
     // One frame into the canvas: its stats (FrameStats: frameMs, facesCaptured, time, ...).
     frame: ({ dt = 0, waitForGpu = false } = {}) => call('rf_frame', { dt, waitForGpu }),
+    // Step through a frame: step `step` of the frame now into the canvas; { step, count, steps:
+    // [{ label, pass, face, objects, triangles }] } or { error }.
+    frameStep: (step) => call('rf_frame_step', { step }),
     time: () => call('rf_clock').seconds,
     setTime: (seconds) => call('rf_clock', { seconds }).seconds,
 

@@ -8,6 +8,7 @@
 // are built after the first frame (see mesh_library.h).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +24,7 @@
 #include "core/bvh.h"
 #include "core/camera.h"
 #include "core/frame_planner.h"
+#include "core/frame_steps.h"
 #include "core/frustum.h"
 #include "core/mesh_data.h"
 #include "core/obj_loader.h"
@@ -174,6 +176,20 @@ class Demo {
   // none turns them off.
   void showPickedRays(std::vector<RaySegment> segments) { pick_.show(std::move(segments)); }
   const PickOverlay& pickOverlay() const { return pick_; }
+  // Step through a frame (demo_steps.cpp): while set, each frame's capture tells `callback` of
+  // each step just drawn (`index` in lastSteps()'s order, of `count`), and stops there when it
+  // returns false. Unset (the default), frames run as they always do.
+  using StepCallback = std::function<bool(const FrameStep& step, int index, int count)>;
+  void setStepCallback(StepCallback callback) { stepCallback_ = std::move(callback); }
+  // The last frame's steps (core/frame_steps.h): its captures' passes, then its main pass.
+  std::vector<FrameStep> lastSteps() const;
+  // The page's stepping (paused): the frame now, as a first frame draws it (a fresh planner:
+  // every face it needs), drawn into `framebuffer` up to step `step` (clamped to the steps): a
+  // capture step's image (frame_step_view.h) in place of the picture, or at the main step the
+  // frame itself. The demo's own planner, plan and stats are left as they were. Returns the
+  // steps, or why none could be drawn.
+  Result<std::vector<FrameStep>> drawFrameStep(int step, unsigned framebuffer, int width,
+                                               int height);
   // Mesh `name`'s tree for the exact mode (built when the mesh loaded), or null.
   const MeshBvh* meshBvh(const std::string& name) const { return meshes_.builtBvh(name); }
   // Sets the capture face size for the next initGraphics, clamped to 1..kMaxCubeFaceSize;
@@ -204,6 +220,8 @@ class Demo {
   void startStats(bool waitForGpu, int width, int height);
   // The captures of `plan` into the probes, timed; their counts and any error into the stats.
   void capturePass(const FramePlan& plan, bool waitForGpu);
+  // The capture of `plan` telling stepCallback_ of each step (demo_steps.cpp).
+  Result<PassCounts> captureInSteps(const FramePlan& plan);
 
   Scene scene_;
   MeshLibrary meshes_;
@@ -225,6 +243,7 @@ class Demo {
   std::vector<ProbeLayout> lastTraced_;
   FramePlan lastPlan_;
   FrameStats stats_;
+  StepCallback stepCallback_;  // step through a frame: unset unless asked for
 };
 
 }  // namespace reflect

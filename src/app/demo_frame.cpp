@@ -111,8 +111,9 @@ void Demo::startStats(bool waitForGpu, int width, int height) {
 void Demo::capturePass(const FramePlan& plan, bool waitForGpu) {
   GpuTimer& timer = graphics_.timer();
   timer.begin(GpuTimer::kCapture);
-  Result<PassCounts> capture =
-      graphics_.renderer()->capture(scene_, stats_.timeSeconds, plan, camera_.eye());
+  Result<PassCounts> capture = stepCallback_ ? captureInSteps(plan)
+                                             : graphics_.renderer()->capture(
+                                                   scene_, stats_.timeSeconds, plan, camera_.eye());
   timer.end();
   if (!capture) {
     stats_.error = "capture failed: " + capture.error();

@@ -26,6 +26,18 @@ std::string InsideViews::draw(const SceneRenderer& renderer, const Scene& scene,
   return {};
 }
 
+std::string InsideViews::drawImage(const RgbaImage& image, unsigned framebuffer, int width,
+                                   int height) {
+  if (!blit_) {
+    Result<ImageBlit> blit = ImageBlit::create();
+    if (!blit) return blit.error();
+    blit_ = std::make_unique<ImageBlit>(blit.take());
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  blit_->draw(image, width, height, kCrossBackground);
+  return {};
+}
+
 void InsideViews::abandon() {
   if (blit_) blit_->abandon();
   blit_.reset();

@@ -35,6 +35,9 @@ class InsideViews {
   using LookupPass = std::function<void(unsigned framebuffer, int width, int height)>;
   std::string draw(const SceneRenderer& renderer, const Scene& scene, const FramePlan& plan,
                    const LookupPass& drawLookups, unsigned framebuffer, int width, int height);
+  // Puts `image` on `framebuffer` (width x height) as the views are shown, centred on their
+  // background (step through a frame). Returns "" or why it could not.
+  std::string drawImage(const RgbaImage& image, unsigned framebuffer, int width, int height);
   // The context was lost: names are gone, ages start over (the cubes are empty again).
   void abandon();
   // The GL objects are freed (the context stays).

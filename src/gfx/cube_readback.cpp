@@ -32,15 +32,18 @@ RgbaImage readColour(int size, bool halfFloat) {
   return face;
 }
 
-// The RG16UI depth codes bound for reading, as grey (near bright).
-RgbaImage readDistance(int size) {
+// The RG16UI depth codes bound for reading, as grey (near bright); with `zeroIsEmpty` (the backs,
+// cleared to 0 where none was stored), code 0 as black.
+RgbaImage readDistance(int size, bool zeroIsEmpty = false) {
   RgbaImage face = emptyFace(size);
   // RGBA_INTEGER / UNSIGNED_INT is the pair every GL ES 3.0 implementation reads an unsigned
   // integer colour buffer with.
   std::vector<GLuint> codes(face.pixels.size());
   glReadPixels(0, 0, size, size, GL_RGBA_INTEGER, GL_UNSIGNED_INT, codes.data());
   for (size_t texel = 0; texel < codes.size() / 4; ++texel) {
-    const uint8_t grey = static_cast<uint8_t>(255 - (codes[texel * 4] * 255 + 32767) / 65535);
+    const GLuint code = codes[texel * 4];
+    const uint8_t grey =
+        zeroIsEmpty && code == 0 ? 0 : static_cast<uint8_t>(255 - (code * 255 + 32767) / 65535);
     face.pixels[texel * 4 + 0] = face.pixels[texel * 4 + 1] = face.pixels[texel * 4 + 2] = grey;
     face.pixels[texel * 4 + 3] = 255;
   }
@@ -85,6 +88,21 @@ Result<CubeFaces> readCubeFaces(const CubeCaptureTarget& target, FacesChannel ch
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
   return faces;
+}
+
+Result<RgbaImage> readBacksFace(const CubeCaptureTarget& target, int face) {
+  if (target.format().layers < 2) {
+    return Result<RgbaImage>::failure("the backs are stored only with a second layer");
+  }
+  GLint previous = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+  FramebufferHandle framebuffer(generateOne<glGenFramebuffers>());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
+  glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target.backs(), 0, face);
+  // The same read as the distances' (R16UI reads back through RGBA_INTEGER too).
+  RgbaImage image = readDistance(target.faceSize(), true);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
+  return image;
 }
 
 }  // namespace reflect

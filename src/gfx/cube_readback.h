@@ -17,4 +17,9 @@ namespace reflect {
 // were.
 Result<CubeFaces> readCubeFaces(const CubeCaptureTarget& target, FacesChannel channel);
 
+// Face `face` of the backs a two-layer capture's pass 3 stored (where the nearest surfaces end), as
+// grey like the distance channel; where no back was stored (code 0), black. An error without a
+// second layer.
+Result<RgbaImage> readBacksFace(const CubeCaptureTarget& target, int face);
+
 }  // namespace reflect

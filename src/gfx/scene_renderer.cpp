@@ -6,8 +6,6 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/cube_faces.h"
-#include "core/depth_code.h"
 #include "core/fresnel.h"
 #include "core/frustum.h"
 #include "core/normal_matrix.h"
@@ -21,18 +19,6 @@ void setObjectMatrices(GLint model, GLint normalMatrix, const glm::mat4& m) {
   glUniformMatrix4fv(model, 1, GL_FALSE, glm::value_ptr(m));
   const glm::mat3 normal = normalMatrixOf(glm::mat3(m));
   glUniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normal));
-}
-
-// Whether any surface of a mesh drawn with `model` may face away from `centre` (the fragment
-// test capture_output.glsl's pass 3 keeps). A flat mesh faces one way from every point: when
-// `centre` is clearly on its front side, pass 3 discards all of it, and need not draw it (the
-// ground quad covered half of four faces and all of a fifth there, every fragment discarded).
-bool mayFaceAway(const MeshBuffer* mesh, const glm::mat4& model, const glm::vec3& centre) {
-  if (!mesh || !mesh->flat()) return true;
-  const glm::vec3 normal = normalMatrixOf(glm::mat3(model)) * mesh->flatNormal();
-  const glm::vec3 offset = glm::vec3(model * glm::vec4(mesh->flatPoint(), 1.0f)) - centre;
-  // A margin for the interpolated normal's rounding: a probe (nearly) in the plane draws it.
-  return glm::dot(normal, offset) > -1e-4f * glm::length(normal) * glm::length(offset);
 }
 
 }  // namespace
@@ -226,111 +212,6 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
     }
     i = end;
   }
-  return counts;
-}
-
-Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, const FramePlan& plan,
-                                          const glm::vec3& lightingEye) {
-  forgetReplacedGlassMeshes(scene);
-  prepareGlassExits(scene, seconds);
-  PassCounts counts;
-  glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  const glm::mat4 projection = cubeFaceProjection(scene.capture.near, scene.capture.far);
-  const bool chain = capturedSearch(accuracy_.search) == Search::Hierarchical;
-  // Where nothing is drawn, the stored distance is the far plane's: the world ends there, as it
-  // does for the main camera. (Measured on the default scene, this beat an infinite distance for
-  // the linear search by 2 dB.) A skybox is drawn over it, infinitely far, and is seen along the
-  // ray's own direction.
-  const float farAlpha = scene.capture.far / (scene.capture.far + scene.capture.near);
-  const unsigned farCode = depthCode(scene.capture.far / scene.capture.near);
-  const float clear[3] = {scene.clearColour.r, scene.clearColour.g, scene.clearColour.b};
-  for (const ProbePlan& probe : plan.probes) {
-    if (probe.faces.empty()) continue;
-    // Depths only for a probe whose reflectors search them.
-    const bool depths = chain && !probe.plainLookupSuffices;
-    const CaptureFormat format{scene.capture.faceSize,
-                               accuracy_.halfFloat,
-                               accuracy_.depthBits,
-                               accuracy_.mipmaps,
-                               depths,
-                               depths ? probe.layers : 1};
-    auto target = probes_.find(probe.reflector);
-    if (target == probes_.end() || !(target->second.format() == format)) {
-      Result<CubeCaptureTarget> created = CubeCaptureTarget::create(format);
-      if (!created) return Result<PassCounts>::failure(created.error());
-      probes_.erase(probe.reflector);
-      target = probes_.emplace(probe.reflector, created.take()).first;
-    }
-    const CubeCaptureTarget& t = target->second;
-    for (const FacePlan& face : probe.faces) {
-      const glm::mat4 view = cubeFaceView(probe.centre, face.face);
-      const glm::vec3 axis = kCubeFaces[static_cast<size_t>(face.face)].direction;
-      // Pass 1, the nearest surfaces; with two layers, pass 3 where they end and pass 2 what
-      // lies behind them (shaders/capture_output.glsl), peeled behind pass 3's depths. A face
-      // of a two-layer probe that needs one clears what the other two would write.
-      const std::vector<int> passes =
-          face.layers == 2 ? std::vector<int>{1, 3, 2} : std::vector<int>{1};
-      if (t.format().layers == 2 && face.layers == 1) {
-        const unsigned codes[2] = {farCode, farCode};
-        t.bindFace(face.face, 1);
-        t.clearFace(clear, 1.0f, codes);
-        t.bindBackPass(face.face);
-        CubeCaptureTarget::endBackPass();
-      }
-      // Pass 3 keeps only surfaces facing away from the probe: it skips what cannot have any.
-      std::vector<DrawItem> backDraws;
-      if (face.layers == 2) {
-        for (const DrawItem& d : face.draws) {
-          const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
-          if (mayFaceAway(mesh(object.mesh, d.lod), scene.modelMatrix(object, seconds),
-                          probe.centre)) {
-            backDraws.push_back(d);
-          }
-        }
-      }
-      for (int layer : passes) {
-        if (layer == 3) {
-          t.bindBackPass(face.face);
-        } else {
-          t.bindFace(face.face, layer - 1);
-          const unsigned codes[2] = {farCode, farCode};
-          t.clearFace(clear, capturedSearch(accuracy_.search) == Search::Linear ? farAlpha : 1.0f,
-                      codes);
-        }
-        // Passes 2 and 3 peel behind pass 1's depths, and pass 2 behind pass 3's backs.
-        bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY,
-                    layer == 1 ? emptyDepths_.id() : t.faceDepths(0));
-        bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY,
-                    layer == 2 ? t.backs() : emptyDepths_.id());
-        // Pass 1 of a one-layer probe and pass 2 cannot see how deep their objects are.
-        const bool guessDepth = layer == 2 || (layer == 1 && passes.size() == 1);
-        const CaptureState pass{layer,     probe.centre, axis, scene.capture.near,
-                                face.face, guessDepth};
-        // Other mirrors in view use their cube as it was before this frame's capture of them
-        // (one bounce); they are seen from the probe centre.
-        counts += drawItems(scene, seconds, plan,
-                            layer == 1   ? face.draws
-                            : layer == 3 ? backDraws
-                                         : face.secondLayerDraws,
-                            projection * view, lightingEye, probe.centre, pass, false);
-        if (skybox_ && layer != 3) skybox_->draw(projection, view, pass);
-        if (layer == 3) CubeCaptureTarget::endBackPass();
-      }
-      bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY, emptyDepths_.id());
-      bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY, emptyDepths_.id());
-    }
-    glBindVertexArray(emptyVertexArray_.id());
-    unsigned captured = 0;
-    for (const FacePlan& face : probe.faces) captured |= 1u << face.face;
-    t.finish(pyramid_.uses, captured);
-    glEnable(GL_DEPTH_TEST);
-  }
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glBindVertexArray(0);
-  checkGlError("capture");
   return counts;
 }
 

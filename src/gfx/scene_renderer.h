@@ -4,6 +4,7 @@
 // lookup), cube-textured (Ex12-1); the skybox is drawn last into every target.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -14,6 +15,7 @@
 
 #include "core/accuracy_settings.h"
 #include "core/frame_planner.h"
+#include "core/frame_steps.h"
 #include "core/mesh_data.h"
 #include "core/result.h"
 #include "core/scene.h"
@@ -35,6 +37,10 @@ struct ViewParams {
   glm::mat4 projection{1.0f};
   glm::vec3 eye{0.0f};
 };
+
+// Step through a frame: told after each capture step (core/frame_steps.h's order, from 0) is
+// drawn; returns false to stop the capture there.
+using CaptureStepObserver = std::function<bool(int step)>;
 
 struct PassCounts {
   int drawCalls = 0;
@@ -58,10 +64,12 @@ class SceneRenderer {
   std::string setSkybox(const CubeFaces& faces);
   void clearSkybox() { skybox_.reset(); }
 
-  // Renders the plan's faces. `lightingEye` is the main camera's eye: the course lights captures
-  // as seen from it. Probe targets are created (or resized) on first use.
+  // Renders the plan's faces (scene_renderer_capture.cpp). `lightingEye` is the main camera's
+  // eye: the course lights captures as seen from it. Probe targets are created (or resized) on
+  // first use. `afterStep` (null: none) is told after each step and may stop the capture.
   Result<PassCounts> capture(const Scene& scene, double seconds, const FramePlan& plan,
-                             const glm::vec3& lightingEye);
+                             const glm::vec3& lightingEye,
+                             const CaptureStepObserver* afterStep = nullptr);
   // `draws`: every object with its level of detail (planViewDraws). Probed objects sample the
   // cubes of `plan`'s probes (as a capture left them). With `outputDirections` (one of the
   // kOutput values below), mirrors and glass write what they looked up instead of a colour, for
@@ -119,6 +127,16 @@ class SceneRenderer {
   };
 
   SceneRenderer() = default;
+  // The capture's parts (scene_renderer_capture.cpp).
+  struct CaptureJob;
+  // The probe's target, made (or remade) for the format the probe needs now.
+  Result<CubeCaptureTarget*> captureTarget(const Scene& scene, const ProbePlan& probe);
+  // Draws `face`'s passes; false when the step observer stopped the capture.
+  bool captureFace(CaptureJob& job, const ProbePlan& probe, const CubeCaptureTarget& t,
+                   const FacePlan& face, PassCounts& counts);
+  PassCounts capturePass(const CaptureJob& job, const ProbePlan& probe, const CubeCaptureTarget& t,
+                         const FacePlan& face, StepPass pass,
+                         const std::vector<DrawItem>& backDraws, bool onePass);
   static Result<Program> buildProgram(const ProgramKey& key, bool mediump);
   // The program of `key`, built the first time it is asked for; null when it does not build (the
   // error goes to stderr once).

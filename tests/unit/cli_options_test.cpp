@@ -101,6 +101,13 @@ TEST(CliOptions, ParsesTheFacesView) {
       << errorOf({"render", "--faces-channel", "depth"});
 }
 
+TEST(CliOptions, ParsesTheSteps) {
+  EXPECT_EQ(mustParse({"render", "--steps", "out/steps"}).stepsDir, "out/steps");
+  EXPECT_EQ(mustParse({"render"}).stepsDir, "");        // off unless asked for
+  EXPECT_FALSE(parseCli({"render", "--steps"}));        // a folder is required
+  EXPECT_FALSE(parseCli({"bench", "--steps", "out"}));  // render only
+}
+
 TEST(CliOptions, DefaultsAreTheDocumentedOnes) {
   const CliOptions o = mustParse({"render"});
   EXPECT_EQ(o.width, 800);

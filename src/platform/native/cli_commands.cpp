@@ -192,6 +192,11 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
                            "colour of the cube face it read, with a legend of the pixels each "
                            "face serves"),
               w, "FILE", "a PNG file name");
+  valueOption(c.add_option("--steps", o.stepsDir,
+                           "also step through the frame: write one PNG per draw step into DIR "
+                           "(step-01.png ...: each face's capture passes, then the main pass, "
+                           "which is the frame) and print each step's label and triangles"),
+              w, "DIR", "a writable folder");
   for (const auto& field : viewFields()) {
     if (field.info.name == "facesChannel" || field.info.name == "facesProbe") {
       addSetting(c, w, field, o.view);

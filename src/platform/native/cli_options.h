@@ -33,6 +33,7 @@ struct CliOptions {
   std::string facesOut;           // render: also write the faces view (view.facesChannel)
   std::string faceUseOut;         // render: also write the face-use view
   glm::ivec2 pixel{0};            // explain: the pixel (x, y), (0, 0) the top-left one
+  std::string stepsDir;           // render: also write the frame's steps, one PNG each
   std::string assets;             // a folder with the course's models, by their file names
   std::string scene = "ex12-2";   // a shipped scene's name, or a .json path
   std::string preset;             // --preset: a named preset (core/presets.h), or ""

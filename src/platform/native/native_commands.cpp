@@ -9,6 +9,7 @@
 #include "app/demo.h"
 #include "app/face_use_view.h"
 #include "app/faces_view.h"
+#include "app/frame_step_files.h"
 #include "app/headless_frames.h"
 #include "app/pixel_explain.h"
 #include "bench/accuracy.h"
@@ -153,11 +154,18 @@ std::string runRenderCommand(const CliOptions& o) {
   WarningPrinter warnings;
   auto demo = makeDemo(o, {}, warnings);
   if (!demo) return demo.error();
-  auto image = renderFrameAt(*demo.value(), o.time, o.width, o.height);
-  if (!image) return image.error();
+  std::vector<std::string> stepLines;  // --steps: the frame is drawn step by step
+  auto image = o.stepsDir.empty() ? renderFrameAt(*demo.value(), o.time, o.width, o.height)
+                                  : renderFrameInSteps(*demo.value(), o.time, o.width, o.height,
+                                                       o.stepsDir, stepLines);
+  if (!image) return o.stepsDir.empty() ? image.error() : "--steps: " + image.error();
   std::string error = writePng(image.value(), o.out);
   if (!error.empty()) return error;
   std::printf("wrote %s (%dx%d, t=%.3f s)\n", o.out.c_str(), o.width, o.height, o.time);
+  for (const std::string& line : stepLines) std::printf("%s\n", line.c_str());
+  if (!stepLines.empty()) {
+    std::printf("wrote %zu step images into %s\n", stepLines.size(), o.stepsDir.c_str());
+  }
   // The views of this frame first: the reference and the error view draw frames of their own.
   if (!o.facesOut.empty()) {
     error = writeFacesView(*demo.value(), o);
