@@ -99,10 +99,18 @@ TEST(SettingsSchema, TheInsideViewsAreViewSettingsInTheirOwnFolder) {
             "facesChannel: \"depth\" is not one of colour, distance, layer2");
   EXPECT_EQ(view.facesChannel, FacesChannel::Distance);
   EXPECT_EQ(settingsJson(view, viewFields())["facesChannel"], "distance");
+  EXPECT_EQ(applySettingsJson(json::parse(R"({"inside": "faceuse", "facesProbe": 2})"),
+                              viewFields(), view),
+            "");
+  EXPECT_EQ(view.inside, InsideView::FaceUse);
+  EXPECT_EQ(view.facesProbe, 2);
+  EXPECT_EQ(applySettingsJson(json::parse(R"({"facesProbe": 0})"), viewFields(), view),
+            "facesProbe: 0 is not in 1..64");
+  EXPECT_EQ(view.facesProbe, 2);
   const json schema = settingsSchemaJson();
   for (const json& entry : schema["view"]) {
     const std::string name = entry["name"].get<std::string>();
-    const bool inside = name == "inside" || name == "facesChannel";
+    const bool inside = name == "inside" || name == "facesChannel" || name == "facesProbe";
     EXPECT_EQ(entry.value("folder", ""), inside ? "Inside the frame" : "") << name;
   }
 }
