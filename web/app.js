@@ -129,6 +129,7 @@ async function start() {
     helpLabel: kinds.keys ? 'keys and mouse (?)' : 'touch gestures',
     resized: resizeCanvas,
     autoReadout: () => autoPick.readout(),
+    togglePick: () => pick.toggle(),
   }) : null;
   if (!panel) dockPanel(null, resizeCanvas);
   const description = document.getElementById('scene-description');

@@ -7,7 +7,6 @@ import { dockPanel } from './layout.js';
 
 export const CUBE_SIZES = [32, 64, 128, 256, 512, 1024];
 
-// A control for schema entry `info` on target[info.name]; `apply(value)` is called with changes.
 // Step through a frame: a button that draws the frame's next step (pausing), and the step's name
 // and triangles as the C++ side words them.
 function addStepControl(folder, session) {
@@ -27,6 +26,15 @@ function addStepControl(folder, session) {
   show(session.stepReply);  // a link's step= is shown before the panel is made
 }
 
+// Pick a pixel: a button for the P key (touch has no keys): the mode on or off; a click or tap on
+// the canvas then explains that pixel.
+function addPickControl(folder, togglePick) {
+  if (!folder || !togglePick) return;
+  const pick = folder.add({ pick: togglePick }, 'pick').name('pick a pixel (P), then click');
+  pick.domElement.id = 'control-pick';
+}
+
+// A control for schema entry `info` on target[info.name]; `apply(value)` is called with changes.
 function addSetting(folder, target, info, apply, id) {
   let c;
   if (info.kind === 'choice') {
@@ -129,6 +137,7 @@ export function buildPanel(GUI, session, actions) {
     addSetting(folderOf(info), view.view, info, (v) => session.setView({ [info.name]: v }), `control-view-${info.name}`);
   }
   addStepControl(viewFolders.get('Inside the frame'), session);
+  addPickControl(viewFolders.get('Inside the frame'), actions.togglePick);
   const autoReadout = document.createElement('div');
   autoReadout.id = 'auto-readout';
   autoReadout.className = 'readout';

@@ -4,7 +4,7 @@
 // pick is shown. The explanation's own numbers are held against Embree and closed forms natively
 // (tests/reference/pixel_explain_test.cpp).
 import { test, expect } from '@playwright/test';
-import { countChanged, openDemo, pixel, renderAndRead } from './helpers.mjs';
+import { countChanged, openDemo, PANEL_OPEN_VIEWPORT, pixel, renderAndRead } from './helpers.mjs';
 
 // The sphere's centre (0, 0.25, 0) seen from the eye (0, 1, 7) with a 70 degree vertical field on
 // the 800x600 canvas: 0.75 below the eye 7 ahead, ndc y = -(0.75 / 7) / tan(35 deg) = -0.1530,
@@ -110,4 +110,14 @@ test('a link\'s pick=X,Y explains that pixel once the frame is drawn, and the ad
 test('a pick= that is not a pixel is refused by name', async ({ page }) => {
   await openDemo(page, '?paused&pick=12');
   await expect(page.locator('#messages')).toContainText('pick=12: expected X,Y');
+});
+
+test('the panel\'s pick control turns pick a pixel on and off (a touch screen has no P key)', async ({ page }) => {
+  await page.setViewportSize(PANEL_OPEN_VIEWPORT);
+  await openDemo(page, '?paused&t=0');
+  await page.locator('#control-pick button').click();
+  await expect(page.locator('#pick-box')).toBeVisible();
+  await expect(page.locator('#pick')).toContainText('pick a pixel');
+  await page.locator('#control-pick button').click();
+  await expect(page.locator('#pick-box')).toBeHidden();
 });
