@@ -10,10 +10,12 @@
 //                                                    docs/scene-NAME.png for every scene in
 //                                                    build/web/site/scenes (900x600, paused at
 //                                                    t=2, the panel closed)
-//   node tools/screenshot.mjs OUT.png [query] [--phone]
+//   node tools/screenshot.mjs OUT.png [query] [--phone] [--eval=EXPR]
 //                                                    one picture (query default '?paused&t=2';
 //                                                    --phone: as on the phone, else 900x600 with
-//                                                    the panel open)
+//                                                    the panel open; EXPR: evaluated in the page
+//                                                    once it is laid out, before the picture,
+//                                                    e.g. --eval='window.demo.explainPixel(300,360)')
 //
 // Serves build/web/site with tools/serve.mjs on a free port, waits for demo.ready, renders the
 // frame at the query's time and saves the page (canvas and its overlays) as a PNG.
@@ -28,7 +30,9 @@ const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const site = join(repo, 'build/web/site');
 const args = process.argv.slice(2);
 const phoneOnly = args.includes('--phone');
-const positional = args.filter((a) => a !== '--phone');
+const evalArg = args.find((a) => a.startsWith('--eval='));
+const evalExpression = evalArg ? evalArg.slice('--eval='.length) : null;
+const positional = args.filter((a) => a !== '--phone' && a !== evalArg);
 const single = positional[0] ? resolve(positional[0]) : null;
 let singleQuery = positional[1] || '?paused&t=2';
 if (!singleQuery.startsWith('?')) singleQuery = `?${singleQuery}`;
@@ -89,6 +93,10 @@ async function main() {
       await page.waitForFunction(() => window.demo !== undefined);
       await page.evaluate(() => window.demo.ready);
       if (panelOpen !== null) await page.evaluate((open) => window.demo.panel()?.open(open), panelOpen);
+      if (evalExpression) {
+        await page.waitForTimeout(300);  // the canvas takes its size once the panel is docked
+        await page.evaluate(evalExpression);
+      }
       // Let the stats line fill in (it shows after a couple of display frames; a paused page draws
       // on demand and says "idle" once it has drawn).
       await page.waitForFunction(() => /fps|idle/.test(document.getElementById('stats').textContent), null,
