@@ -35,13 +35,7 @@ async function start() {
   if (typeof WebGL2RenderingContext === 'undefined') {
     throw new Error('WebGL2 is not available in this browser, so the demo cannot run.');
   }
-  const titlesPromise = sceneTitles();
-  const sweepText = fetch('sweep.csv').then((r) => (r.ok ? r.text() : ''), () => '');
-  const guiPromise = import('./vendor/lil-gui.esm.js').then((m) => m.GUI, (e) => {
-    showMessage(`The controls panel could not be loaded (vendor/lil-gui.esm.js: ${e.message}); ` +
-                'keys and mouse still work.');
-    return null;
-  });
+  const { titlesPromise, sweepText, guiPromise } = startLoads();
 
   const bridge = await createBridge(canvas);
   const createError = bridge.create();
@@ -92,6 +86,44 @@ async function start() {
     session.pickedPixel = pixel;
     addressBar.changed();
   });
+  attachControls(session, bridge, help, pick);
+
+  const scenes = await titlesPromise;
+  const GUI = await guiPromise;
+  const panel = GUI ? buildPanel(GUI, session, {
+    scenes, resized: resizeCanvas, ...panelActions(session, { addressBar, bench, help, autoPick, pick }),
+  }) : null;
+  if (!panel) dockPanel(null, resizeCanvas);
+  describeScene(scenes, session);
+
+  loop.start();
+  autoPick.schedule();
+  if (link.pick) pick.explainOnceDrawn(link.pick[0], link.pick[1], () => loop.framesDrawn);
+
+  Object.assign(window.demo, testApi({
+    session, addressBar, sparkline, progress, fps: () => statsLine.fps, panel: () => panel,
+    readPixels: () => readPixels(canvas), screenshot: () => screenshot(session, canvas), bench,
+    framesDrawn: () => loop.framesDrawn, drawingIdle: () => loop.idle, autoPick, pick,
+  }));
+  resolveReady();
+  if (link.bench) bench().catch(() => {});
+}
+
+// What the page fetches while the module starts: the scenes' titles, the measured modes
+// (sweep.csv) and the panel's library.
+function startLoads() {
+  const titlesPromise = sceneTitles();
+  const sweepText = fetch('sweep.csv').then((r) => (r.ok ? r.text() : ''), () => '');
+  const guiPromise = import('./vendor/lil-gui.esm.js').then((m) => m.GUI, (e) => {
+    showMessage(`The controls panel could not be loaded (vendor/lil-gui.esm.js: ${e.message}); ` +
+                'keys and mouse still work.');
+    return null;
+  });
+  return { titlesPromise, sweepText, guiPromise };
+}
+
+// Keys, pointer and touch on the canvas, and dropped files.
+function attachControls(session, bridge, help, pick) {
   const camera = (change) => session.camera(change);  // a change: the loop draws
   // One teaching view on, or the picture back when it is the one already on.
   const toggleInside = (view) => session.setView({ inside: bridge.view().inside === view ? 'off' : view });
@@ -115,11 +147,11 @@ async function start() {
     click: (x, y) => pick.click(x, y),
   });
   attachDrop(session);
+}
 
-  const scenes = await titlesPromise;
-  const GUI = await guiPromise;
-  const panel = GUI ? buildPanel(GUI, session, {
-    scenes,
+// What the panel's buttons do (beside its settings, which go to the session).
+function panelActions(session, { addressBar, bench, help, autoPick, pick }) {
+  return {
     screenshot: () => screenshot(session, canvas),
     copyLink: () => addressBar.copyLink(),
     pickFiles: () => document.getElementById('file-input').click(),
@@ -127,11 +159,13 @@ async function start() {
     bench: () => bench().catch(() => {}),
     toggleHelp: () => help.toggle(),
     helpLabel: kinds.keys ? 'keys and mouse (?)' : 'touch gestures',
-    resized: resizeCanvas,
     autoReadout: () => autoPick.readout(),
     togglePick: () => pick.toggle(),
-  }) : null;
-  if (!panel) dockPanel(null, resizeCanvas);
+  };
+}
+
+// The scene's title and description under the canvas, following scene loads.
+function describeScene(scenes, session) {
   const description = document.getElementById('scene-description');
   const describe = () => {
     const s = scenes.find((x) => x.name === session.scene.name);
@@ -139,18 +173,6 @@ async function start() {
   };
   session.onChange((kind) => { if (kind === 'scene') describe(); });
   describe();
-
-  loop.start();
-  autoPick.schedule();
-  if (link.pick) pick.explainOnceDrawn(link.pick[0], link.pick[1], () => loop.framesDrawn);
-
-  Object.assign(window.demo, testApi({
-    session, addressBar, sparkline, progress, fps: () => statsLine.fps, panel: () => panel,
-    readPixels: () => readPixels(canvas), screenshot: () => screenshot(session, canvas), bench,
-    framesDrawn: () => loop.framesDrawn, drawingIdle: () => loop.idle, autoPick, pick,
-  }));
-  resolveReady();
-  if (link.bench) bench().catch(() => {});
 }
 
 function sizeCanvasToDisplay() {

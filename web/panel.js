@@ -59,40 +59,73 @@ function addSetting(folder, target, info, apply, id) {
 // starts open in a wide window only, and the layout makes room for it (layout.js). Returns
 // { gui, refresh }.
 export function buildPanel(GUI, session, actions) {
-  const { bridge, schema } = session;
+  const { bridge } = session;
   const gui = new GUI({ title: 'Controls', width: 260, container: document.getElementById('dock') });
   gui.domElement.id = 'panel';
   dockPanel(gui, actions.resized);
   const view = { scene: session.scene.name, cube: session.faceSize(), planner: bridge.planner(),
                  accuracy: bridge.accuracy(), view: bridge.view(), mode: '', staleness: '',
                  lodLevels: '', paused: session.paused };
-  const readOnly = (folder, key, label, id) => {
-    const c = folder.add(view, key).name(label).disable();
-    c.domElement.id = id;
-    return c;
-  };
+  addScenePicker(gui, view, session, actions, () => refresh());
+  const capture = addCaptureFolder(gui, view, session);
+  const accuracy = addAccuracyFolder(gui, view, session, actions, () => refresh());
+  const materials = materialsFolder(gui, session);
+  addTimeAndShareFolders(gui, view, session, actions);
 
+  // Reads everything shown back from the session.
+  function refresh() {
+    const state = bridge.plannerState();
+    const stale = state.maxStalenessFrames;
+    Object.assign(view, {
+      scene: session.scene.name, cube: session.faceSize(), paused: session.paused,
+      mode: session.accuracyRow()?.name || '',
+      staleness: stale > 0 ? `up to ${stale} frame${stale > 1 ? 's' : ''} behind` : 'none: always current',
+      lodLevels: Object.entries(session.lodLevels).filter(([, t]) => t.length > 1)
+        .map(([n, t]) => `${n.replace(/\.obj$/i, '')} ${t.length}`).join(', ') || 'none built',
+    });
+    Object.assign(view.planner, state.settings);
+    Object.assign(view.accuracy, bridge.accuracy());
+    Object.assign(view.view, bridge.view());
+    capture.refresh(state);
+    materials.refresh();
+    for (const c of gui.controllersRecursive()) c.updateDisplay();
+    accuracy.refresh();
+  }
+  session.onChange((kind) => {
+    if (kind === 'scene') materials.show();
+    if (kind !== 'camera') refresh();
+  });
+  materials.show();
+  refresh();
+  return { gui, refresh };
+}
+
+// The scene picker, and the presets (the course's scheme one pick away: its settings then show in
+// the folders). `refresh()`: the panel reads the session again.
+function addScenePicker(gui, view, session, actions, refresh) {
+  const { schema } = session;
   const sceneOptions = Object.fromEntries(actions.scenes.map((sc) => [sc.title || sc.name, sc.name]));
   if (!Object.values(sceneOptions).includes(view.scene)) sceneOptions[view.scene] = view.scene;
   gui.add(view, 'scene', sceneOptions).name('scene').onChange((v) => session.loadScene(v).catch(() => {}))
     .domElement.id = 'control-scene';
-
-  // A named preset: the course's scheme one pick away (its settings then show in the folders).
   const presetNames = (schema.presets || []).map((p) => p.name);
-  if (presetNames.length) {
-    // An action, not a state: the list always shows its prompt, and a pick applies that preset.
-    const options = { 'apply a preset…': '' };
-    for (const name of presetNames) options[name] = name;
+  if (!presetNames.length) return;
+  // An action, not a state: the list always shows its prompt, and a pick applies that preset.
+  const options = { 'apply a preset…': '' };
+  for (const name of presetNames) options[name] = name;
+  view.preset = '';
+  const c = gui.add(view, 'preset', options).name('preset').onChange((v) => {
+    if (v) session.applyPreset(v);
     view.preset = '';
-    const c = gui.add(view, 'preset', options).name('preset').onChange((v) => {
-      if (v) session.applyPreset(v);
-      view.preset = '';
-      refresh();
-    });
-    c.domElement.id = 'control-preset';
-    c.domElement.title = schema.presets.map((p) => `${p.name}: ${p.help}`).join('\n');
-  }
+    refresh();
+  });
+  c.domElement.id = 'control-preset';
+  c.domElement.title = schema.presets.map((p) => `${p.name}: ${p.help}`).join('\n');
+}
 
+// Capture: the cube size, the planner's settings (those the policy does not read hidden), and what
+// follows from them (staleness, LOD levels). { refresh(plannerState) }.
+function addCaptureFolder(gui, view, session) {
   const capture = gui.addFolder('Capture');
   const cubeOptions = [...CUBE_SIZES];
   const addCube = () => {
@@ -105,14 +138,35 @@ export function buildPanel(GUI, session, actions) {
   };
   let cube = addCube();
   const plannerControls = new Map();
-  for (const info of schema.planner) {
+  for (const info of session.schema.planner) {
     plannerControls.set(info.name, addSetting(capture, view.planner, info,
       (v) => session.setPlanner({ [info.name]: v }), `control-${info.name}`));
   }
-  readOnly(capture, 'staleness', 'staleness', 'control-staleness');
-  readOnly(capture, 'lodLevels', 'LOD levels', 'control-lod-levels');
+  readOnly(capture, view, 'staleness', 'staleness', 'control-staleness');
+  readOnly(capture, view, 'lodLevels', 'LOD levels', 'control-lod-levels');
+  return {
+    refresh: (state) => {
+      for (const [name, c] of plannerControls) c.show(!state.unusedSettings?.includes(name));
+      if (!cubeOptions.includes(view.cube)) {  // a size the list lacks (a scene file's own)
+        cube.destroy();
+        cube = addCube();
+      }
+    },
+  };
+}
 
-  // Accuracy: a point on the measured speed/accuracy curve (sweep.csv), and what it costs.
+function readOnly(folder, view, key, label, id) {
+  const c = folder.add(view, key).name(label).disable();
+  c.domElement.id = id;
+  return c;
+}
+
+// Accuracy: a point on the measured speed/accuracy curve (sweep.csv) and what it costs, the view
+// settings (show error, auto and its budget here; those the schema puts in a folder of their own,
+// Inside the frame, in that folder, with the step and pick controls), and the accuracy settings one
+// by one. `refresh()`: the panel reads the session again. { refresh() } rewrites the readouts.
+function addAccuracyFolder(gui, view, session, actions, refresh) {
+  const { schema } = session;
   const accuracy = gui.addFolder('Accuracy (measured modes)');
   accuracy.domElement.id = 'accuracy';
   const rowLabel = (r) => `${r.name}: ${r.psnr.toFixed(1)} dB, ${r.ms.toFixed(0)} ms${r.pareto ? ' ★' : ''}`;
@@ -120,13 +174,8 @@ export function buildPanel(GUI, session, actions) {
   for (const r of session.modes.rows) modeOptions[rowLabel(r)] = r.name;
   accuracy.add(view, 'mode', modeOptions).name('mode')
     .onChange((v) => (v ? session.chooseAccuracy(v).catch(() => {}) : refresh())).domElement.id = 'control-accuracy';
-  const readout = document.createElement('div');
-  readout.id = 'accuracy-readout';
-  readout.className = 'readout';
-  readout.title = 'measured by reflect bench --sweep on the default scene, against the ray-traced reference';
-  accuracy.$children.appendChild(readout);
-  // The view settings: show error (the heat map against the exact mode), auto and its budget
-  // here; those the schema puts in a folder of their own (Inside the frame) in that folder.
+  const readout = addReadout(accuracy, 'accuracy-readout',
+    'measured by reflect bench --sweep on the default scene, against the ray-traced reference');
   const viewFolders = new Map();
   const folderOf = (info) => {
     if (!info.folder) return accuracy;
@@ -138,23 +187,39 @@ export function buildPanel(GUI, session, actions) {
   }
   addStepControl(viewFolders.get('Inside the frame'), session);
   addPickControl(viewFolders.get('Inside the frame'), actions.togglePick);
-  const autoReadout = document.createElement('div');
-  autoReadout.id = 'auto-readout';
-  autoReadout.className = 'readout';
-  autoReadout.title = 'auto: each search timed on this machine, its error measured against the exact mode on this scene';
-  accuracy.$children.appendChild(autoReadout);
+  const autoReadout = addReadout(accuracy, 'auto-readout',
+    'auto: each search timed on this machine, its error measured against the exact mode on this scene');
   const accuracySettings = accuracy.addFolder('settings');
   for (const info of schema.accuracy) {
     addSetting(accuracySettings, view.accuracy, info, (v) => session.setAccuracy({ [info.name]: v }),
                `control-acc-${info.name}`);
   }
   accuracySettings.close();
+  return {
+    refresh: () => {
+      readout.textContent = session.accuracyReadout();
+      autoReadout.textContent = `auto: ${actions.autoReadout ? actions.autoReadout() : 'off'}`;
+    },
+  };
+}
 
-  // The reflective objects' materials: a summary line each, and for those the page may change
-  // (mirrors and glass) a control per material setting but the type.
+function addReadout(folder, id, title) {
+  const readout = document.createElement('div');
+  readout.id = id;
+  readout.className = 'readout';
+  readout.title = title;
+  folder.$children.appendChild(readout);
+  return readout;
+}
+
+// The reflective objects' materials: a summary line each, and for those the page may change
+// (mirrors and glass) a control per material setting but the type. { show() (re)makes the folder
+// for the scene now, refresh() reads the materials back }.
+function materialsFolder(gui, session) {
+  const { bridge, schema } = session;
   let materials = null;
   let materialViews = [];
-  const showMaterials = () => {
+  const show = () => {
     const wasOpen = materials ? !materials._closed : false;
     materials?.destroy();
     materials = gui.addFolder('Materials');
@@ -180,7 +245,20 @@ export function buildPanel(GUI, session, actions) {
     }
     if (!wasOpen) materials.close();
   };
+  const refresh = () => {
+    const objects = bridge.objects();
+    for (const { index, line } of materialViews) {
+      const o = objects[index];
+      if (!o) continue;
+      line.now = o.summary;
+      Object.assign(line.material, o.material);
+    }
+  };
+  return { show, refresh };
+}
 
+// Time and view (pause, a 1/60 s step, reset camera), your models, share and measure.
+function addTimeAndShareFolders(gui, view, session, actions) {
   const time = gui.addFolder('Time and view');
   time.add(view, 'paused').name('paused (Space)').onChange((v) => session.setPaused(v)).domElement.id = 'control-paused';
   time.add({ step: () => session.step() }, 'step').name('step 1/60 s').domElement.id = 'control-step';
@@ -199,42 +277,4 @@ export function buildPanel(GUI, session, actions) {
   share.add(actions, 'copyLink').name('copy link').domElement.id = 'control-link';
   share.add(actions, 'bench').name('run bench').domElement.id = 'control-bench';
   share.add(actions, 'toggleHelp').name(actions.helpLabel || 'keys and mouse (?)').domElement.id = 'control-help';
-
-  // Reads everything shown back from the session.
-  function refresh() {
-    const state = bridge.plannerState();
-    const stale = state.maxStalenessFrames;
-    Object.assign(view, {
-      scene: session.scene.name, cube: session.faceSize(), paused: session.paused,
-      mode: session.accuracyRow()?.name || '',
-      staleness: stale > 0 ? `up to ${stale} frame${stale > 1 ? 's' : ''} behind` : 'none: always current',
-      lodLevels: Object.entries(session.lodLevels).filter(([, t]) => t.length > 1)
-        .map(([n, t]) => `${n.replace(/\.obj$/i, '')} ${t.length}`).join(', ') || 'none built',
-    });
-    Object.assign(view.planner, state.settings);
-    Object.assign(view.accuracy, bridge.accuracy());
-    Object.assign(view.view, bridge.view());
-    for (const [name, c] of plannerControls) c.show(!state.unusedSettings?.includes(name));
-    const objects = bridge.objects();
-    for (const { index, line } of materialViews) {
-      const o = objects[index];
-      if (!o) continue;
-      line.now = o.summary;
-      Object.assign(line.material, o.material);
-    }
-    if (!cubeOptions.includes(view.cube)) {
-      cube.destroy();
-      cube = addCube();
-    }
-    for (const c of gui.controllersRecursive()) c.updateDisplay();
-    readout.textContent = session.accuracyReadout();
-    autoReadout.textContent = `auto: ${actions.autoReadout ? actions.autoReadout() : 'off'}`;
-  }
-  session.onChange((kind) => {
-    if (kind === 'scene') showMaterials();
-    if (kind !== 'camera') refresh();
-  });
-  showMaterials();
-  refresh();
-  return { gui, refresh };
 }

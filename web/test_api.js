@@ -3,11 +3,8 @@
 import { filesFromList, handleFiles } from './drop.js';
 import { messageHistory } from './messages.js';
 
-// page: { session, addressBar, canvas, readPixels, screenshot, bench, fps, sparkline, progress, panel,
-// framesDrawn, idle, autoPick, pick }
-export function testApi(page) {
-  const { session, addressBar } = page;
-  const { bridge } = session;
+// The clock, frames and the camera.
+function timeAndCamera(page, session, bridge) {
   return {
     // One complete frame (dt seconds on), timed end to end; its stats.
     frame: (dt = 0) => session.frame(dt, true),
@@ -20,15 +17,14 @@ export function testApi(page) {
     // setCamera(x, y, z, yaw, pitch) or setCamera({ eye, yaw, pitch }).
     setCamera: (x, y, z, yaw, pitch) =>
       session.camera((b) => b.setCamera(typeof x === 'object' ? x : { eye: [x, y, z], yaw, pitch })),
+  };
+}
+
+// The scene, loading, and the levels of detail built after the first frame.
+function sceneAndLevels(session, bridge) {
+  return {
     // { name, title, meshes, cubeFaceSize, environments }
     scene: () => bridge.scene(),
-    // The planner's settings by schema name, and maxStalenessFrames (read only).
-    planner: () => {
-      const state = bridge.plannerState();
-      return { ...state.settings, maxStalenessFrames: state.maxStalenessFrames };
-    },
-    // setPlanner({ facesPerFrame: 3 }): "" or the error.
-    setPlanner: (changes) => session.setPlanner(changes),
     // Loads another scene (a name or a URL); the current one stays on screen if it fails (the
     // error is shown and thrown).
     loadScene: (nameOrUrl) => session.loadScene(nameOrUrl),
@@ -48,17 +44,19 @@ export function testApi(page) {
     levelsWaiting: () => session.levels.waiting,
     // The longest main-thread task that handed a built piece in (ms).
     longestLevelHandOffMs: () => session.levels.longestHandOffMs,
-    readPixels: () => page.readPixels(),
-    screenshot: () => page.screenshot(),
-    copyLink: () => addressBar.copyLink(),
-    loadFiles: (files) => handleFiles(session, filesFromList(files)),
-    runBench: (frames) => page.bench(frames),
-    benchResults: null,
-    // The link to what is on screen, as the address bar has it.
-    query: () => addressBar.query(),
-    sparkSamples: () => page.sparkline.samples,
-    progressHistory: () => [...page.progress.history],
-    panel: () => page.panel()?.gui || null,
+  };
+}
+
+// The planner's and accuracy settings, the measured modes, the materials and the figures.
+function settingsAndMaterials(session, bridge) {
+  return {
+    // The planner's settings by schema name, and maxStalenessFrames (read only).
+    planner: () => {
+      const state = bridge.plannerState();
+      return { ...state.settings, maxStalenessFrames: state.maxStalenessFrames };
+    },
+    // setPlanner({ facesPerFrame: 3 }): "" or the error.
+    setPlanner: (changes) => session.setPlanner(changes),
     // [{ mesh, material: { type, reflection, base, ior, fresnel, environment }, summary, ... }]
     objects: () => bridge.objects(),
     // Object `index`'s material settings (mirror and glass only): "" or the error.
@@ -72,6 +70,24 @@ export function testApi(page) {
     sweep: () => session.modes.rows,
     accuracyRow: () => session.accuracyRow(),
     figures: () => session.figures.map((f) => ({ name: f.name, source: f.source, object: f.object })),
+  };
+}
+
+// The page around the frame: pixels, the link, the bench, the panel, messages, drawing.
+function pageParts(page, session) {
+  const { addressBar } = page;
+  return {
+    readPixels: () => page.readPixels(),
+    screenshot: () => page.screenshot(),
+    copyLink: () => addressBar.copyLink(),
+    loadFiles: (files) => handleFiles(session, filesFromList(files)),
+    runBench: (frames) => page.bench(frames),
+    benchResults: null,
+    // The link to what is on screen, as the address bar has it.
+    query: () => addressBar.query(),
+    sparkSamples: () => page.sparkline.samples,
+    progressHistory: () => [...page.progress.history],
+    panel: () => page.panel()?.gui || null,
     // Resolves when no scene load, model change or bench is queued or running.
     idle: () => session.idle(),
     // Every message shown, [{ text, kind }], also those that have gone.
@@ -82,13 +98,19 @@ export function testApi(page) {
     // draws none now (paused, nothing changed: the canvas keeps its picture).
     framesDrawn: () => page.framesDrawn(),
     drawingIdle: () => page.drawingIdle(),
+  };
+}
+
+// The view settings, auto, and Inside the frame: stepping, pick a pixel.
+function viewsAndPicks(page, session, bridge) {
+  return {
     // The view settings { showError, auto, budget }; setView({ showError: true }): "" or the error.
     view: () => bridge.view(),
+    setView: (changes) => session.setView(changes),
     // Step through a frame: stepFrame() draws the next step (pausing); frameStep() is the last
     // reply, { step, count, steps: [{ label, pass, face, objects, triangles }] }, or null.
     stepFrame: () => session.stepFrame(),
     frameStep: () => session.stepReply || null,
-    setView: (changes) => session.setView(changes),
     // auto: measure now (a promise of { budget, pick: { index, fits, reason, table }, candidates:
     // [{ name, accuracy, frameMs, psnrDb }] }), and the last such result (or null).
     runAutoPick: () => page.autoPick.run(),
@@ -99,5 +121,19 @@ export function testApi(page) {
     explainPixel: (x, y) => page.pick.explain(x, y),
     pickReadout: () => page.pick.readout(),
     lastPick: () => page.pick.last,
+  };
+}
+
+// page: { session, addressBar, canvas, readPixels, screenshot, bench, fps, sparkline, progress, panel,
+// framesDrawn, idle, autoPick, pick }
+export function testApi(page) {
+  const { session } = page;
+  const { bridge } = session;
+  return {
+    ...timeAndCamera(page, session, bridge),
+    ...sceneAndLevels(session, bridge),
+    ...settingsAndMaterials(session, bridge),
+    ...pageParts(page, session),
+    ...viewsAndPicks(page, session, bridge),
   };
 }

@@ -82,6 +82,24 @@ export function parseQuery(search, schema) {
     cam: null, assets: params.get('assets'), bench: params.has('bench'), frames: null, acc: null,
     planner: {}, accuracy: {}, materials: [], view: {}, pick: null,
   };
+  parsePageKeys(params, state, problems);
+  for (const group of ['planner', 'accuracy', 'view']) {
+    for (const info of schema[group] || []) {
+      if (params.has(info.name)) state[group][info.name] = fromText(info, params.get(info.name));
+    }
+  }
+  parsePreset(params, schema, state, problems);
+  parseRenamedKeys(params, schema, state, notes);
+  parseAccuracyRow(params, schema, state, problems, notes);
+  for (const entry of (params.get('mat') || '').split(';').filter(Boolean)) {
+    const material = parseMaterialEntry(entry, schema, problems, notes);
+    if (material) state.materials.push(material);
+  }
+  return { state, problems, notes };
+}
+
+// The page's own keys (not settings): cube, t, frames, pick, step, cam.
+function parsePageKeys(params, state, problems) {
   const number = (key, ok, expected) => {
     if (!params.has(key)) return null;
     const raw = params.get(key), v = Number(raw);
@@ -91,42 +109,38 @@ export function parseQuery(search, schema) {
     }
     return v;
   };
+  // A comma-separated list of numbers, each passing `ok`, or null (and the problem).
+  const list = (key, count, ok, problem) => {
+    if (!params.has(key)) return null;
+    const parts = params.get(key).split(',').map(Number);
+    if (parts.length === count && parts.every(ok)) return parts;
+    problems.push(`${key}=${params.get(key)}: ${problem}`);
+    return null;
+  };
   state.cube = number('cube', (v) => Number.isInteger(v) && v >= 1, "a whole number of pixels (the scene's size stays)") || 0;
   state.t = number('t', (v) => Math.abs(v) <= 1e9, 'a number of seconds');
   state.frames = number('frames', (v) => Number.isInteger(v) && v >= 1 && v <= 100000, 'a whole number from 1 to 100000');
-  if (params.has('pick')) {
-    const parts = params.get('pick').split(',').map(Number);
-    if (parts.length !== 2 || parts.some((v) => !Number.isInteger(v) || v < 0)) {
-      problems.push(`pick=${params.get('pick')}: expected X,Y, a pixel of the canvas from its top-left corner; no pixel picked`);
-    } else {
-      state.pick = parts;
-    }
-  }
+  state.pick = list('pick', 2, (v) => Number.isInteger(v) && v >= 0,
+    'expected X,Y, a pixel of the canvas from its top-left corner; no pixel picked');
   state.step = number('step', (v) => Number.isInteger(v) && v >= 1 && v <= 100000, 'a step of the frame, from 1');
-  if (params.has('cam')) {
-    const parts = params.get('cam').split(',').map(Number);
-    if (parts.length !== 5 || parts.some((v) => !Number.isFinite(v))) {
-      problems.push(`cam=${params.get('cam')}: expected x,y,z,yaw,pitch; using the scene's camera`);
-    } else {
-      state.cam = parts;
-    }
+  state.cam = list('cam', 5, Number.isFinite, "expected x,y,z,yaw,pitch; using the scene's camera");
+}
+
+// A preset's settings under the link's own: the keys the link gives win.
+function parsePreset(params, schema, state, problems) {
+  if (!params.has('preset')) return;
+  const name = params.get('preset');
+  const preset = (schema.presets || []).find((p) => p.name === name);
+  if (!preset) {
+    problems.push(`preset=${name}: not a preset (${(schema.presets || []).map((p) => p.name).join(', ')}); ignored`);
+    return;
   }
-  for (const group of ['planner', 'accuracy', 'view']) {
-    for (const info of schema[group] || []) {
-      if (params.has(info.name)) state[group][info.name] = fromText(info, params.get(info.name));
-    }
-  }
-  if (params.has('preset')) {
-    // A preset's settings under the link's own: the keys the link gives win.
-    const name = params.get('preset');
-    const preset = (schema.presets || []).find((p) => p.name === name);
-    if (!preset) {
-      problems.push(`preset=${name}: not a preset (${(schema.presets || []).map((p) => p.name).join(', ')}); ignored`);
-    } else {
-      state.planner = { ...preset.planner, ...state.planner };
-      state.accuracy = { ...preset.accuracy, ...state.accuracy };
-    }
-  }
+  state.planner = { ...preset.planner, ...state.planner };
+  state.accuracy = { ...preset.accuracy, ...state.accuracy };
+}
+
+// Links written before each setting had one name: read as the new keys, with a note.
+function parseRenamedKeys(params, schema, state, notes) {
   for (const [old, name] of Object.entries(RENAMED)) {
     if (!params.has(old)) continue;
     const value = params.get(old);
@@ -137,45 +151,52 @@ export function parseQuery(search, schema) {
     state.planner[name] = fromText(byName(schema.planner, name), value);
     notes.push(`${old}=${value}: an old link's key, now ${name}=${value} (applied)`);
   }
+}
+
+// acc=ROW (a measured mode, checked against sweep.csv by the page), or the old form of settings
+// no row has: the words of the old description.
+function parseAccuracyRow(params, schema, state, problems, notes) {
   const acc = params.get('acc');
-  if (acc && acc.includes(',')) {
-    // The old form of settings no row has: the words of the old description.
-    const settings = oldAccuracySettings(acc, schema);
-    if (!settings) {
-      problems.push(`acc=${acc}: neither a measured accuracy mode nor settings; ignored`);
-    } else {
-      const changed = Object.fromEntries(schema.accuracy.filter((i) => settings[i.name] !== i.default)
-        .map((i) => [i.name, settings[i.name]]));
-      state.accuracy = { ...changed, ...state.accuracy };
-      notes.push(`acc=${acc}: an old link's form, now ${changesText(changed, schema.accuracy).replace(/,/g, '&') || 'the defaults'} (applied)`);
-    }
-  } else if (acc) {
-    state.acc = acc;  // checked against sweep.csv by the page
+  if (!acc) return;
+  if (!acc.includes(',')) {
+    state.acc = acc;
+    return;
   }
-  for (const entry of (params.get('mat') || '').split(';').filter(Boolean)) {
-    const m = /^(\d+):(.+)$/.exec(entry);
-    if (!m) {
-      problems.push(`mat=${entry}: expected INDEX:NAME=VALUE,… (${schema.material.map((i) => i.name).join(', ')}); ignored`);
-      continue;
-    }
-    const fields = m[2].split(',');
-    const changes = {};
-    if (!m[2].includes('=')) {  // the old positional form
-      fields.forEach((text, i) => {
-        const name = OLD_MATERIAL_ORDER[i] || `value${i + 1}`;
-        changes[name] = name === 'environment' ? (text === 'sky' ? 'skybox' : text) : fromText(byName(schema.material, name), text);
-      });
-      if (fields.length === 4) changes.environment = 'live';
-      notes.push(`mat=${entry}: an old link's form, now mat=${m[1]}:${changesText(changes, schema.material)} (applied)`);
-    } else {
-      for (const field of fields) {
-        const [name, ...rest] = field.split('=');
-        changes[name] = fromText(byName(schema.material, name), rest.join('='));
-      }
-    }
-    state.materials.push({ index: Number(m[1]), changes, entry });
+  const settings = oldAccuracySettings(acc, schema);
+  if (!settings) {
+    problems.push(`acc=${acc}: neither a measured accuracy mode nor settings; ignored`);
+    return;
   }
-  return { state, problems, notes };
+  const changed = Object.fromEntries(schema.accuracy.filter((i) => settings[i.name] !== i.default)
+    .map((i) => [i.name, settings[i.name]]));
+  state.accuracy = { ...changed, ...state.accuracy };
+  notes.push(`acc=${acc}: an old link's form, now ${changesText(changed, schema.accuracy).replace(/,/g, '&') || 'the defaults'} (applied)`);
+}
+
+// One mat= entry, INDEX:NAME=VALUE,… (or the old positional form, with a note): { index, changes,
+// entry }, or null (and the problem).
+function parseMaterialEntry(entry, schema, problems, notes) {
+  const m = /^(\d+):(.+)$/.exec(entry);
+  if (!m) {
+    problems.push(`mat=${entry}: expected INDEX:NAME=VALUE,… (${schema.material.map((i) => i.name).join(', ')}); ignored`);
+    return null;
+  }
+  const fields = m[2].split(',');
+  const changes = {};
+  if (!m[2].includes('=')) {  // the old positional form
+    fields.forEach((text, i) => {
+      const name = OLD_MATERIAL_ORDER[i] || `value${i + 1}`;
+      changes[name] = name === 'environment' ? (text === 'sky' ? 'skybox' : text) : fromText(byName(schema.material, name), text);
+    });
+    if (fields.length === 4) changes.environment = 'live';
+    notes.push(`mat=${entry}: an old link's form, now mat=${m[1]}:${changesText(changes, schema.material)} (applied)`);
+  } else {
+    for (const field of fields) {
+      const [name, ...rest] = field.split('=');
+      changes[name] = fromText(byName(schema.material, name), rest.join('='));
+    }
+  }
+  return { index: Number(m[1]), changes, entry };
 }
 
 // The query for the page as it is now (Session.linkState): planner settings are written when

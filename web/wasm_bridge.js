@@ -9,43 +9,11 @@
 /* global createReflectModule */
 import { EXPORTS } from './wasm_exports.js';
 
-export async function createBridge(canvas) {
-  // index.html starts the module early, for this canvas; made here otherwise.
-  const Module = await (window.reflectModule || createReflectModule({ canvas }));
-  performance.mark('reflect:wasm-ready');
-  const fn = Object.fromEntries(Object.entries(EXPORTS).map(([name, args]) => [name, Module.cwrap(name, 'string', args)]));
+// An action's reply as "" or its error message.
+const errorOf = (reply) => reply.error || '';
 
-  const call = (name, request = {}) => JSON.parse(fn[name](JSON.stringify(request)));
-  // `bytes` (a typed array) copied into wasm memory for the duration of the call.
-  const callWithData = (name, request, bytes, count = bytes.length) => {
-    const view = new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-    const ptr = Module._malloc(Math.max(view.length, 1));
-    Module.HEAPU8.set(view, ptr);
-    try {
-      return JSON.parse(fn[name](JSON.stringify(request), ptr, count));
-    } finally {
-      Module._free(ptr);
-    }
-  };
-  const errorOf = (reply) => reply.error || '';
-
-  // The pieces of a streamed model go through one staging buffer in wasm memory, allocated once
-  // (at the first piece, before any parse's arrays) and reused; larger pieces go in parts. It is
-  // never reallocated: a new buffer would be placed among a parse's arrays, and split the space
-  // they leave when freed (see core/block_array.h).
-  const kStagingBytes = 64 * 1024;
-  let staging = 0;
-  const feedPiece = (stream, bytes) => {
-    if (!staging) staging = Module._malloc(kStagingBytes);
-    for (let at = 0; at < bytes.length; at += kStagingBytes) {
-      const part = bytes.subarray(at, Math.min(at + kStagingBytes, bytes.length));
-      Module.HEAPU8.set(part, staging);
-      const error = errorOf(JSON.parse(fn.rf_mesh_stream_feed(JSON.stringify({ stream }), staging, part.length)));
-      if (error) return error;
-    }
-    return '';
-  };
-
+// The module's setup, its frames and its clock.
+function frameCalls(call, fn) {
   return {
     // "" or why WebGL2 could not be set up.
     create: () => errorOf(call('rf_create')),
@@ -60,8 +28,13 @@ export async function createBridge(canvas) {
     frameStep: (step) => call('rf_frame_step', { step }),
     time: () => call('rf_clock').seconds,
     setTime: (seconds) => call('rf_clock', { seconds }).seconds,
+  };
+}
 
-    // { eye: [x, y, z], yaw, pitch } (degrees). Each change returns the camera after it.
+// The camera: each change returns the camera after it.
+function cameraCalls(call) {
+  return {
+    // { eye: [x, y, z], yaw, pitch } (degrees).
     camera: () => call('rf_camera'),
     setCamera: ({ eye, yaw, pitch }) => call('rf_camera', { eye, yaw, pitch }),
     // Steps of 0.1 along the view (forward), to the right (level) and up.
@@ -69,7 +42,12 @@ export async function createBridge(canvas) {
     // A pointer drag of (dx, dy) over a canvas `height` pixels tall.
     dragCamera: ({ dx, dy, height }) => call('rf_camera', { drag: { dx, dy, height } }),
     resetCamera: () => call('rf_camera', { reset: true }),
+  };
+}
 
+// The planner's, accuracy and view settings (by the schema's names) and the frame-budget pick.
+function settingsCalls(call) {
+  return {
     // The planner's settings; plannerState adds what follows from them: { settings,
     // maxStalenessFrames, policyParameters, unusedSettings }.
     planner: () => call('rf_planner_json').settings || {},
@@ -78,7 +56,6 @@ export async function createBridge(canvas) {
     accuracy: () => call('rf_accuracy_json').settings || {},
     accuracyDescription: () => call('rf_accuracy_json').describe || '',
     setAccuracy: (changes) => errorOf(call('rf_set_accuracy', changes)),
-    // The settings a description (the sweep's `setting` column) names, or null.
 
     // The page's view settings { showError, auto, budget }; setView(changes): "" or the error.
     view: () => call('rf_view_json').settings || {},
@@ -87,7 +64,12 @@ export async function createBridge(canvas) {
     // measured { name, accuracy, frameMs, psnrDb }: { index, fits, reason, table }.
     budgetCandidates: () => call('rf_budget_candidates'),
     pickAccuracy: ({ budget, candidates }) => call('rf_pick_accuracy', { budget, candidates }),
+  };
+}
 
+// The scene: its objects and materials, and loading one in stages (files, streamed models, skybox images).
+function sceneCalls(call, callWithData, feedPiece) {
+  return {
     // [{ mesh, material: { type, reflection, ... }, summary, reflective, editable, orbits, translate }]
     objects: () => call('rf_objects_json'),
     // { index: the object's place, changes: { reflection: 0.5, ... } }
@@ -129,7 +111,12 @@ export async function createBridge(canvas) {
     skyboxImage: ({ index, source, bytes }) =>
       errorOf(callWithData('rf_pending_skybox_image', { index, source }, bytes)),
     commitScene: ({ cubeSize = 0 } = {}) => call('rf_commit_scene', { cubeSize }),
+  };
+}
 
+// The meshes' levels of detail for the page's worker, their arrays and bounds, wasm memory, and pick a pixel.
+function meshCalls(call, callWithData, Module) {
+  return {
     // Level 0 of mesh `name` copied out of wasm memory: { positions: Float32Array (6 floats a
     // vertex), indices: Uint32Array }, or null.
     meshLevelZero: (name) => {
@@ -167,5 +154,50 @@ export async function createBridge(canvas) {
       const bounds = call('rf_mesh_bounds_json', { name });
       return bounds.min ? bounds : null;
     },
+  };
+}
+
+export async function createBridge(canvas) {
+  // index.html starts the module early, for this canvas; made here otherwise.
+  const Module = await (window.reflectModule || createReflectModule({ canvas }));
+  performance.mark('reflect:wasm-ready');
+  const fn = Object.fromEntries(Object.entries(EXPORTS).map(([name, args]) => [name, Module.cwrap(name, 'string', args)]));
+
+  const call = (name, request = {}) => JSON.parse(fn[name](JSON.stringify(request)));
+  // `bytes` (a typed array) copied into wasm memory for the duration of the call.
+  const callWithData = (name, request, bytes, count = bytes.length) => {
+    const view = new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    const ptr = Module._malloc(Math.max(view.length, 1));
+    Module.HEAPU8.set(view, ptr);
+    try {
+      return JSON.parse(fn[name](JSON.stringify(request), ptr, count));
+    } finally {
+      Module._free(ptr);
+    }
+  };
+
+  // The pieces of a streamed model go through one staging buffer in wasm memory, allocated once
+  // (at the first piece, before any parse's arrays) and reused; larger pieces go in parts. It is
+  // never reallocated: a new buffer would be placed among a parse's arrays, and split the space
+  // they leave when freed (see core/block_array.h).
+  const kStagingBytes = 64 * 1024;
+  let staging = 0;
+  const feedPiece = (stream, bytes) => {
+    if (!staging) staging = Module._malloc(kStagingBytes);
+    for (let at = 0; at < bytes.length; at += kStagingBytes) {
+      const part = bytes.subarray(at, Math.min(at + kStagingBytes, bytes.length));
+      Module.HEAPU8.set(part, staging);
+      const error = errorOf(JSON.parse(fn.rf_mesh_stream_feed(JSON.stringify({ stream }), staging, part.length)));
+      if (error) return error;
+    }
+    return '';
+  };
+
+  return {
+    ...frameCalls(call, fn),
+    ...cameraCalls(call),
+    ...settingsCalls(call),
+    ...sceneCalls(call, callWithData, feedPiece),
+    ...meshCalls(call, callWithData, Module),
   };
 }
