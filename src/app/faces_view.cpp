@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstring>
 
 #include "core/bitmap_font.h"
 #include "gfx/cube_readback.h"
@@ -63,34 +62,8 @@ Result<RgbaImage> composeFacesView(const SceneRenderer& renderer, const Scene& s
 }
 
 RgbaImage messageImage(const std::string& text, int width, int height) {
-  RgbaImage image;
-  image.width = width;
-  image.height = height;
-  image.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
-  for (size_t p = 0; p < image.pixels.size(); p += 4) {
-    std::memcpy(&image.pixels[p], kCrossBackground.data(), 4);
-  }
-  // Word-wrapped at the image's width, from the top-left corner with a margin.
-  const int margin = 12;
-  const int perLine = std::max(1, (width - 2 * margin) / kGlyphAdvance);
-  std::string line;
-  int y = margin;
-  const auto flush = [&]() {
-    drawText(image, margin, y, line, {235, 235, 235, 255});
-    y += kGlyphHeight + 5;
-    line.clear();
-  };
-  size_t start = 0;
-  const std::string shown = upper(text);
-  while (start < shown.size()) {
-    size_t end = shown.find(' ', start);
-    if (end == std::string::npos) end = shown.size();
-    const std::string word = shown.substr(start, end - start);
-    if (!line.empty() && static_cast<int>(line.size() + 1 + word.size()) > perLine) flush();
-    line += (line.empty() ? "" : " ") + word;
-    start = end + 1;
-  }
-  if (!line.empty()) flush();
+  RgbaImage image = backgroundImage(width, height);
+  drawWrappedText(image, 12, upper(text), {235, 235, 235, 255});
   return image;
 }
 

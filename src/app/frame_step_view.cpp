@@ -12,42 +12,13 @@ namespace reflect {
 namespace {
 
 constexpr int kMargin = 12;
-constexpr int kLineHeight = kGlyphHeight + 5;
-
-RgbaImage background(int width, int height) {
-  RgbaImage image;
-  image.width = width;
-  image.height = height;
-  image.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
-  for (size_t p = 0; p < image.pixels.size(); p += 4) {
-    std::memcpy(&image.pixels[p], kCrossBackground.data(), 4);
-  }
-  return image;
-}
 
 // Draws `text` (upper case, the font's) word-wrapped from the top-left margin; returns the first
 // row below it.
 int drawTitle(RgbaImage& image, const std::string& text) {
   std::string shown = text;
   for (char& c : shown) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  const int perLine = std::max(1, (image.width - 2 * kMargin) / kGlyphAdvance);
-  int y = kMargin;
-  std::string line;
-  size_t start = 0;
-  while (start < shown.size()) {
-    size_t end = shown.find(' ', start);
-    if (end == std::string::npos) end = shown.size();
-    const std::string word = shown.substr(start, end - start);
-    if (!line.empty() && static_cast<int>(line.size() + 1 + word.size()) > perLine) {
-      drawText(image, kMargin, y, line, {235, 235, 235, 255});
-      y += kLineHeight;
-      line.clear();
-    }
-    line += (line.empty() ? "" : " ") + word;
-    start = end + 1;
-  }
-  if (!line.empty()) drawText(image, kMargin, y, line, {235, 235, 235, 255});
-  return y + kLineHeight + kMargin;
+  return drawWrappedText(image, kMargin, shown, {235, 235, 235, 255}) + kMargin;
 }
 
 // Copies `content` into `image` centred in the rows from `top` down (cut where it is larger).
@@ -111,7 +82,7 @@ Result<RgbaImage> captureStepImage(const SceneRenderer& renderer, const FrameSte
     return Result<RgbaImage>::failure("the probe of object " + std::to_string(step.reflector + 1) +
                                       " has no target");
   }
-  RgbaImage image = background(width, height);
+  RgbaImage image = backgroundImage(width, height);
   const int top = drawTitle(image, stepTitle(step, index, count));
   Result<RgbaImage> content = stepContent(*target, step, width - 2 * kMargin, height - top);
   if (!content) return content;

@@ -1,5 +1,6 @@
 #include "core/bitmap_font.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 
@@ -110,6 +111,30 @@ void drawText(RgbaImage& image, int x, int y, const std::string& text,
       }
     }
   }
+}
+
+int drawWrappedText(RgbaImage& image, int margin, const std::string& text,
+                    const std::array<uint8_t, 4>& rgba) {
+  constexpr int kLineHeight = kGlyphHeight + 5;
+  const int perLine = std::max(1, (image.width - 2 * margin) / kGlyphAdvance);
+  int y = margin;
+  std::string line;
+  const auto flush = [&]() {
+    drawText(image, margin, y, line, rgba);
+    y += kLineHeight;
+    line.clear();
+  };
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!line.empty() && static_cast<int>(line.size() + 1 + word.size()) > perLine) flush();
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  if (!line.empty()) flush();
+  return y;
 }
 
 }  // namespace reflect

@@ -27,4 +27,10 @@ int textWidth(const std::string& text, int scale);
 void drawText(RgbaImage& image, int x, int y, const std::string& text,
               const std::array<uint8_t, 4>& rgba, int scale = 1);
 
+// Writes `text` word-wrapped to the image's width less `margin` each side, its first line's
+// top-left corner at (margin, margin), lines kGlyphHeight + 5 apart; returns the row below the
+// last line.
+int drawWrappedText(RgbaImage& image, int margin, const std::string& text,
+                    const std::array<uint8_t, 4>& rgba);
+
 }  // namespace reflect

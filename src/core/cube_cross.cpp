@@ -60,6 +60,15 @@ void drawLegend(RgbaImage& view, const CrossGeometry& g, const std::array<FaceMa
 
 }  // namespace
 
+RgbaImage backgroundImage(int width, int height) {
+  RgbaImage image;
+  image.width = width;
+  image.height = height;
+  image.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  fillRect(image, 0, 0, width, height, kCrossBackground);
+  return image;
+}
+
 const char* facesChannelName(FacesChannel channel) {
   static const char* const kNames[] = {"colour", "distance", "layer2"};  // FacesChannel's order
   return kNames[static_cast<size_t>(channel)];

@@ -18,6 +18,8 @@ namespace reflect {
 
 // The view's background (the page fills the canvas around the cross with it).
 inline constexpr std::array<uint8_t, 4> kCrossBackground{24, 24, 28, 255};
+// A width x height image of that background, for the views' other images (messages, steps).
+RgbaImage backgroundImage(int width, int height);
 
 // What the frame did to one face.
 struct FaceMark {
