@@ -53,6 +53,12 @@ struct AccuracySettings {
   bool mipmaps = false;    // trilinear lookup from a mip chain rebuilt after each capture
   bool halfFloat = false;  // RGBA16F capture colour instead of RGBA8
   bool mediump = false;    // fragment shaders at mediump instead of highp
+  // Rough mirrors (core/ggx.h, docs/rough.md): the prefilter pass's GGX samples per texel, the
+  // number of prefiltered mip levels (level m holds roughness m / roughLevels), and the fixed
+  // lobe rays a traced pixel casts.
+  int filterSamples = 32;
+  int roughLevels = 5;
+  int lobeRays = 16;
 
   bool operator==(const AccuracySettings&) const = default;
   // e.g. "centre, hierarchical, layers 2, glass 2, depth 24, linear, RGBA8, highp"

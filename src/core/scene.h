@@ -56,6 +56,9 @@ struct SceneObject {
   float base = 0.3f;
   float ior = 1.52f;     // glass (air to glass); also sets Fresnel's F0
   bool fresnel = false;  // Schlick weighting instead of the fixed mix
+  // Mirror: 0 a perfect mirror (the course), up to 1; the environment is averaged over a GGX lobe
+  // of alpha = roughness^2 (core/ggx.h, docs/rough.md). Glass ignores it (not built).
+  float roughness = 0.0f;
   // Objects with the same probe group >= 0 share one live probe; -1 = a probe of its own.
   int probeGroup = -1;
   // Where its live probe captures from, in world space; unset = the centre of the mesh bounds.
@@ -70,9 +73,12 @@ struct SceneObject {
     Environment environment;
     float reflection, base, ior;
     bool fresnel;
+    float roughness;
     bool operator==(const Look&) const = default;
   };
-  Look look() const { return {material, environment, reflection, base, ior, fresnel}; }
+  Look look() const { return {material, environment, reflection, base, ior, fresnel, roughness}; }
+  // A mirror whose reflection is blurred by a lobe (and so reads a prefiltered probe).
+  bool rough() const { return material == Material::Mirror && roughness > 0.0f; }
   bool needsLiveProbe() const { return usesEnvironment() && environment == Environment::LiveProbe; }
 };
 

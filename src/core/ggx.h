@@ -1,0 +1,64 @@
+// The GGX (Trowbridge-Reitz) lobe of a rough mirror, in one place for every C++ user: the
+// reference's Monte Carlo estimate (src/reference/), the planner's choice of filtered levels and
+// the tests. shaders/ggx.glsl is the same functions, term by term and with the same names, for the
+// probe's prefilter pass and the exact mode's lobe rays.
+//
+// What a rough mirror sees (docs/rough.md): the environment averaged over its GGX lobe, weighed by
+// the Smith-GGX microfacet reflectance times the cosine, normalised so that a uniform environment
+// is seen unchanged. Fresnel stays where it was (the course's mix, or Schlick at the view angle),
+// so roughness 0 is the perfect mirror of before.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace reflect {
+
+// The lobe's alpha from the material's roughness (0..1): roughness squared, as three.js, Filament
+// and Unreal map it, so that equal roughness steps look like equal steps of blur.
+inline float ggxAlpha(float roughness) {
+  const float r = glm::clamp(roughness, 0.0f, 1.0f);
+  return r * r;
+}
+
+// Point i of the n-point Hammersley set: (i / n, the base-2 radical inverse of i). The exact mode
+// and the prefilter pass use the same fixed set for every pixel (no noise; structured error).
+glm::vec2 hammersley(uint32_t i, uint32_t n);
+
+// A right-handed orthonormal frame around the unit vector n: columns tangent, bitangent, n.
+glm::mat3 frameAround(const glm::vec3& n);
+
+// The half vector for the uniform point u on the unit square, distributed as D(h) (n.h) around
+// the unit normal n: phi = 2 pi u.x, cos(theta)^2 = (1 - u.y) / (1 + (alpha^2 - 1) u.y).
+glm::vec3 ggxHalfVector(const glm::vec2& u, float alpha, const glm::vec3& n);
+
+// GGX's normal distribution D(h) = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2).
+float ggxDistribution(float nDotH, float alpha);
+
+// Smith's masking for one direction: 2 c / (c + sqrt(alpha^2 + (1 - alpha^2) c^2)).
+float smithG1(float cosine, float alpha);
+
+// The weight of the lobe sample l = reflect(-v, h) whose h came from ggxHalfVector: the
+// reflectance times the cosine over the sample's density, G1(v) G1(l) (v.h) / ((n.v) (n.h));
+// 0 when l is below the surface. A rough mirror sees sum(w L(l)) / sum(w).
+float lobeSampleWeight(float nDotV, float nDotL, float nDotH, float vDotH, float alpha);
+
+// The prefilter pass's source level for one of `samples` lobe samples (filtered importance
+// sampling, Colbert and Krivanek 2007): the mip whose texel covers the sample's share of the lobe,
+// 1 / (samples pdf), with the lobe seen along its normal (v = n, so pdf = D / 4), plus one level
+// to overlap neighbours. faceSize: the source's level 0.
+float prefilterSourceLod(float nDotH, float alpha, int samples, int faceSize);
+
+// The prefiltered probe's levels (docs/rough.md): level m of `levels` holds roughness m / levels
+// at face size faceSize >> m (at least 1); level 0 is the capture itself. A reader of roughness r
+// reads level r * levels, between its two neighbours. The levels a reader needs: the two around
+// r * levels, without 0; none for roughness 0.
+struct RoughLevels {
+  int lower = 0;  // 0: the capture itself
+  int upper = 0;
+};
+RoughLevels roughLevelsFor(float roughness, int levels);
+float roughnessOfLevel(int level, int levels);
+
+}  // namespace reflect
