@@ -104,6 +104,7 @@ ProgramKey SceneRenderer::keyFor(const Scene& scene, const FramePlan& plan, cons
   }
   key.look = Look::Environment;
   key.refracts = object.material == Material::Glass;
+  key.rough = object.rough();
   if (plan.traces(item.object)) {
     key.search = Search::Exact;
     // Rays that can meet another mirror, glass or cube-textured object (or glass's own far
