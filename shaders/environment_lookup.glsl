@@ -85,10 +85,31 @@ void leaveGlassSphere(inout vec3 origin, inout vec3 d) {
   }
 }
 
+#if ROUGH == 1
+uniform samplerCube u_prefiltered;  // the probe's rough levels (gfx/probe_prefilter.h)
+uniform float u_roughLod;           // roughness x roughLevels: the rough level this mirror reads
+
+// A rough mirror: its lobe read from the probe's prefiltered levels around `centre`, the
+// direction the search looked up along (so the distance correction moves the lobe's centre; its
+// width stays as seen from the probe centre). Between rough levels 0 and 1 the sharp reflection
+// the search found (`sharp`, level 0: the capture itself) blends with level 1; above, the
+// filtered cube's own trilinear filtering blends the two levels around u_roughLod (its mip i is
+// rough level i + 1). Both reads always run: no branch for a software rasteriser to pay twice.
+vec3 roughSeen(vec3 sharp, vec3 centre) {
+  vec3 first = textureLod(u_prefiltered, centre, 0.0).rgb;
+  vec3 above = textureLod(u_prefiltered, centre, max(u_roughLod - 1.0, 0.0)).rgb;
+  return u_roughLod < 1.0 ? mix(sharp, first, u_roughLod) : above;
+}
+#endif
+
 // The mirror's reflected ray from `origin` along `R`: what it sees, and in `measured` the
 // direction it was looked up along.
 vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
-  return environmentAlong(origin, R, measured);
+  vec3 seen = environmentAlong(origin, R, measured);
+#if ROUGH == 1
+  seen = roughSeen(seen, measured);
+#endif
+  return seen;
 }
 
 // Glass at `origin` (view ray I, normal N, refracted ray T, `total` where T is zero): what the

@@ -39,6 +39,9 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
   for (ProbeLayout& probe : planner::probesOf(objects)) {
     plan.probes.push_back(ProbePlan{std::move(probe), {}});
     planner::decideStorage(plan.probes.back(), objects, context);
+    std::vector<int> levels;  // which levels there are; nothing is filtered here
+    planner::decideFiltering(plan.probes.back(), objects, context, levels);
+    plan.probes.back().filterFaces = 0;
   }
   return plan;
 }
@@ -187,6 +190,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
     planner::decideStorage(probe, objects, context);
     ProbeMemory& memory = memoryOf(probe.reflector);
     if (chooseProbeMethod(probe, objects, context, settings, view, memory) == Method::Trace) {
+      memory.filteredLevels.clear();  // a trace keeps no filtered levels either
       plan.traced.push_back(static_cast<ProbeLayout&>(probe));
       continue;
     }
@@ -194,6 +198,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       recapturedForRealChange.insert(recapturedForRealChange.end(), probe.members.begin(),
                                      probe.members.end());
     }
+    planner::decideFiltering(probe, objects, context, memory.filteredLevels);
     plan.probes.push_back(std::move(probe));
   }
   // The exact mode traces every mirror and glass, a static skybox's users too.

@@ -126,6 +126,13 @@ struct ProbePlan : ProbeLayout {
   // its reflectors is a mirror or glass (a cube-textured object looks its cube up by its own
   // rule): no search, and no depths stored for one.
   bool plainLookupSuffices = false;
+  // Rough mirrors (core/ggx.h): the prefiltered levels the probe's readers need (ascending, from
+  // 1 to accuracy.roughLevels; level 0 is the capture itself), empty when none is rough: then
+  // there is no filtered texture and no filter pass. `filterFaces` (bit f for face f): the faces
+  // whose levels are filtered this frame: all six when a face was captured (a lobe reads across
+  // face edges) or the levels needed changed, else none.
+  std::vector<int> roughLevels{};
+  unsigned filterFaces = 0;
 };
 
 // The plain lookup (the cube map along the ray's direction d) is off by the parallax angle
@@ -219,6 +226,7 @@ class FramePlanner {
     glm::vec3 centre{0.0f};
     int layers = 1;
     bool plainLookupSuffices = false;  // (the capture then stores no depths)
+    std::vector<int> filteredLevels;   // the prefiltered levels as last filtered
     CaptureContext context;
     std::array<FaceMemory, 6> faces;
     int sliceCursor = 0;

@@ -20,7 +20,11 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<Plann
     const PlannedObject& o = objects[i];
     if (!o.levels.empty()) c.trace.triangles += static_cast<double>(o.levels[0].triangles);
     if (contains(probe.members, static_cast<int>(i))) {
-      c.trace.pixels += screenPixels(worldCentreOf(o), worldRadiusOf(o), view);
+      const float pixels = screenPixels(worldCentreOf(o), worldRadiusOf(o), view);
+      c.trace.pixels += pixels;
+      if (o.look.material == Material::Mirror && o.look.roughness > 0.0f) {
+        c.trace.lobePixels += pixels;
+      }
     } else {
       c.trace.general |= o.look.material != Material::Phong;
     }
@@ -58,6 +62,15 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<Plann
   c.capture.triangles *= share;
   c.capture.texels *= share;
   c.capture.pixels = probe.plainLookupSuffices ? 0.0 : c.trace.pixels;
+  c.trace.lobeRays = context.accuracy.lobeRays;
+  if (c.capture.faces > 0.0) {
+    ProbePlan filtered = probe;
+    std::vector<int> none;
+    planner::decideFiltering(filtered, objects, context, none);
+    c.capture.filterSamples =
+        share * planner::filterSamplesFor(filtered.roughLevels, context.faceSize,
+                                          context.accuracy.filterSamples);
+  }
   c.traceMs = traceCost(c.trace, costs_);
   c.captureMs = captureCost(c.capture, costs_);
   return c;

@@ -33,18 +33,20 @@ MethodCosts MethodCosts::softwareRenderer() {
   c.triangle = 1.0e-4;
   c.texel = 1.5e-5;
   c.searchPixel = 2.7e-4;
+  c.filterSample = 2.0e-6;
   return c;
 }
 
 double traceCost(const TraceWork& work, const MethodCosts& costs) {
   const double levels = std::log2(std::max(work.triangles, 1.0));
   const double perPixel = costs.tracePixel + costs.tracePixelLevel * levels;
-  return work.pixels * perPixel * (work.general ? costs.generalFactor : 1.0);
+  const double rays = work.pixels + work.lobePixels * (work.lobeRays - 1.0);
+  return rays * perPixel * (work.general ? costs.generalFactor : 1.0);
 }
 
 double captureCost(const CaptureWork& work, const MethodCosts& costs) {
   return work.faces * costs.face + work.triangles * costs.triangle + work.texels * costs.texel +
-         work.pixels * costs.searchPixel;
+         work.pixels * costs.searchPixel + work.filterSamples * costs.filterSample;
 }
 
 Method chooseMethod(double trace, double capture, Method current, const MethodCosts& costs) {

@@ -23,6 +23,9 @@ struct TraceWork {
   double pixels = 0.0;     // mirror pixels on screen (the reflectors' projected discs)
   double triangles = 0.0;  // the scene's triangles (the BVH's depth grows with their log)
   bool general = false;    // rays may meet other mirrors or glass (the general tracer)
+  // Of `pixels`, those of rough mirrors: each traces `lobeRays` rays (accuracy.lobeRays).
+  double lobePixels = 0.0;
+  double lobeRays = 1.0;
 };
 
 struct CaptureWork {
@@ -30,6 +33,9 @@ struct CaptureWork {
   double triangles = 0.0;  // triangles drawn into them a frame, every pass
   double texels = 0.0;     // face texels drawn a frame, every pass
   double pixels = 0.0;     // mirror pixels on screen that search the probe
+  // Rough readers: the prefilter pass's texels times its samples a frame (all six faces of each
+  // level kept, when a face was redrawn).
+  double filterSamples = 0.0;
 };
 
 struct MethodCosts {
@@ -40,6 +46,7 @@ struct MethodCosts {
   double triangle = 0.0;         // ms per triangle drawn into a face
   double texel = 0.0;            // ms per face texel drawn
   double searchPixel = 0.0;      // ms per mirror pixel's search
+  double filterSample = 0.0;     // ms per filtered texel per GGX sample (the prefilter pass)
   // Switch methods only when the other is cheaper by this factor, so a reflector near the
   // balance does not flip (and recapture) from frame to frame.
   double hysteresis = 1.2;

@@ -36,4 +36,13 @@ int chooseLevel(const PlannedObject& o, const glm::vec3& centre, float pixelsPer
 void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
                    const CaptureContext& context);
 
+// The prefiltered levels a probe's rough readers need (ProbePlan::roughLevels), and the faces to
+// filter this frame given the levels filtered before (`filtered`, updated).
+void decideFiltering(ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                     const CaptureContext& context, std::vector<int>& filtered);
+
+// What the prefilter pass does a frame for `levels` of a probe of faceSize: texels filtered times
+// samples each, every face of every level (ProbePlan::filterFaces is all six or none).
+double filterSamplesFor(const std::vector<int>& levels, int faceSize, int samples);
+
 }  // namespace reflect::planner

@@ -16,6 +16,7 @@ inline constexpr GLint kPyramidUnit = 1;       // usampler2D: its depth pyramid 
 inline constexpr GLint kEnvironment2Unit = 2;  // samplerCube: its second layer's colours
 inline constexpr GLint kPeelDepthsUnit = 4;    // usampler2DArray: the layer a peel draws behind
 inline constexpr GLint kPeelBacksUnit = 5;     // usampler2DArray: the backs it also peels behind
+inline constexpr GLint kPrefilteredUnit = 10;  // samplerCube: a rough reader's prefiltered levels
 
 struct CaptureState {
   int layer = 0;  // 0 the main pass, 1 a capture's first layer, 2 its second

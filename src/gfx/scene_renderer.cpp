@@ -252,6 +252,10 @@ void SceneRenderer::abandon() {
   skybox_.reset();
   for (auto& [index, target] : probes_) target.abandon();
   probes_.clear();
+  for (auto& [index, cube] : prefiltered_) cube.abandon();
+  prefiltered_.clear();
+  if (prefilter_) prefilter_->abandon();
+  prefilter_.reset();
   meshes_ = nullptr;  // the owner of the set abandons it
 }
 

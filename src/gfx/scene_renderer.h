@@ -24,6 +24,7 @@
 #include "gfx/cube_capture_target.h"
 #include "gfx/glass_interior_map.h"
 #include "gfx/mesh_buffer.h"
+#include "gfx/probe_prefilter.h"
 #include "gfx/program_key.h"
 #include "gfx/shader_program.h"
 #include "gfx/skybox_pass.h"
@@ -89,6 +90,10 @@ class SceneRenderer {
   GLuint probeTexture(int owner) const;
   // Its depth chain (0 without one), for tests.
   const CubeCaptureTarget* probeTarget(int owner) const;
+  // Prefiltered cubes made so far (one per probe with a rough reader), and the GGX samples the
+  // last capture's prefilter passes took (texels x samples): for tests and the frame's stats.
+  size_t prefilteredCubes() const { return prefiltered_.size(); }
+  double lastFilterSamples() const { return lastFilterSamples_; }
   // Glass interior maps made so far (one per non-sphere glass mesh in use), for tests.
   size_t glassInteriorMaps() const { return glassInteriors_.count(); }
   // After a lost context: drop every GL name without deleting (the context took them).
@@ -108,7 +113,8 @@ class SceneRenderer {
   struct EnvironmentUniforms {
     GLint colour = -1, reflectionWeight = -1, baseWeight = -1, eta = -1, fresnelF0 = -1,
           fresnel = -1, twoSurfaces = -1, glassSphere = -1, probeCentre = -1, distanceUnit = -1,
-          outputDirection = -1, layers = -1, faceSize = -1, topLevel = -1, pyramidTile = -1;
+          outputDirection = -1, layers = -1, faceSize = -1, topLevel = -1, pyramidTile = -1,
+          roughLod = -1;
   };
   // One variant (program_key.h) and where its uniforms are; a uniform the variant does not use is
   // -1, which GL ignores.
@@ -160,6 +166,8 @@ class SceneRenderer {
   // Whether object `index`'s lookup searches its probe's depths (its probe is captured, is no
   // skybox, and not every surface it sees is far enough for the plain lookup).
   bool searchesFor(const Scene& scene, const FramePlan& plan, int index) const;
+  // After the faces are drawn: each probe's rough levels the plan filters this frame.
+  Result<double> prefilterProbes(const FramePlan& plan);
   // Makes the interior maps of the scene's glass meshes that are not spheres the first time they
   // are needed (glassSurfaces 2).
   void prepareGlassExits(const Scene& scene, double seconds);
@@ -182,7 +190,10 @@ class SceneRenderer {
   TextureHandle emptyDepths_;
   TextureHandle emptyPyramid_;
   VertexArrayHandle emptyVertexArray_;  // the reduction's fullscreen triangle has no attributes
-  std::map<int, CubeCaptureTarget> probes_;  // by owning object's index
+  std::map<int, CubeCaptureTarget> probes_;     // by owning object's index
+  std::map<int, PrefilteredCube> prefiltered_;  // by owning object's index: rough readers only
+  std::unique_ptr<ProbePrefilter> prefilter_;   // built the first time a probe is filtered
+  double lastFilterSamples_ = 0.0;
   AccuracySettings accuracy_;
   const MeshBuffers* meshes_ = nullptr;
   std::map<std::string, uint64_t> glassMeshSerials_;  // each glass mesh's serial when last seen

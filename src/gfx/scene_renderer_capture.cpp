@@ -174,12 +174,45 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
     glEnable(GL_DEPTH_TEST);
     if (capturesDepths(probe, accuracy_) && job.stopAfterStep()) going = false;
   }
+  if (going) {
+    Result<double> filtered = prefilterProbes(plan);
+    if (!filtered) return Result<PassCounts>::failure(filtered.error());
+  }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindVertexArray(0);
   checkGlError("capture");
   return counts;
+}
+
+Result<double> SceneRenderer::prefilterProbes(const FramePlan& plan) {
+  lastFilterSamples_ = 0.0;
+  // A probe no rough reader reads any more keeps no filtered cube.
+  for (auto it = prefiltered_.begin(); it != prefiltered_.end();) {
+    const ProbePlan* probe = plan.probeOf(it->first);
+    const bool needed = probe && probe->reflector == it->first && !probe->roughLevels.empty();
+    it = needed ? std::next(it) : prefiltered_.erase(it);
+  }
+  for (const ProbePlan& probe : plan.probes) {
+    if (probe.filterFaces == 0 || probe.roughLevels.empty()) continue;
+    auto captured = probes_.find(probe.reflector);
+    if (captured == probes_.end()) continue;  // nothing captured yet to filter
+    if (!prefilter_) {
+      Result<ProbePrefilter> made = ProbePrefilter::create();
+      if (!made) return Result<double>::failure(made.error());
+      prefilter_ = std::make_unique<ProbePrefilter>(made.take());
+    }
+    const CubeCaptureTarget& t = captured->second;
+    glBindVertexArray(emptyVertexArray_.id());
+    const PrefilterJob job{t.texture(0),      t.faceSize(),          t.format().halfFloat,
+                           probe.roughLevels, accuracy_.roughLevels, accuracy_.filterSamples,
+                           probe.filterFaces};
+    Result<double> taken = prefilter_->filter(job, prefiltered_[probe.reflector]);
+    if (!taken) return taken;
+    lastFilterSamples_ += taken.value();
+  }
+  return lastFilterSamples_;
 }
 
 }  // namespace reflect

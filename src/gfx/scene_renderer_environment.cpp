@@ -61,10 +61,12 @@ Result<SceneRenderer::Program> SceneRenderer::buildProgram(const ProgramKey& key
                               at("u_eta"),          at("u_fresnelF0"),        at("u_fresnel"),
                               at("u_twoSurfaces"),  at("u_glassSphere"),      at("u_probeCentre"),
                               at("u_distanceUnit"), at("u_outputDirection"),  at("u_layers"),
-                              at("u_faceSize"),     at("u_topLevel"),         at("u_pyramidTile")};
+                              at("u_faceSize"),     at("u_topLevel"),         at("u_pyramidTile"),
+                              at("u_roughLod")};
       glUniform1i(at("u_environment"), kEnvironmentUnit);
       glUniform1i(at("u_environment2"), kEnvironment2Unit);
       glUniform1i(at("u_pyramid"), kPyramidUnit);
+      if (key.rough) glUniform1i(at("u_prefiltered"), kPrefilteredUnit);
       if (key.search == Search::Hierarchical) setFaceFrames(p);
       if (key.glassExit) out.glassExit = GlassExitUniforms::of(p);
       break;
@@ -104,7 +106,7 @@ ProgramKey SceneRenderer::keyFor(const Scene& scene, const FramePlan& plan, cons
   }
   key.look = Look::Environment;
   key.refracts = object.material == Material::Glass;
-  key.rough = object.rough();
+  key.rough = object.rough() && object.environment == Environment::LiveProbe;
   if (plan.traces(item.object)) {
     key.search = Search::Exact;
     // Rays that can meet another mirror, glass or cube-textured object (or glass's own far
@@ -182,8 +184,16 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   if (current_->key.look == Look::CubeTextured) return;
   bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, colour2 ? colour2 : colour);
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
-  glActiveTexture(GL_TEXTURE0);
   const EnvironmentUniforms& env = current_->environment;
+  if (current_->key.rough) {
+    const ProbePlan* probe = plan.probeOf(index);
+    auto filtered = probe ? prefiltered_.find(probe->reflector) : prefiltered_.end();
+    bindTexture(kPrefilteredUnit, GL_TEXTURE_CUBE_MAP,
+                filtered != prefiltered_.end() ? filtered->second.texture() : 0);
+    glUniform1f(env.roughLod, std::clamp(object.roughness, 0.0f, 1.0f) *
+                                  static_cast<float>(accuracy_.roughLevels));
+  }
+  glActiveTexture(GL_TEXTURE0);
   glUniform3fv(env.probeCentre, 1, glm::value_ptr(centre));
   glUniform1f(env.distanceUnit, scene.capture.near);
   glUniform1i(env.layers, layers);

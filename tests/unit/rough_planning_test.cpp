@@ -1,0 +1,120 @@
+// Rough mirrors in the frame planner: which prefiltered levels a probe keeps, when they are
+// filtered, and what the method costs count for them. Nothing is filtered where nothing is rough.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/frame_planner.h"
+#include "core/ggx.h"
+#include "core/planner_parts.h"
+
+namespace reflect {
+namespace {
+
+const Bounds kUnitBox{{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}};
+
+PlannedObject boxAt(glm::vec3 position) {
+  PlannedObject o;
+  o.localBounds = kUnitBox;
+  o.model = glm::translate(glm::mat4(1.0f), position);
+  return o;
+}
+
+PlannedObject mirrorAt(glm::vec3 position, float roughness) {
+  PlannedObject o = boxAt(position);
+  o.probed = true;
+  o.look.material = Material::Mirror;
+  o.look.roughness = roughness;
+  return o;
+}
+
+CaptureContext capturing(int roughLevels = 5) {
+  CaptureContext c;
+  c.accuracy.search = Search::Hierarchical;
+  c.accuracy.roughLevels = roughLevels;
+  return c;
+}
+
+TEST(RoughLevels, TheTwoLevelsAroundEachRoughness) {
+  EXPECT_EQ(roughLevelsFor(0.0f, 5).lower, 0);
+  EXPECT_EQ(roughLevelsFor(0.0f, 5).upper, 0);
+  EXPECT_EQ(roughLevelsFor(0.25f, 5).lower, 1);  // 1.25
+  EXPECT_EQ(roughLevelsFor(0.25f, 5).upper, 2);
+  EXPECT_EQ(roughLevelsFor(0.1f, 5).lower, 0);  // 0.5: the capture and level 1
+  EXPECT_EQ(roughLevelsFor(0.1f, 5).upper, 1);
+  EXPECT_EQ(roughLevelsFor(0.4f, 5).lower, 2);  // exactly level 2
+  EXPECT_EQ(roughLevelsFor(0.4f, 5).upper, 2);
+  EXPECT_EQ(roughLevelsFor(1.0f, 5).upper, 5);
+  EXPECT_EQ(roughLevelsFor(3.0f, 5).upper, 5);  // past 1: held at 1
+  EXPECT_FLOAT_EQ(roughnessOfLevel(2, 5), 0.4f);
+}
+
+TEST(RoughPlanning, NothingIsFilteredWhereNothingIsRough) {
+  FramePlanner planner;
+  const std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 0.0f), mirrorAt({4, 0, 0}, 0.0f),
+                                         boxAt({0, 0, 5})};
+  for (int frame = 0; frame < 3; ++frame) {
+    const FramePlan plan = planner.plan(scene, capturing(), {});
+    ASSERT_EQ(plan.probes.size(), 2u);
+    for (const ProbePlan& probe : plan.probes) {
+      EXPECT_TRUE(probe.roughLevels.empty());
+      EXPECT_EQ(probe.filterFaces, 0u);
+    }
+  }
+}
+
+TEST(RoughPlanning, EachProbeKeepsTheLevelsItsReadersNeed) {
+  FramePlanner planner;
+  const FramePlan plan = planner.plan(
+      {mirrorAt({0, 0, 0}, 0.0f), mirrorAt({4, 0, 0}, 0.5f), mirrorAt({8, 0, 0}, 1.0f)},
+      capturing(4), {});
+  ASSERT_EQ(plan.probes.size(), 3u);
+  EXPECT_TRUE(plan.probes[0].roughLevels.empty());
+  EXPECT_EQ(plan.probes[1].roughLevels, (std::vector<int>{2}));  // 0.5 x 4 = level 2 exactly
+  EXPECT_EQ(plan.probes[2].roughLevels, (std::vector<int>{4}));
+  EXPECT_EQ(plan.probes[0].filterFaces, 0u);
+  EXPECT_EQ(plan.probes[1].filterFaces, 0x3Fu);  // first frame: captured, so filtered
+}
+
+TEST(RoughPlanning, FiltersWhenAFaceIsRedrawnOrTheLevelsChange) {
+  FramePlanner planner;
+  PlannerSettings settings;
+  settings.policy = UpdatePolicy::WhenChanged;
+  std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 0.3f), boxAt({0, 0, 5})};
+  EXPECT_EQ(planner.plan(scene, capturing(), settings).probes[0].filterFaces, 0x3Fu);
+  // Nothing moved: no face redrawn, nothing filtered.
+  FramePlan still = planner.plan(scene, capturing(), settings);
+  EXPECT_TRUE(still.probes[0].faces.empty());
+  EXPECT_EQ(still.probes[0].filterFaces, 0u);
+  EXPECT_EQ(still.probes[0].roughLevels, (std::vector<int>{1, 2}));  // 1.5: kept all the same
+  // The box moves: its face is redrawn, and every face's levels with it (lobes cross edges).
+  scene[1].model = glm::translate(glm::mat4(1.0f), {0, 0, 6});
+  FramePlan moved = planner.plan(scene, capturing(), settings);
+  EXPECT_EQ(moved.probes[0].faces.size(), 1u);
+  EXPECT_EQ(moved.probes[0].filterFaces, 0x3Fu);
+  // The mirror gets rougher: new levels, filtered though no face is redrawn.
+  scene[0].look.roughness = 0.9f;
+  FramePlan rougher = planner.plan(scene, capturing(), settings);
+  EXPECT_TRUE(rougher.probes[0].faces.empty());
+  EXPECT_EQ(rougher.probes[0].roughLevels, (std::vector<int>{4, 5}));
+  EXPECT_EQ(rougher.probes[0].filterFaces, 0x3Fu);
+}
+
+TEST(RoughPlanning, ARoughPixelTracesLobeRaysAndAFilteredProbeCostsItsSamples) {
+  MethodCosts costs;
+  costs.tracePixel = 1.0;
+  costs.filterSample = 0.5;
+  TraceWork trace;
+  trace.pixels = 100.0;
+  trace.lobePixels = 40.0;
+  trace.lobeRays = 16.0;
+  EXPECT_DOUBLE_EQ(traceCost(trace, costs), 60.0 + 40.0 * 16.0);
+  CaptureWork capture;
+  capture.filterSamples = 8.0;
+  EXPECT_DOUBLE_EQ(captureCost(capture, costs), 4.0);
+  // Levels 1 and 2 of a 64-texel probe, all six faces, 32 samples a texel.
+  EXPECT_DOUBLE_EQ(planner::filterSamplesFor({1, 2}, 64, 32), 6.0 * (32 * 32 + 16 * 16) * 32);
+}
+
+}  // namespace
+}  // namespace reflect
