@@ -1,6 +1,7 @@
 // The GGX lobe of a rough mirror: src/core/ggx.h's functions, term by term and with the same
-// names (that header says what a rough mirror sees). The prefilter pass (prefilter.frag) and the
-// exact mode's lobe rays (exact_shade.glsl) use them.
+// names (that header says what a rough mirror sees), for the exact mode's lobe rays
+// (exact_shade.glsl) and, frameAround, for the prefilter pass (prefilter.frag), whose lobe the C++
+// computes (prefilterLobe).
 
 const float kGgxPi = 3.14159265358979;
 
@@ -44,12 +45,4 @@ float smithG1(float cosine, float alpha) {
 float lobeSampleWeight(float nDotV, float nDotL, float nDotH, float vDotH, float alpha) {
   if (nDotL <= 0.0 || nDotV <= 0.0 || nDotH <= 0.0) return 0.0;
   return smithG1(nDotV, alpha) * smithG1(nDotL, alpha) * vDotH / (nDotV * nDotH);
-}
-
-float prefilterSourceLod(float nDotH, float alpha, int samples, int faceSize) {
-  float pdf = ggxDistribution(nDotH, alpha) * 0.25;
-  float sampleAngle = 1.0 / (float(samples) * pdf);
-  float size = float(faceSize);
-  float texelAngle = 4.0 * kGgxPi / (6.0 * size * size);
-  return max(0.5 * log2(sampleAngle / texelAngle) + 1.0, 0.0);
 }

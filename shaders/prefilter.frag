@@ -2,15 +2,17 @@
 // capture averaged over the GGX lobe of the level's alpha around the texel's direction, seen
 // along that direction (the split sum's view = normal = reflection), each sample weighed by its
 // cosine and read from the capture's box chain at the level its share of the lobe covers
-// (core/ggx.h's prefilterSourceLod), so that `u_samples` samples do not alias.
+// (core/ggx.h's prefilterSourceLod), so that few samples do not alias. The lobe is the same for
+// every texel, turned into its frame: the C++ computes it once a level (prefilterLobe).
 #include "ggx.glsl"
 
 uniform samplerCube u_source;
-uniform int u_face;        // 0..5, GL order (+X, -X, +Y, -Y, +Z, -Z)
-uniform float u_alpha;     // the level's GGX alpha
-uniform int u_samples;     // GGX samples a texel
-uniform int u_sourceSize;  // the capture's face size at its level 0
+uniform int u_face;          // 0..5, GL order (+X, -X, +Y, -Y, +Z, -Z)
 uniform float u_targetSize;  // this level's face size
+uniform int u_samples;       // the lobe's samples (those above the surface)
+// core/ggx.h's prefilterLobe: each sample's direction around the normal, its length its weight,
+// and its source level.
+uniform vec4 u_lobe[PREFILTER_MAX_SAMPLES];
 
 out vec4 fragColour;
 
@@ -27,18 +29,12 @@ vec3 faceDirection(int face, float s, float t) {
 
 void main() {
   vec2 st = gl_FragCoord.xy / u_targetSize * 2.0 - 1.0;
-  vec3 n = normalize(faceDirection(u_face, st.x, st.y));
+  mat3 frame = frameAround(normalize(faceDirection(u_face, st.x, st.y)));
   vec3 sum = vec3(0.0);
-  float total = 0.0;
   for (int k = 0; k < u_samples; ++k) {
-    vec3 h = ggxHalfVector(hammersley(uint(k), uint(u_samples)), u_alpha, n);
-    float nDotH = dot(n, h);
-    vec3 l = 2.0 * nDotH * h - n;
-    float nDotL = dot(n, l);
-    if (nDotL <= 0.0) continue;
-    float lod = prefilterSourceLod(nDotH, u_alpha, u_samples, u_sourceSize);
-    sum += textureLod(u_source, l, lod).rgb * nDotL;
-    total += nDotL;
+    vec4 s = u_lobe[k];
+    vec3 l = frame * s.xyz;
+    sum += textureLod(u_source, l, s.w).rgb * length(s.xyz);
   }
-  fragColour = vec4(total > 0.0 ? sum / total : texture(u_source, n).rgb, 1.0);
+  fragColour = vec4(sum, 1.0);
 }

@@ -111,6 +111,7 @@ void Demo::startStats(bool waitForGpu, int width, int height) {
 void Demo::capturePass(const FramePlan& plan, bool waitForGpu) {
   GpuTimer& timer = graphics_.timer();
   timer.begin(GpuTimer::kCapture);
+  graphics_.renderer()->setTimePrefilter(waitForGpu);
   Result<PassCounts> capture = stepCallback_ ? captureInSteps(plan)
                                              : graphics_.renderer()->capture(
                                                    scene_, stats_.timeSeconds, plan, camera_.eye());
@@ -122,6 +123,8 @@ void Demo::capturePass(const FramePlan& plan, bool waitForGpu) {
   } else {
     stats_.captureDrawCalls = capture.value().drawCalls;
     stats_.captureTriangles = capture.value().triangles;
+    stats_.filterSamples = graphics_.renderer()->lastFilterSamples();
+    stats_.filterMs = graphics_.renderer()->lastFilterMs();
   }
   if (waitForGpu) reflect::waitForGpu();
   stats_.probes = static_cast<int>(plan.probes.size());

@@ -5,6 +5,8 @@ namespace reflect {
 nlohmann::json FrameStats::toJson() const {
   nlohmann::json json = {{"frameMs", frameMs},
                          {"captureMs", captureMs},
+                         {"filterSamples", filterSamples},
+                         {"filterMs", filterMs},
                          {"timing", timing},
                          {"gpuFrameMs", gpuFrameMs},
                          {"gpuCaptureMs", gpuCaptureMs},

@@ -9,7 +9,11 @@ namespace reflect {
 
 struct FrameStats {
   double frameMs = 0;    // capture + main pass
-  double captureMs = 0;  // the planned cube faces
+  double captureMs = 0;  // the planned cube faces (and the rough levels filtered after them)
+  // Rough mirrors' prefilter pass, part of captureMs: GGX samples taken (texels x samples) and,
+  // when the frame waits for the GPU (timing "gpu-finish"), its own time.
+  double filterSamples = 0;
+  double filterMs = 0;
   // "gpu-finish": times wait for the GPU to finish, so they are what the frame took end to end.
   // "cpu-submit": the display loop does not wait for the GPU; times are command submission only.
   const char* timing = "cpu-submit";

@@ -63,6 +63,8 @@ std::vector<TimedFrames> timeInBlocks(const std::vector<Demo*>& demos, unsigned 
         const FrameStats& s = demos[i]->frame(dt(i), framebuffer, width, height, true);
         out[i].ms.push_back(s.frameMs);
         out[i].cpuMs.push_back(processCpuMs() - cpuBefore);
+        out[i].captureMs.push_back(s.captureMs);
+        out[i].filterMs.push_back(s.filterMs);
       }
     }
   }

@@ -35,6 +35,7 @@ Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, i
 // Returns, per demo, the timed frames' wall ms and process CPU ms.
 struct TimedFrames {
   std::vector<double> ms, cpuMs;
+  std::vector<double> captureMs, filterMs;  // the capture's share of ms, and the filter's of it
 };
 std::vector<TimedFrames> timeInBlocks(const std::vector<Demo*>& demos, unsigned framebuffer,
                                       int width, int height, int frames,

@@ -20,6 +20,24 @@ bool writeText(const std::string& path, const std::string& text) {
   return std::fclose(f) == 0 && ok;
 }
 
+// Rough readers: what the prefilter pass cost beside the faces it filters (issue 24's target:
+// at most 0.5x a capture of the same faces).
+void printFilterCosts(const std::vector<SweepRow>& rows) {
+  bool header = false;
+  for (const SweepRow& r : rows) {
+    if (r.filterMs <= 0.0) continue;
+    if (!header) {
+      std::printf(
+          "\nprefilter pass (medians a frame; the capture without it is the same faces):\n"
+          "setting | capture ms (faces) | filter ms | filter / capture\n");
+      header = true;
+    }
+    const double faces = r.captureMs - r.filterMs;
+    std::printf("%s | %.2f | %.2f | %.2fx\n", r.setting.name.c_str(), faces, r.filterMs,
+                faces > 0.0 ? r.filterMs / faces : 0.0);
+  }
+}
+
 }  // namespace
 
 int benchFramesDefault(BenchMode mode) {
@@ -214,6 +232,7 @@ std::string runSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory
       timesText(options.heldOutTimes).c_str(),
       options.tunedTimes.empty() ? "none" : timesText(options.tunedTimes).c_str(),
       sweepTable(rows.value()).c_str());
+  printFilterCosts(rows.value());
   const SweepRow* original = nullptr;
   const SweepRow* byDefault = nullptr;
   const SweepRow* centre = nullptr;

@@ -13,6 +13,40 @@
 
 namespace reflect {
 
+namespace {
+
+// Rough mirrors (the rough-spheres scene; docs/rough.md): one knob at a time around the default,
+// at the scene's own face size: the prefilter's samples, its levels, the face size, and the
+// traced lobe's rays (the exact mode) against the prefiltered probe.
+void appendRoughSettings(std::vector<SweepSetting>& s) {
+  const AccuracySettings shipped;
+  s.push_back({"rough-default", shipped, 0});
+  for (int n : {4, 8, 16, 64, 128}) {
+    AccuracySettings a = shipped;
+    a.filterSamples = n;
+    s.push_back({"rough-samples-" + std::to_string(n), a, 0});
+  }
+  for (int n : {1, 2, 3, 8}) {
+    AccuracySettings a = shipped;
+    a.roughLevels = n;
+    s.push_back({"rough-levels-" + std::to_string(n), a, 0});
+  }
+  for (int size : {32, 64, 256}) s.push_back({"rough-size-" + std::to_string(size), shipped, size});
+  AccuracySettings plain = shipped;
+  plain.search = Search::Plain;
+  s.push_back({"rough-plain", plain, 0});
+  AccuracySettings hierarchical = shipped;
+  hierarchical.search = Search::Hierarchical;
+  s.push_back({"rough-hierarchical", hierarchical, 0});
+  for (int n : {4, 16, 64}) {
+    AccuracySettings a{.search = Search::Exact};
+    a.lobeRays = n;
+    s.push_back({"rough-exact-rays-" + std::to_string(n), a, 0});
+  }
+}
+
+}  // namespace
+
 std::vector<SweepSetting> sweepSettings() {
   AccuracySettings course;  // the course: captured at the origin, 16-bit depth, plain lookup
   course.captureAtOrigin = true;
@@ -61,6 +95,7 @@ std::vector<SweepSetting> sweepSettings() {
   a = shipped;
   a.mediump = true;
   s.push_back({"default-mediump", a, 256});
+  appendRoughSettings(s);
   return s;
 }
 
@@ -75,7 +110,7 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     PlannerSettings everyFrame;  // capture cost fully counted in every row
     everyFrame.policy = UpdatePolicy::EveryFrame;
     demo.value()->setPlannerSettings(everyFrame);
-    demo.value()->setCubeFaceSize(s.faceSize);
+    if (s.faceSize > 0) demo.value()->setCubeFaceSize(s.faceSize);
     std::string error = demo.value()->setAccuracySettings(s.accuracy);
     if (error.empty()) error = demo.value()->initGraphics();
     if (!error.empty()) return Out::failure(s.name + ": " + error);
@@ -119,6 +154,8 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     row.p10Ms = percentile(ms[i], 0.1);
     row.p90Ms = percentile(ms[i], 0.9);
     row.cpuMs = median(cpu[i]);
+    row.captureMs = median(frames[i].captureMs);
+    row.filterMs = median(frames[i].filterMs);
     double heldOutMse = 0, tunedMse = 0, p95 = 0, angle = 0, offMse = 0, visible = 0;
     row.worstPsnrDb = kPsnrCapDb;
     for (bool heldOut : {true, false}) {

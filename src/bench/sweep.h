@@ -19,7 +19,7 @@ namespace reflect {
 struct SweepSetting {
   std::string name;  // "original", "default", "size-64", "distance-4", ...
   AccuracySettings accuracy;
-  int faceSize = 256;
+  int faceSize = 256;  // 0: the scene's own
 };
 
 // The settings the sweep measures: the course's ("original"), the shipped default ("default")
@@ -30,6 +30,8 @@ struct SweepRow {
   SweepSetting setting;
   double medianMs = 0, p10Ms = 0, p90Ms = 0;
   double cpuMs = 0;  // median CPU time of the process per frame
+  // Medians: the capture (faces and prefilter) and its prefilter pass alone (rough readers).
+  double captureMs = 0, filterMs = 0;
   // Over the reflector at the held-out times: PSNR of the pooled error, the worst time's PSNR,
   // pixels off by more than kVisibleErrorLevels per frame (mean and worst time), RMSE, mean p95,
   // largest error, mean angular error of the looked-up direction; off the reflector, PSNR.

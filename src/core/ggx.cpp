@@ -60,6 +60,26 @@ float prefilterSourceLod(float nDotH, float alpha, int samples, int faceSize) {
   return std::max(0.5f * std::log2(sampleAngle / texelAngle) + 1.0f, 0.0f);
 }
 
+std::vector<glm::vec4> prefilterLobe(float alpha, int samples, int faceSize) {
+  const int n = std::clamp(samples, 1, kMaxFilterSamples);
+  const glm::vec3 normal(0.0f, 0.0f, 1.0f);  // frameAround(z) is the identity
+  std::vector<glm::vec4> lobe;
+  float total = 0.0f;
+  for (int k = 0; k < n; ++k) {
+    const glm::vec3 h = ggxHalfVector(
+        hammersley(static_cast<uint32_t>(k), static_cast<uint32_t>(n)), alpha, normal);
+    const glm::vec3 l = 2.0f * h.z * h - normal;
+    if (l.z <= 0.0f) continue;
+    lobe.emplace_back(l * l.z, prefilterSourceLod(h.z, alpha, n, faceSize));
+    total += l.z;
+  }
+  for (glm::vec4& s : lobe) {
+    const glm::vec3 d = glm::vec3(s) / total;
+    s = glm::vec4(d, s.w);
+  }
+  return lobe;
+}
+
 RoughLevels roughLevelsFor(float roughness, int levels) {
   if (roughness <= 0.0f || levels <= 0) return {};
   const float at = std::min(roughness, 1.0f) * static_cast<float>(levels);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -49,6 +50,15 @@ float lobeSampleWeight(float nDotV, float nDotL, float nDotH, float vDotH, float
 // 1 / (samples pdf), with the lobe seen along its normal (v = n, so pdf = D / 4), plus one level
 // to overlap neighbours. faceSize: the source's level 0.
 float prefilterSourceLod(float nDotH, float alpha, int samples, int faceSize);
+
+// The prefilter pass's lobe for one rough level, the same for every texel (the lobe is seen along
+// its normal): per sample that lies above the surface, its direction with the normal along +z
+// (the shader turns it to each texel's normal with frameAround; how the set is turned about the
+// normal is immaterial, the lobe being isotropic) scaled to its share of the weights (n.l,
+// normalised to sum 1), and in w its source level (prefilterSourceLod). `samples` is held to
+// 1..kMaxFilterSamples.
+inline constexpr int kMaxFilterSamples = 128;
+std::vector<glm::vec4> prefilterLobe(float alpha, int samples, int faceSize);
 
 // The prefiltered probe's levels (docs/rough.md): level m of `levels` holds roughness m / levels
 // at face size faceSize >> m (at least 1); level 0 is the capture itself. A reader of roughness r

@@ -1,5 +1,6 @@
 #include "core/settings_schema.h"
 
+#include "core/ggx.h"
 #include "core/presets.h"
 
 #include <cctype>
@@ -241,7 +242,8 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
        [](const A& s) { return json(s.mipmaps); },
        [](A& s, const json& v) { s.mipmaps = v.get<bool>(); }},
       {integer("filterSamples", "filter samples",
-               "rough mirrors: GGX samples per texel of the probe's prefilter pass", 1, 1024),
+               "rough mirrors: GGX samples per texel of the probe's prefilter pass", 1,
+               kMaxFilterSamples),
        [](const A& s) { return json(s.filterSamples); },
        [](A& s, const json& v) { s.filterSamples = v.get<int>(); }},
       {integer("roughLevels", "rough levels",

@@ -1,6 +1,7 @@
 #include "gfx/probe_prefilter.h"
 
 #include <algorithm>
+#include <string>
 
 #include "core/ggx.h"
 #include "gfx/gl.h"
@@ -48,14 +49,15 @@ bool PrefilteredCube::ensure(int faceSize, bool halfFloat, int top) {
 }
 
 Result<ProbePrefilter> ProbePrefilter::create() {
-  Result<ShaderProgram> built = ShaderProgram::build("fullscreen.vert", "prefilter.frag");
+  Result<ShaderProgram> built = ShaderProgram::build(
+      "fullscreen.vert", "prefilter.frag", false,
+      "#define PREFILTER_MAX_SAMPLES " + std::to_string(kMaxFilterSamples) + "\n");
   if (!built) return Result<ProbePrefilter>::failure(built.error());
   ProbePrefilter p;
   p.program_ = built.take();
   p.face_ = p.program_.uniform("u_face");
-  p.alpha_ = p.program_.uniform("u_alpha");
+  p.lobe_ = p.program_.uniform("u_lobe");
   p.samples_ = p.program_.uniform("u_samples");
-  p.sourceSize_ = p.program_.uniform("u_sourceSize");
   p.targetSize_ = p.program_.uniform("u_targetSize");
   glUseProgram(p.program_.id());
   glUniform1i(p.program_.uniform("u_source"), 0);
@@ -78,15 +80,16 @@ Result<double> ProbePrefilter::filter(const PrefilterJob& job, PrefilteredCube& 
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glDisable(GL_DEPTH_TEST);
   glUseProgram(program_.id());
-  glUniform1i(samples_, job.samples);
-  glUniform1i(sourceSize_, job.faceSize);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   double taken = 0.0;
   for (int level : job.levels) {
     const int size = std::max(job.faceSize >> level, 1);
     glViewport(0, 0, size, size);
     glUniform1f(targetSize_, static_cast<float>(size));
-    glUniform1f(alpha_, ggxAlpha(roughnessOfLevel(level, job.roughLevels)));
+    const std::vector<glm::vec4> lobe = prefilterLobe(
+        ggxAlpha(roughnessOfLevel(level, job.roughLevels)), job.samples, job.faceSize);
+    glUniform4fv(lobe_, static_cast<GLsizei>(lobe.size()), &lobe[0].x);
+    glUniform1i(samples_, static_cast<GLint>(lobe.size()));
     for (int face = 0; face < 6; ++face) {
       if ((job.faces & (1u << face)) == 0) continue;
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
@@ -94,7 +97,7 @@ Result<double> ProbePrefilter::filter(const PrefilterJob& job, PrefilteredCube& 
                              target.texture(), level - 1);
       glUniform1i(face_, face);
       glDrawArrays(GL_TRIANGLES, 0, 3);
-      taken += static_cast<double>(size) * size * job.samples;
+      taken += static_cast<double>(size) * size * static_cast<double>(lobe.size());
     }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

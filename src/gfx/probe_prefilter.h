@@ -60,7 +60,7 @@ class ProbePrefilter {
  private:
   ShaderProgram program_;
   FramebufferHandle framebuffer_;
-  GLint face_ = -1, alpha_ = -1, samples_ = -1, sourceSize_ = -1, targetSize_ = -1;
+  GLint face_ = -1, lobe_ = -1, samples_ = -1, targetSize_ = -1;
 };
 
 }  // namespace reflect

@@ -94,6 +94,10 @@ class SceneRenderer {
   // last capture's prefilter passes took (texels x samples): for tests and the frame's stats.
   size_t prefilteredCubes() const { return prefiltered_.size(); }
   double lastFilterSamples() const { return lastFilterSamples_; }
+  // With `wait`, the prefilter pass waits for the GPU before and after it, so that
+  // lastFilterMs() is its own time (benches; the page does not wait).
+  void setTimePrefilter(bool wait) { timePrefilter_ = wait; }
+  double lastFilterMs() const { return lastFilterMs_; }
   // Glass interior maps made so far (one per non-sphere glass mesh in use), for tests.
   size_t glassInteriorMaps() const { return glassInteriors_.count(); }
   // After a lost context: drop every GL name without deleting (the context took them).
@@ -194,6 +198,8 @@ class SceneRenderer {
   std::map<int, PrefilteredCube> prefiltered_;  // by owning object's index: rough readers only
   std::unique_ptr<ProbePrefilter> prefilter_;   // built the first time a probe is filtered
   double lastFilterSamples_ = 0.0;
+  double lastFilterMs_ = 0.0;
+  bool timePrefilter_ = false;
   AccuracySettings accuracy_;
   const MeshBuffers* meshes_ = nullptr;
   std::map<std::string, uint64_t> glassMeshSerials_;  // each glass mesh's serial when last seen
