@@ -57,6 +57,11 @@ void defineScene(CLI::App& c, CliOptions& o, CliWording& w) {
                            "sonic.obj sphere.obj quad.obj); the built-in ones for those it lacks"),
               w, "DIR", "a folder")
       ->check(existingFolder());
+  valueOption(c.add_option("--material", o.materials,
+                           "change object INDEX's material settings (repeatable; names as in "
+                           "scene files: reflection, base, ior, fresnel, roughness, environment, "
+                           "type), e.g. --material 3:roughness=0.5"),
+              w, "INDEX:NAME=VALUE,...", "INDEX:NAME=VALUE[,NAME=VALUE...]");
   w.valueFirst.insert({"--scene", "--assets"});
   auto size = [&o](const std::string& text) {
     const glm::ivec2 side = *parseFrameSize(text);

@@ -25,19 +25,20 @@ struct CliOptions {
   std::string helpTopic;  // help: "" (every command), "render" or "bench"
   int width = 800;
   int height = 800;
-  bool sizeSet = false;           // --size given (the sweep otherwise renders at its own size)
-  double time = 0.0;              // render
-  std::string out = "frame.png";  // render
-  std::string referenceOut;       // render: also write the ray-traced reference of the frame
-  std::string errorViewOut;       // render: also write the error view (heat map) of the frame
-  std::string facesOut;           // render: also write the faces view (view.facesChannel)
-  std::string faceUseOut;         // render: also write the face-use view
-  glm::ivec2 pixel{0};            // explain: the pixel (x, y), (0, 0) the top-left one
-  std::string stepsDir;           // render: also write the frame's steps, one PNG each
-  std::string assets;             // a folder with the course's models, by their file names
-  std::string scene = "ex12-2";   // a shipped scene's name, or a .json path
-  std::string preset;             // --preset: a named preset (core/presets.h), or ""
-  std::optional<int> cubeSize;    // otherwise the scene's capture.faceSize
+  bool sizeSet = false;                // --size given (the sweep otherwise renders at its own size)
+  double time = 0.0;                   // render
+  std::string out = "frame.png";       // render
+  std::string referenceOut;            // render: also write the ray-traced reference of the frame
+  std::string errorViewOut;            // render: also write the error view (heat map) of the frame
+  std::string facesOut;                // render: also write the faces view (view.facesChannel)
+  std::string faceUseOut;              // render: also write the face-use view
+  glm::ivec2 pixel{0};                 // explain: the pixel (x, y), (0, 0) the top-left one
+  std::string stepsDir;                // render: also write the frame's steps, one PNG each
+  std::string assets;                  // a folder with the course's models, by their file names
+  std::string scene = "ex12-2";        // a shipped scene's name, or a .json path
+  std::vector<std::string> materials;  // --material INDEX:NAME=VALUE,... (cli_materials.h)
+  std::string preset;                  // --preset: a named preset (core/presets.h), or ""
+  std::optional<int> cubeSize;         // otherwise the scene's capture.faceSize
   float yawDeg = 0.0f;
   float pitchDeg = 0.0f;
   std::optional<glm::vec3> eye;  // otherwise the scene's camera eye

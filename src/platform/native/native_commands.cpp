@@ -19,6 +19,7 @@
 #include "bench/process_memory.h"
 #include "core/image.h"
 #include "gfx/offscreen_target.h"
+#include "platform/native/cli_materials.h"
 #include "platform/native/model_paths.h"
 
 namespace reflect {
@@ -47,6 +48,8 @@ Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, const DemoVariant& v
   Result<Scene> loaded = loadNamedScene(o.scene);
   if (!loaded) return Out::failure(loaded.error());
   Scene scene = loaded.take();
+  const std::string materialError = applyMaterialOptions(o.materials, scene);
+  if (!materialError.empty()) return Out::failure(materialError);
   if (variant.reflectorAsPhong) {
     for (SceneObject& object : scene.objects) object.material = Material::Phong;
   }
