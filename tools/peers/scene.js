@@ -10,7 +10,7 @@ import { SCENE } from './scene_facts.js';
 // One file's objects and groups as one indexed geometry of positions and normals: one draw a
 // file, and no texture coordinates (nothing reads them). Normals are computed only where the
 // file has none; merging first makes them smooth across the file's objects.
-async function loadGeometry(url) {
+export async function loadGeometry(url) {
   const group = await new OBJLoader().loadAsync(url);
   const parts = [];
   group.traverse((o) => { if (o.isMesh) parts.push(o.geometry); });
