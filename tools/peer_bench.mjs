@@ -23,8 +23,8 @@
 //     (both end with a read-back).
 // It prints each round, then per page the medians over the rounds of each round's median, p10
 // and p90 frame ms and its load time, then each project page's frame and load against each peer.
-// --screenshots DIR writes each page's picture at time T (default 0) as DIR/KEY.png instead;
-// --serve only serves the folder, for a person to look at the pages.
+// --screenshots DIR writes each page's picture at time T (default 0; three frames drawn there) as
+// DIR/KEY.png instead; --serve only serves the folder, for a person to look at the pages.
 // --reference PNG (a picture of the scene at --time T and --size WxH, e.g. `reflect render
 // --scene NAME --time T --size WxH --reference PNG`): after the timing (none with --rounds 0),
 // each page is drawn at T and read back, and compared with it over the reflector pixels (white in
@@ -34,7 +34,7 @@ import { spawnSync } from 'node:child_process';
 import { copyFileSync, existsSync, mkdirSync, readdirSync, rmSync, symlinkSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { freePort, launchChromium, repo, startServer, summary } from './bench_lib.mjs';
-import { runAccuracy } from './peer_accuracy.mjs';
+import { FRAMES_AT_TIME, runAccuracy } from './peer_accuracy.mjs';
 
 // The project's configurations: what each adds to index.html's query. Add a row for a new setting.
 const PROJECT_PAGES = [
@@ -320,10 +320,11 @@ async function screenshots(browser, base, pages, o) {
     const extra = heldAt(spec, o);
     const { context, page, api, problems } = await openPage(browser, base, spec, o, extra);
     try {
-      await page.evaluate(({ name, t }) => {
+      // As the accuracy's read-back: several frames at T, so mirrors seen in a capture are at T too.
+      await page.evaluate(({ name, t, frames }) => {
         window[name].setTime(t);
-        window[name].frame(0);
-      }, { name: api, t: o.time });
+        for (let i = 0; i < frames; ++i) window[name].frame(0);
+      }, { name: api, t: o.time, frames: FRAMES_AT_TIME });
       await page.waitForTimeout(300);  // for the frame to reach the compositor
       const path = join(o.screenshots, `${spec.key}.png`);
       await page.screenshot({ path });
