@@ -3,6 +3,8 @@
 // over the reflector pixels, with the project's own measures (src/core/error_metrics.cpp): PSNR
 // of the RGB error (capped at 99 dB) and pixels whose largest channel error is over 32 levels.
 import { readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { repo } from './bench_lib.mjs';
 import { decodePng, encodePng } from './png.mjs';
 
 // Frames drawn at the time before the read-back: a probe's capture shows the other mirrors as
@@ -35,22 +37,23 @@ export async function pixelsAt(page, api, t) {
 export const readPng = (path) => decodePng(readFileSync(path), path);
 export const writePng = (path, image) => writeFileSync(path, encodePng(image));
 
-// 1 where the mask image is white (red over half), a reflector pixel.
+// A reflector pixel (red over half) holds 1 + its mirror's number, 255 - green (the pmrem peer's
+// ?mask tells mirrors apart so; a white mask is all mirror 0); 0 elsewhere.
 export function maskOf(image) {
   const mask = new Uint8Array(image.width * image.height);
-  for (let p = 0; p < mask.length; ++p) mask[p] = image.data[p * 4] > 127 ? 1 : 0;
+  for (let p = 0; p < mask.length; ++p) mask[p] = image.data[p * 4] > 127 ? 256 - image.data[p * 4 + 1] : 0;
   return mask;
 }
 
-// The error of `image` against `reference` over the pixels `mask` marks: { compared, rmse, psnrDb,
-// over, maxError }, or { error } when the sizes differ.
-export function compareImages(image, reference, mask) {
+// The error of `image` against `reference` over the pixels `mask` marks (those of mirror `only`
+// alone when given): { compared, rmse, psnrDb, over, maxError }, or { error } when the sizes differ.
+export function compareImages(image, reference, mask, only = null) {
   if (image.width !== reference.width || image.height !== reference.height) {
     return { error: `the page is ${image.width}x${image.height}, the reference ${reference.width}x${reference.height}` };
   }
   let compared = 0, over = 0, maxError = 0, sumSquares = 0;
   for (let p = 0; p < mask.length; ++p) {
-    if (!mask[p]) continue;
+    if (!mask[p] || (only !== null && mask[p] !== only + 1)) continue;
     ++compared;
     let largest = 0;
     for (let c = 0; c < 3; ++c) {
@@ -96,7 +99,9 @@ export async function runAccuracy(browser, base, pages, o, { openPage, extraFor,
   if (mask.length !== reference.width * reference.height) {
     throw new Error(`the mask has ${mask.length} pixels, the reference ${reference.width}x${reference.height}`);
   }
-  const reflectorPixels = mask.reduce((n, m) => n + m, 0);
+  const reflectorPixels = mask.reduce((n, m) => n + (m ? 1 : 0), 0);
+  const mirrors = [...new Set(mask)].filter(Boolean).sort((a, b) => a - b).map((m) => m - 1);
+  const roughness = mirrorRoughness(o.scene);
   console.log('');
   console.log(`accuracy against ${o.reference} (${reference.width}x${reference.height}) at t = ${o.time} s ` +
               `(${FRAMES_AT_TIME} frames there), over ${reflectorPixels} reflector pixels ` +
@@ -105,7 +110,20 @@ export async function runAccuracy(browser, base, pages, o, { openPage, extraFor,
   for (const spec of pages) {
     const image = await drawnAt(browser, base, spec, o, openPage, extraFor(spec));
     console.log(describeComparison(spec.label, compareImages(image, reference, mask)));
+    if (mirrors.length < 2) continue;
+    for (const k of mirrors) {
+      const name = `  mirror ${k + 1}` + (roughness[k] !== undefined ? `, roughness ${roughness[k]}` : '');
+      console.log(describeComparison(name, compareImages(image, reference, mask, k)));
+    }
   }
+}
+
+// The roughness of each mirror of the shipped scene `name`, in the file's order (the pmrem peer's
+// mask numbers them so); none without a scene (the default scene has one mirror).
+function mirrorRoughness(name) {
+  if (!name) return [];
+  const file = JSON.parse(readFileSync(join(repo, 'assets/scenes', `${name}.json`), 'utf8'));
+  return file.objects.filter((o) => o.material?.type === 'mirror').map((o) => o.material.roughness ?? 0);
 }
 
 async function drawnAt(browser, base, spec, o, openPage, extra) {

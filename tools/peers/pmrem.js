@@ -16,8 +16,8 @@
 // Not MeshStandardMaterial: its PBR (DFG split sum, Fresnel, the lookup bent towards the normal
 // by roughness^4, the irradiance term) is another model than the project's fixed mix; this
 // ShaderMaterial keeps three's prefilter and its level choice and nothing else of it.
-// ?mask draws the mirrors white and everything else black (the reflector mask of
-// tools/peer_bench.mjs --reference).
+// ?mask draws the mirrors white (told apart by their green) and everything else black: the
+// reflector mask of tools/peer_bench.mjs --reference.
 import { CubeCamera, LinearFilter, PMREMGenerator, RGBAFormat, UnsignedByteType, Vector3,
          WebGLCubeRenderTarget } from 'three';
 import { buildFileWorld } from './file_world.js';
@@ -110,12 +110,15 @@ function makeProbe(mesh, capture, generator) {
   };
 }
 
-// ?mask: every object one flat colour (the same vertex shader, so the same pixels), on black.
+// ?mask: every object one flat colour (the same vertex shader, so the same pixels), on black:
+// mirror k (0, 1, ... in the file's order) in (1, 1 - k / 255, 1), so white is the first and the
+// green channel tells the mirrors apart.
 function maskRendition(renderer, world) {
   renderer.setClearColor(0x000000, 1);
   for (const mesh of world.objects) {
-    const white = mesh.fact.mirror ? 1 : 0;
-    mesh.material = worldMaterial(FLAT_FRAGMENT_GLSL, { flatColour: { value: new Vector3(white, white, white) } });
+    const k = world.mirrors.indexOf(mesh);
+    const colour = k < 0 ? new Vector3(0, 0, 0) : new Vector3(1, 1 - k / 255, 1);
+    mesh.material = worldMaterial(FLAT_FRAGMENT_GLSL, { flatColour: { value: colour } });
   }
   return { draw: () => renderer.render(world.scene, world.camera) };
 }
