@@ -32,7 +32,7 @@ const freshTargets = params.has('fresh');
 
 // Three 0.187's PMREM size for a capture: the face size rounded down to a power of two, at
 // least 256 (PMREMGenerator's MIN_SIZE); its last level is log2(size) - 3 (LOD_MIN). Checked
-// against the first PMREM made.
+// against every PMREM made.
 const pmremMaxLod = (faceSize) => Math.log2(Math.max(256, 2 ** Math.floor(Math.log2(faceSize)))) - 3;
 
 // Where the mirrors look from: the main camera's eye in the main pass, a probe's centre while

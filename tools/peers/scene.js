@@ -1,6 +1,7 @@
-// The default scene in three.js, shared by both renditions: its models (one indexed mesh per
-// file, as the project draws them), the Phong objects, the mirror (its material is the
-// rendition's), the main camera, and where everything is at a time.
+// The default scene in three.js, shared by its two renditions (cubecamera, bvh): its models (one
+// indexed mesh per file, as the project draws them; file_world.js loads a scene file's the same
+// way), the Phong objects, the mirror (its material is the rendition's), the main camera, and
+// where everything is at a time.
 import { BufferGeometry, MathUtils, Matrix4, Mesh, PerspectiveCamera, Scene } from 'three';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 import { mergeGeometries, mergeVertices } from 'three/addons/utils/BufferGeometryUtils.js';
