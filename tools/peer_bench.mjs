@@ -1,9 +1,12 @@
 #!/usr/bin/env node
-// The project's page against two three.js peers of its default scene (tools/peers/), in one
-// headless Chromium (Debian's, SwiftShader WebGL2). Not a test: it prints numbers and exits 0.
+// The project's page against three.js peers (tools/peers/), in one headless Chromium (Debian's,
+// SwiftShader WebGL2). Not a test: it prints numbers and exits 0. Two peers draw the default
+// scene (cubecamera, bvh); one reads a scene file (pmrem: a CubeCamera and a PMREM a mirror, rough
+// mirrors), the one --scene NAME names (ex12-2 without it).
 //
 //   node tools/peer_bench.mjs [--heavy] [--rounds N] [--frames N] [--warmup N] [--size WxH]
 //                             [--site DIR] [--pages KEY,KEY,...] [--query EXTRA] [--scene NAME]
+//                             [--reference PNG [--mask PNG | --save-mask PNG] [--time T]]
 //   node tools/peer_bench.mjs --screenshots DIR [--time T] [--heavy] [--pages ...] [--size WxH]
 //   node tools/peer_bench.mjs --serve [--heavy] [--site DIR]
 //
@@ -20,12 +23,18 @@
 //     (both end with a read-back).
 // It prints each round, then per page the medians over the rounds of each round's median, p10
 // and p90 frame ms and its load time, then each project page's frame and load against each peer.
-// --screenshots DIR writes each page's picture at time T (default 0) as DIR/KEY.png instead;
-// --serve only serves the folder, for a person to look at the pages.
+// --screenshots DIR writes each page's picture at time T (default 0; three frames drawn there) as
+// DIR/KEY.png instead; --serve only serves the folder, for a person to look at the pages.
+// --reference PNG (a picture of the scene at --time T and --size WxH, e.g. `reflect render
+// --scene NAME --time T --size WxH --reference PNG`): after the timing (none with --rounds 0),
+// each page is drawn at T and read back, and compared with it over the reflector pixels (white in
+// --mask PNG, or else the pmrem peer's mirrors drawn in its ?mask mode, which --save-mask keeps):
+// PSNR and the pixels off by more than 32 levels (tools/peer_accuracy.mjs).
 import { spawnSync } from 'node:child_process';
 import { copyFileSync, existsSync, mkdirSync, readdirSync, rmSync, symlinkSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { freePort, launchChromium, repo, startServer, summary } from './bench_lib.mjs';
+import { FRAMES_AT_TIME, runAccuracy } from './peer_accuracy.mjs';
 
 // The project's configurations: what each adds to index.html's query. Add a row for a new setting.
 const PROJECT_PAGES = [
@@ -38,6 +47,9 @@ const PROJECT_PAGES = [
 const PEER_PAGES = [
   { key: 'cubecamera', label: 'three.js CubeCamera', path: 'peers/index.html', query: 'rendition=cubecamera', peer: true },
   { key: 'bvh', label: 'three.js + three-mesh-bvh', path: 'peers/index.html', query: 'rendition=bvh', peer: true },
+  // The scene file --scene names (sceneFile); without --scene it runs only when --pages names it.
+  { key: 'pmrem', label: 'three.js CubeCamera + PMREM', path: 'peers/index.html', query: 'rendition=pmrem', peer: true,
+    sceneFile: true },
 ];
 // With --against DIR, another build of the project's page (e.g. the last landing's
 // build/web/site) is served under base/ and its configurations join as base-KEY.
@@ -48,7 +60,8 @@ const PAGES = [...PROJECT_PAGES, ...PEER_PAGES, ...BASE_PAGES];
 function parseArgs(argv) {
   const o = { heavy: false, rounds: 2, frames: 20, warmup: 5, width: 800, height: 800,
               site: join(repo, 'build/web/site'), pages: PAGES.map((p) => p.key), query: '',
-              screenshots: null, time: 0, serve: false, against: null, scene: null };
+              screenshots: null, time: 0, serve: false, against: null, scene: null,
+              reference: null, mask: null, saveMask: null };
   for (let i = 0; i < argv.length; ++i) {
     const arg = argv[i];
     const value = () => {
@@ -67,6 +80,9 @@ function parseArgs(argv) {
     else if (arg === '--serve') o.serve = true;
     else if (arg === '--against') o.against = resolve(value());
     else if (arg === '--scene') o.scene = value();
+    else if (arg === '--reference') o.reference = resolve(value());
+    else if (arg === '--mask') o.mask = resolve(value());
+    else if (arg === '--save-mask') o.saveMask = resolve(value());
     else if (arg === '--size') {
       const m = /^(\d+)x(\d+)$/.exec(value());
       if (!m) throw new Error('--size wants WIDTHxHEIGHT');
@@ -74,21 +90,26 @@ function parseArgs(argv) {
     } else if (arg === '--help' || arg === '-h') {
       console.log('usage: node tools/peer_bench.mjs [--heavy] [--rounds N] [--frames N] [--warmup N] [--size WxH]\n' +
                   '                                 [--site DIR] [--pages KEY,...] [--query EXTRA] [--against DIR]\n' +
+                  '                                 [--scene NAME] [--reference PNG [--mask PNG | --save-mask PNG] [--time T]]\n' +
                   '       node tools/peer_bench.mjs --screenshots DIR [--time T] [--heavy] [--pages KEY,...]\n' +
                   '       node tools/peer_bench.mjs --serve [--heavy] [--site DIR]\n' +
                   `pages: ${PAGES.map((p) => p.key).join(', ')}`);
       process.exit(0);
     } else throw new Error(`unknown argument ${arg}`);
   }
-  for (const [name, min] of [['rounds', 1], ['frames', 1], ['warmup', 0]]) {
+  for (const [name, min] of [['rounds', o.reference ? 0 : 1], ['frames', 1], ['warmup', 0]]) {
     if (!(Number.isInteger(o[name]) && o[name] >= min)) throw new Error(`--${name} wants an integer >= ${min}`);
   }
   if (!Number.isFinite(o.time)) throw new Error('--time wants a number of seconds');
   if (!o.against) o.pages = o.pages.filter((key) => !key.startsWith('base-'));
   else if (!argv.includes('--pages')) o.pages = PAGES.map((p) => p.key);
   if (o.scene && !/^[\w.-]+$/.test(o.scene)) throw new Error('--scene wants a shipped scene name');
-  // The peers render the default scene only.
-  if (o.scene) o.pages = o.pages.filter((key) => !PEER_PAGES.some((p) => p.key === key));
+  if ((o.mask || o.saveMask) && !o.reference) throw new Error('--mask and --save-mask go with --reference');
+  // The default scene's peers draw it only; the scene-file peer joins by itself with --scene.
+  const fixedPeer = (key) => PEER_PAGES.some((p) => p.key === key && !p.sceneFile);
+  const filePeer = (key) => PEER_PAGES.some((p) => p.key === key && p.sceneFile);
+  if (o.scene) o.pages = o.pages.filter((key) => !fixedPeer(key));
+  else if (!argv.includes('--pages')) o.pages = o.pages.filter((key) => !filePeer(key));
   const unknown = o.pages.filter((key) => !PAGES.some((p) => p.key === key));
   if (unknown.length) throw new Error(`unknown page ${unknown.join(', ')}; pages: ${PAGES.map((p) => p.key).join(', ')}`);
   return o;
@@ -138,7 +159,8 @@ function assemble(o) {
 // told not to animate themselves, except for a person looking at them (--serve).
 function pageUrl(page, o, extra = []) {
   const parts = page.peer
-    ? [page.query, o.serve ? '' : 'bench', o.heavy ? 'assets=../heavy-bench/' : '']
+    ? [page.query, o.serve ? '' : 'bench', o.heavy ? 'assets=../heavy-bench/' : '',
+       page.sceneFile && o.scene ? `scene=${o.scene}` : '']
     : [o.heavy ? `assets=${page.base ? '../' : ''}heavy-bench/` : '', o.scene ? `scene=${o.scene}` : '', page.query,
        o.query];
   return `${page.path || 'index.html'}?${[...parts, ...extra].filter(Boolean).join('&')}`;
@@ -288,16 +310,21 @@ async function bench(browser, base, pages, o) {
   }
 }
 
+// The query parts that hold a page at --time: the project's page paused there (the peers are
+// driven with ?bench and setTime alone).
+const heldAt = (spec, o) => (spec.peer ? [] : ['paused', `t=${o.time}`]);
+
 async function screenshots(browser, base, pages, o) {
   mkdirSync(o.screenshots, { recursive: true });
   for (const spec of pages) {
-    const extra = spec.peer ? [] : ['paused', `t=${o.time}`];
+    const extra = heldAt(spec, o);
     const { context, page, api, problems } = await openPage(browser, base, spec, o, extra);
     try {
-      await page.evaluate(({ name, t }) => {
+      // As the accuracy's read-back: several frames at T, so mirrors seen in a capture are at T too.
+      await page.evaluate(({ name, t, frames }) => {
         window[name].setTime(t);
-        window[name].frame(0);
-      }, { name: api, t: o.time });
+        for (let i = 0; i < frames; ++i) window[name].frame(0);
+      }, { name: api, t: o.time, frames: FRAMES_AT_TIME });
       await page.waitForTimeout(300);  // for the frame to reach the compositor
       const path = join(o.screenshots, `${spec.key}.png`);
       await page.screenshot({ path });
@@ -324,7 +351,13 @@ async function main() {
   try {
     const pages = o.pages.map((key) => PAGES.find((p) => p.key === key));
     if (o.screenshots) await screenshots(browser, url, pages, o);
-    else await bench(browser, url, pages, o);
+    else {
+      if (o.rounds > 0) await bench(browser, url, pages, o);
+      if (o.reference) {
+        await runAccuracy(browser, url, pages, o, { openPage, extraFor: (spec) => heldAt(spec, o),
+                                                    maskPage: PEER_PAGES.find((p) => p.sceneFile) });
+      }
+    }
   } finally {
     await browser.close();
     child.kill();

@@ -1,4 +1,4 @@
-// What both peer pages do around their rendition: the renderer on #canvas, the models from
+// What every peer page does around its rendition: the renderer on #canvas, the models from
 // ?assets=PREFIX (default: the site's models/ beside this folder), the animation clock and
 // window.peer, the interface tools/peer_bench.mjs drives (as the project's window.demo):
 //   ready                a promise: models loaded and the first frame drawn
@@ -12,8 +12,10 @@ import { SCENE } from './scene_facts.js';
 
 // `mirrorMaterial`: the rendition's material for the sphere (made before the models are in; the
 // rendition fills its uniforms). `makeRendition({ renderer, world })`, called once the world is
-// built, returns { draw() }, which renders the frame world.pose() has set up.
-export function startPeer({ mirrorMaterial, makeRendition }) {
+// built, returns { draw() }, which renders the frame world.pose() has set up. `loadWorld(prefix)`,
+// if given, builds another world than the default scene's (a promise of { scene, camera,
+// background, pose(seconds), ... }; the pmrem rendition's reads a scene file).
+export function startPeer({ mirrorMaterial, makeRendition, loadWorld }) {
   const params = new URLSearchParams(location.search);
   const prefix = new URL(params.get('assets') || '../models/', location.href).href;
   const canvas = document.getElementById('canvas');
@@ -41,7 +43,8 @@ export function startPeer({ mirrorMaterial, makeRendition }) {
   const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
 
   const ready = (async () => {
-    world = buildWorld(await loadModels(prefix), mirrorMaterial);
+    world = loadWorld ? await loadWorld(prefix) : buildWorld(await loadModels(prefix), mirrorMaterial);
+    if (world.background) renderer.setClearColor(new Color(...world.background), 1);
     rendition = makeRendition({ renderer, world });
     resize();
     render();

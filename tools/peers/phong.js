@@ -12,10 +12,10 @@ export const lighting = {
   lightPosition: { value: new Vector3(...SCENE.light.position) },
 };
 
-const { ambient, diffuse, specular, shininess } = SCENE.light;
 const float = (x) => x.toFixed(4);
 
-export const PHONG_GLSL = /* glsl */`
+// The Phong function with `light`'s constants (a scene file's light; the default scene's below).
+export const phongGlsl = ({ ambient, diffuse, specular, shininess }) => /* glsl */`
 uniform vec3 eye;
 uniform vec3 lightPosition;
 
@@ -33,6 +33,7 @@ vec3 phong(vec3 colour, vec3 P, vec3 N) {
   return c;
 }
 `;
+export const PHONG_GLSL = phongGlsl(SCENE.light);
 
 // World position and normal for per-fragment lighting, as the project's mesh.vert. three's own
 // normalMatrix is the view-space one, so the world-space normal matrix is a uniform of ours
@@ -50,21 +51,21 @@ void main() {
 }
 `;
 
-const PHONG_FRAGMENT_GLSL = /* glsl */`
+const phongFragmentGlsl = (light) => /* glsl */`
 uniform vec3 colour;
 in vec3 worldPosition;
 in vec3 worldNormal;
 out vec4 fragColour;
-${PHONG_GLSL}
+${phongGlsl(light)}
 void main() {
   fragColour = vec4(phong(colour, worldPosition, normalize(worldNormal)), 1.0);
 }
 `;
 
 // A material of the shared program (three compiles one program for equal sources) with the
-// object's own colour and normal matrix.
-export function phongMaterial(colour) {
-  return worldMaterial(PHONG_FRAGMENT_GLSL, { colour: { value: new Vector3(...colour) } });
+// object's own colour and normal matrix; `light` a scene file's (the default scene's if absent).
+export function phongMaterial(colour, light = SCENE.light) {
+  return worldMaterial(phongFragmentGlsl(light), { colour: { value: new Vector3(...colour) } });
 }
 
 // A GLSL3 ShaderMaterial over WORLD_VERTEX_GLSL, lit by the shared uniforms; both sides drawn,

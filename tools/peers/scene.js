@@ -1,6 +1,7 @@
-// The default scene in three.js, shared by both renditions: its models (one indexed mesh per
-// file, as the project draws them), the Phong objects, the mirror (its material is the
-// rendition's), the main camera, and where everything is at a time.
+// The default scene in three.js, shared by its two renditions (cubecamera, bvh): its models (one
+// indexed mesh per file, as the project draws them; file_world.js loads a scene file's the same
+// way), the Phong objects, the mirror (its material is the rendition's), the main camera, and
+// where everything is at a time.
 import { BufferGeometry, MathUtils, Matrix4, Mesh, PerspectiveCamera, Scene } from 'three';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 import { mergeGeometries, mergeVertices } from 'three/addons/utils/BufferGeometryUtils.js';
@@ -10,7 +11,7 @@ import { SCENE } from './scene_facts.js';
 // One file's objects and groups as one indexed geometry of positions and normals: one draw a
 // file, and no texture coordinates (nothing reads them). Normals are computed only where the
 // file has none; merging first makes them smooth across the file's objects.
-async function loadGeometry(url) {
+export async function loadGeometry(url) {
   const group = await new OBJLoader().loadAsync(url);
   const parts = [];
   group.traverse((o) => { if (o.isMesh) parts.push(o.geometry); });
