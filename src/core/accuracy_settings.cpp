@@ -39,6 +39,13 @@ std::string AccuracySettings::describe() const {
   s += mipmaps ? ", mipmapped" : ", linear";
   s += halfFloat ? ", RGBA16F" : ", RGBA8";
   s += mediump ? ", mediump" : ", highp";
+  // Rough mirrors' knobs, where they differ from the defaults (most scenes have no rough mirror).
+  const AccuracySettings defaults;
+  if (filterSamples != defaults.filterSamples) {
+    s += ", filter samples " + std::to_string(filterSamples);
+  }
+  if (roughLevels != defaults.roughLevels) s += ", rough levels " + std::to_string(roughLevels);
+  if (lobeRays != defaults.lobeRays) s += ", lobe rays " + std::to_string(lobeRays);
   return s;
 }
 
