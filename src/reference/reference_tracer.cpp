@@ -110,8 +110,8 @@ glm::vec3 Tracer::mirror(const Hit& hit, const glm::vec3& toViewer, Path path,
 // mirror on a path: `lobeSamples` shifted Hammersley points (lobe_sampler.h) and that ratio,
 // consistent, with a bias of order 1 / S far below its noise. A rough mirror met by one of those
 // rays (seen in a rough reflection) would make that S^2 rays a pixel: it traces
-// kNestedLobeRays (one past the second rough mirror) and divides the mean of their w L by the
-// lobe's albedo E[w] instead of by their own weights, which keeps it unbiased, so the S rays of
+// kNestedLobeRays (from the third rough mirror on a path, one) and divides the mean of their w L by
+// the lobe's albedo E[w] instead of by their own weights, which keeps it unbiased, so the S rays of
 // the lobe before it average its noise out. Only the clamp of what that surface shows (a capture
 // texel's) applies to the few-ray estimate: its bright reflections come out a little dark.
 glm::vec3 Tracer::lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path path) const {
@@ -138,7 +138,8 @@ glm::vec3 Tracer::lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path pa
     weights += w;
   }
   if (!first && nDotV > 0.0f) {
-    const float albedo = lobeAlbedos[static_cast<size_t>(hit.object)].at(nDotV);
+    const size_t i = static_cast<size_t>(hit.object);
+    const float albedo = i < lobeAlbedos.size() ? lobeAlbedos[i].at(nDotV) : 1.0f;
     return sum / (static_cast<float>(count) * albedo);
   }
   if (weights > 0.0f) return sum / weights;
