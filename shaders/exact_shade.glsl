@@ -209,11 +209,58 @@ vec3 exactRadiance(vec3 origin, vec3 dir, int self, bool inside, out vec3 truth)
 
 // The mirror's reflected ray from `origin` along `R`, traced: what it sees, and in `measured`
 // the direction from the probe centre to what it meets.
-vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
+vec3 exactReflected(vec3 origin, vec3 R, out vec3 measured) {
 #if EXACT_GENERAL == 0
   return exactRadiance(origin, R, u_exactSelf, measured);
 #else
   return exactRadiance(origin, R, u_exactSelf, false, measured);
+#endif
+}
+
+#if ROUGH == 1
+#include "ggx.glsl"
+
+uniform float u_exactAlpha;  // the drawn rough mirror's lobe alpha (core/ggx.h ggxAlpha)
+uniform int u_exactLobeRays; // AccuracySettings::lobeRays
+
+// A rough mirror (core/ggx.h says what it sees): the lobe average sum(w L) / sum(w) over
+// u_exactLobeRays rays l = reflect(-v, h), h from the fixed Hammersley set, the same for every
+// pixel (an error with structure, never noise), each traced as the perfect mirror's one ray. The
+// mirrors those rays meet stay perfect mirrors (exactRadiance's bounces): the reference follows
+// a rough one's lobe there, and that difference is part of this mode's measured error. Point 0
+// is (0, 0), whose half vector is the normal: its ray is the perfect mirror's, whose truth
+// `measured` keeps (the lookup-direction output and the face-use view read it).
+vec3 seenOverLobe(vec3 origin, vec3 R, out vec3 measured) {
+  vec3 v = normalize(u_viewPosition - v_worldPosition);
+  vec3 n = normalize(v_worldNormal);
+  // Both sides of a triangle are shaded alike: the lobe lies around the side facing the viewer.
+  if (dot(n, v) < 0.0) n = -n;
+  float nDotV = dot(n, v);
+  uint count = uint(max(u_exactLobeRays, 1));
+  vec3 sum = vec3(0.0);
+  float weights = 0.0;
+  measured = R;
+  for (uint k = 0u; k < count; ++k) {
+    vec3 h = ggxHalfVector(hammersley(k, count), u_exactAlpha, n);
+    vec3 l = reflect(-v, h);
+    float w = lobeSampleWeight(nDotV, dot(n, l), dot(n, h), dot(v, h), u_exactAlpha);
+    if (w <= 0.0) continue;
+    vec3 truth;
+    sum += w * exactReflected(origin, l, truth);
+    weights += w;
+    if (k == 0u) measured = truth;
+  }
+  // No lobe above the surface (its normal at right angles to the view): the perfect mirror's ray.
+  if (weights <= 0.0) return exactReflected(origin, R, measured);
+  return sum / weights;
+}
+#endif
+
+vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
+#if ROUGH == 1
+  return seenOverLobe(origin, R, measured);
+#else
+  return exactReflected(origin, R, measured);
 #endif
 }
 

@@ -72,11 +72,13 @@ Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
   return report;
 }
 
-Result<ReferenceFrame> referenceFor(const Demo& demo, double t, int width, int height) {
+Result<ReferenceFrame> referenceFor(const Demo& demo, double t, int width, int height,
+                                    const ReferenceOptions& options) {
   const MeshLookup meshes = [&demo](const std::string& name) { return demo.meshLevel(name, 0); };
   // The true directions are measured from where the probe really captured.
   const Scene scene = sceneAsCaptured(demo.scene(), demo.accuracySettings().captureAtOrigin);
-  return renderReference(scene, meshes, demo.skyboxFaces(), demo.camera(), t, width, height);
+  return renderReference(scene, meshes, demo.skyboxFaces(), demo.camera(), t, width, height,
+                         options);
 }
 
 Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int height,

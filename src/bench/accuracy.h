@@ -53,7 +53,9 @@ Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
 Result<AccuracyReport> measureAccuracy(Demo& demo, double t, int width, int height,
                                        const ReferenceFrame* cached = nullptr);
 
-// The reference frame measureAccuracy compares `demo` with at scene time `t`.
-Result<ReferenceFrame> referenceFor(const Demo& demo, double t, int width, int height);
+// The reference frame measureAccuracy compares `demo` with at scene time `t` (`options`: the
+// seed and lobe samples of rough mirrors' Monte Carlo).
+Result<ReferenceFrame> referenceFor(const Demo& demo, double t, int width, int height,
+                                    const ReferenceOptions& options = {});
 
 }  // namespace reflect

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/frustum.h"
+#include "core/ggx.h"
 
 namespace reflect {
 namespace {
@@ -140,9 +141,11 @@ void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& p
   light_ = scene.light.position;
   phong_ = {scene.light.ambient, scene.light.diffuse, scene.light.specular, scene.light.shininess};
   eye_ = eye;
+  lobeAlphas_.clear();
+  for (const SceneObject& o : scene.objects) lobeAlphas_.push_back(ggxAlpha(o.roughness));
 }
 
-void ExactTracer::bind(GLuint program) const {
+void ExactTracer::bind(GLuint program, int lobeRays) const {
   bindUnit(kExactAtlasUnit, GL_TEXTURE_2D, atlas_.id());
   bindUnit(kExactNormalsUnit, GL_TEXTURE_2D, normals_.id());
   bindUnit(kExactSceneUnit, GL_TEXTURE_2D, scene_.id());
@@ -162,10 +165,14 @@ void ExactTracer::bind(GLuint program) const {
   glUniform3f(at("u_exactEye"), eye_.x, eye_.y, eye_.z);
   glUniform1f(at("u_exactFar"), far_);
   glUniform1i(at("u_exactMark"), mark_ ? 1 : 0);
+  glUniform1i(at("u_exactLobeRays"), lobeRays);  // rough mirrors' programs (ROUGH 1) alone
 }
 
 void ExactTracer::bindObject(GLuint program, int object) const {
   glUniform1i(glGetUniformLocation(program, "u_exactSelf"), object);
+  const size_t i = static_cast<size_t>(object);
+  const float alpha = i < lobeAlphas_.size() ? lobeAlphas_[i] : 0.0f;
+  glUniform1f(glGetUniformLocation(program, "u_exactAlpha"), alpha);
 }
 
 void ExactTracer::abandon() {

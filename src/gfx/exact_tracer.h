@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/bvh.h"
 #include "core/frame_planner.h"
@@ -45,7 +46,8 @@ class ExactTracer {
 
   // For the environment program in use: the textures and the frame's uniforms; then, per draw,
   // which object it is (its rays never meet itself, and glass is crossed inside it).
-  void bind(GLuint program) const;
+  // `lobeRays`: the rays a rough mirror's pixel traces (AccuracySettings::lobeRays).
+  void bind(GLuint program, int lobeRays) const;
   void bindObject(GLuint program, int object) const;
   void abandon();
 
@@ -63,6 +65,7 @@ class ExactTracer {
   int frameRows_ = 1;  // the rows after them, rewritten each frame
 
   PackedScene packed_;
+  std::vector<float> lobeAlphas_;  // per object: ggxAlpha of its roughness (prepare)
   glm::vec3 clear_{0.0f}, light_{0.0f}, eye_{0.0f};
   float far_ = 100.0f;
   glm::vec4 phong_{0.0f};

@@ -127,7 +127,7 @@ void SceneRenderer::use(const Program& p, const Scene& scene, const glm::mat4& v
       break;
     case Look::Environment:
       glUniform1i(p.environment.outputDirection, outputDirections);
-      if (p.key.search == Search::Exact && exact_) exact_->bind(p.program.id());
+      if (p.key.search == Search::Exact && exact_) exact_->bind(p.program.id(), accuracy_.lobeRays);
       break;
     case Look::CubeTextured:
       break;

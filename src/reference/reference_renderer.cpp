@@ -11,6 +11,7 @@
 
 #include "core/fresnel.h"
 #include "core/frustum.h"
+#include "core/ggx.h"
 #include "core/probe_layout.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_tracer.h"
@@ -135,6 +136,17 @@ class PrimaryRays {
   glm::dmat4 inverseViewProj_{1.0};
 };
 
+// Per object: the albedo of a rough mirror's lobe (empty for the others), which the tracer
+// divides its few-ray estimates by.
+std::vector<LobeAlbedoTable> lobeAlbedosOf(const Scene& scene) {
+  std::vector<LobeAlbedoTable> albedos(scene.objects.size());
+  for (size_t i = 0; i < albedos.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    if (o.rough()) albedos[i] = LobeAlbedoTable(ggxAlpha(o.roughness));
+  }
+  return albedos;
+}
+
 ReferenceFrame emptyFrame(int width, int height) {
   const size_t pixelCount = static_cast<size_t>(width) * static_cast<size_t>(height);
   ReferenceFrame frame;
@@ -160,7 +172,7 @@ void shadePixel(const Tracer& tracer, const PrimaryRays& rays, int x, int y, siz
     const bool reflector =
         tracer.scene.objects[static_cast<size_t>(hit.object)].material != Material::Phong;
     frame.reflectorMask[p] = reflector ? 1 : 0;
-    colour = tracer.shade(hit, toViewer, 0, reflector ? &directions : nullptr);
+    colour = tracer.shade(hit, toViewer, Path{}, reflector ? &directions : nullptr);
   }
   uint8_t* out = &frame.image.pixels[p * 4];
   out[0] = toByte(colour.r);
@@ -178,6 +190,15 @@ glm::vec3 probeCentre(const Scene& scene, const MeshLookup& meshes, double secon
 Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& meshes,
                                        const CubeFaces* skybox, const LookCamera& camera,
                                        double seconds, int width, int height, int threads) {
+  ReferenceOptions options;
+  options.threads = threads;
+  return renderReference(scene, meshes, skybox, camera, seconds, width, height, options);
+}
+
+Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& meshes,
+                                       const CubeFaces* skybox, const LookCamera& camera,
+                                       double seconds, int width, int height,
+                                       const ReferenceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::string error = checkArguments(scene, skybox, width, height);
   if (!error.empty()) return Result<ReferenceFrame>::failure(error);
@@ -191,9 +212,11 @@ Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& mes
 
   ReferenceFrame frame = emptyFrame(width, height);
   std::vector<Directions> directions(frame.objectIds.size());
-  const Tracer tracer{scene, world.meshes, embree, skybox, centres, camera.eye()};
+  const Tracer tracer{
+      scene,        world.meshes,        embree, skybox, centres, camera.eye(), options.lobeSamples,
+      options.seed, lobeAlbedosOf(scene)};
   const PrimaryRays rays(camera, width, height);
-  forEachRow(height, threads, [&](int y) {
+  forEachRow(height, options.threads, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const size_t p = static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);
       shadePixel(tracer, rays, x, y, p, frame, directions[p]);
@@ -209,6 +232,7 @@ Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& mes
   }
   frame.renderMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  frame.options = options;
   return frame;
 }
 

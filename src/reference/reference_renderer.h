@@ -47,6 +47,10 @@
 //  - a reflected, refracted or looked-up ray never meets the object it leaves, and a ray inside
 //    glass meets only that object's own surface: exact for convex reflectors and glass with
 //    nothing inside it, as every shipped one is;
+//  - a rough mirror (SceneObject::rough(), docs/rough.md) sees the environment averaged over its
+//    GGX lobe (core/ggx.h), estimated by Monte Carlo: lobe rays traced as the mirror's one ray,
+//    from seeded random points (ReferenceOptions), so the frame carries noise that
+//    measureReferenceNoise (reference_noise.h) measures; roughness 0 is the perfect mirror above;
 //  - the bounce limit: a mirror, glass or cube-textured surface met by a ray that has already
 //    left kMaxBounces such surfaces is not followed further: it shows the background along the
 //    ray.
@@ -68,6 +72,16 @@
 #include "core/trace_limits.h"
 
 namespace reflect {
+
+// What the reference's Monte Carlo estimates (rough mirrors' lobes) use. The pixels depend on
+// the seed and the sample count, never on the threads.
+struct ReferenceOptions {
+  // Lobe rays a pixel's own rough mirror traces: enough that the estimate's noise is well below
+  // the errors it judges (docs/rough.md measures it: rough-spheres, 400x400).
+  int lobeSamples = 512;
+  uint32_t seed = 1;
+  int threads = 0;  // <= 0: std::thread::hardware_concurrency()
+};
 
 struct ReferenceFrame {
   RgbaImage image;
@@ -94,7 +108,8 @@ struct ReferenceFrame {
   // meanAngularErrorDegrees(lookupDirs, trueDirs) is the mean angular error of the plain lookup.
   std::vector<glm::vec3> lookupDirs;
   std::vector<glm::vec3> trueDirs;
-  double renderMs = 0.0;  // wall time of renderReference (scene build + tracing)
+  double renderMs = 0.0;     // wall time of renderReference (scene build + tracing)
+  ReferenceOptions options;  // what it was rendered with
 };
 
 // The scene's mesh `name` (level 0, object space), or nullptr when it is not loaded.
@@ -109,6 +124,11 @@ using MeshLookup = std::function<const MeshData*(const std::string&)>;
 Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& meshes,
                                        const CubeFaces* skybox, const LookCamera& camera,
                                        double seconds, int width, int height, int threads = 0);
+// The same with the Monte Carlo's options (the seed and samples of rough mirrors' lobes).
+Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& meshes,
+                                       const CubeFaces* skybox, const LookCamera& camera,
+                                       double seconds, int width, int height,
+                                       const ReferenceOptions& options);
 
 // The probe centre the raster captures `object`'s cube map from: the world centre of its mesh
 // bounds, or of its probe group's joint world bounds, or its explicit centre (as FramePlanner

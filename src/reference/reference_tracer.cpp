@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/cube_sampling.h"
+#include "core/ggx.h"
 #include "core/reference_shading.h"
 #include "core/trace_limits.h"
 
@@ -11,6 +12,8 @@ namespace reflect {
 namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
+// The lobe rays of a rough mirror seen in another's lobe (lobeAverage).
+constexpr uint32_t kNestedLobeRays = 8;
 
 glm::vec3 saturate(const glm::vec3& c) {
   return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
@@ -44,7 +47,7 @@ glm::vec3 Tracer::background(const glm::vec3& dir) const {
   return skybox ? glm::vec3(sampleCubeLinear(*skybox, dir)) : scene.clearColour;
 }
 
-glm::vec3 Tracer::radiance(int leaving, const glm::vec3& origin, const glm::vec3& dir, int depth,
+glm::vec3 Tracer::radiance(int leaving, const glm::vec3& origin, const glm::vec3& dir, Path path,
                            Hit* met) const {
   Hit hit = trace(world.excluding(leaving), meshes, origin, dir, 0.0f, kInfinity);
   const glm::vec3 away = glm::abs(hit.position - centres[static_cast<size_t>(leaving)]);
@@ -52,13 +55,13 @@ glm::vec3 Tracer::radiance(int leaving, const glm::vec3& origin, const glm::vec3
   if (met) *met = hit;
   if (hit.object < 0) return background(dir);
   if (scene.objects[static_cast<size_t>(hit.object)].material != Material::Phong &&
-      depth > kMaxBounces) {
+      path.depth > kMaxBounces) {
     return background(dir);
   }
-  return saturate(shade(hit, glm::normalize(-dir), depth, nullptr));
+  return saturate(shade(hit, glm::normalize(-dir), path, nullptr));
 }
 
-glm::vec3 Tracer::shade(const Hit& hit, const glm::vec3& toViewer, int depth,
+glm::vec3 Tracer::shade(const Hit& hit, const glm::vec3& toViewer, Path path,
                         Directions* dirs) const {
   const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
   const PhongLight& light = scene.light;
@@ -67,11 +70,11 @@ glm::vec3 Tracer::shade(const Hit& hit, const glm::vec3& toViewer, int depth,
       return phongShade(object.colour, hit.position, hit.normal, light.position, eye,
                         glm::vec4(light.ambient, light.diffuse, light.specular, light.shininess));
     case Material::Mirror:
-      return mirror(hit, toViewer, depth, dirs);
+      return mirror(hit, toViewer, path, dirs);
     case Material::Glass:
-      return glass(hit, toViewer, depth, dirs);
+      return glass(hit, toViewer, path, dirs);
     case Material::CubeTextured:
-      return cubeTextured(hit, depth, dirs);
+      return cubeTextured(hit, path, dirs);
   }
   return scene.clearColour;
 }
@@ -83,20 +86,70 @@ glm::vec3 Tracer::trueDirection(int object, const Hit& met, const glm::vec3& dir
 }
 
 // shaders/environment.frag (mirror) with the exact environment.
-glm::vec3 Tracer::mirror(const Hit& hit, const glm::vec3& toViewer, int depth,
+glm::vec3 Tracer::mirror(const Hit& hit, const glm::vec3& toViewer, Path path,
                          Directions* dirs) const {
   const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
   const float schlick = schlickWeight(fresnelF0(object.ior), toViewer, hit.normal);
   const glm::vec3 r = glm::reflect(-toViewer, hit.normal);
   Hit met;
-  const glm::vec3 env = radiance(hit.object, hit.position, r, depth + 1, &met);
+  glm::vec3 env;
+  if (!object.rough()) {
+    env = radiance(hit.object, hit.position, r, path.next(), &met);
+  } else {
+    env = lobeAverage(hit, toViewer, path);
+    // A rough mirror's lookup and true directions are its lobe centre's: the perfect mirror's.
+    if (dirs) radiance(hit.object, hit.position, r, path.next(), &met);
+  }
   if (dirs) *dirs = {r, trueDirection(hit.object, met, r)};
   return blended(
       mirrorBlend(object.colour, object.reflection, object.base, object.fresnel, schlick), env);
 }
 
+// A rough mirror's environment (core/ggx.h): the lobe average sum(w L) / sum(w) over lobe samples
+// l = reflect(-v, h), each traced as the perfect mirror traces its one ray. The first rough
+// mirror on a path: `lobeSamples` shifted Hammersley points (lobe_sampler.h) and that ratio,
+// consistent, with a bias of order 1 / S far below its noise. A rough mirror met by one of those
+// rays (seen in a rough reflection) would make that S^2 rays a pixel: it traces
+// kNestedLobeRays (from the third rough mirror on a path, one) and divides the mean of their w L by
+// the lobe's albedo E[w] instead of by their own weights, which keeps it unbiased, so the S rays of
+// the lobe before it average its noise out. Only the clamp of what that surface shows (a capture
+// texel's) applies to the few-ray estimate: its bright reflections come out a little dark.
+glm::vec3 Tracer::lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path path) const {
+  const float alpha = ggxAlpha(scene.objects[static_cast<size_t>(hit.object)].roughness);
+  // Both sides of a triangle are shaded alike: the lobe lies around the side facing the viewer.
+  const glm::vec3 n = glm::dot(hit.normal, toViewer) < 0.0f ? -hit.normal : hit.normal;
+  const float nDotV = glm::dot(n, toViewer);
+  const LobeSampler sampler(seed, hit.position, toViewer);
+  const bool first = path.roughMirrors == 0 && lobeSamples > 1;
+  const uint32_t count = first                    ? static_cast<uint32_t>(lobeSamples)
+                         : path.roughMirrors == 1 ? kNestedLobeRays
+                                                  : 1u;
+  Path next = path.next();
+  ++next.roughMirrors;
+  glm::vec3 sum(0.0f);
+  float weights = 0.0f;
+  for (uint32_t k = 0; k < count; ++k) {
+    const glm::vec3 h = ggxHalfVector(sampler.point(k, count), alpha, n);
+    const glm::vec3 l = glm::reflect(-toViewer, h);
+    const float w =
+        lobeSampleWeight(nDotV, glm::dot(n, l), glm::dot(n, h), glm::dot(toViewer, h), alpha);
+    if (w <= 0.0f) continue;
+    sum += w * radiance(hit.object, hit.position, l, next, nullptr);
+    weights += w;
+  }
+  if (!first && nDotV > 0.0f) {
+    const size_t i = static_cast<size_t>(hit.object);
+    const float albedo = i < lobeAlbedos.size() ? lobeAlbedos[i].at(nDotV) : 1.0f;
+    return sum / (static_cast<float>(count) * albedo);
+  }
+  if (weights > 0.0f) return sum / weights;
+  // No lobe above the surface (its normal at right angles to the view): the perfect mirror's ray.
+  return radiance(hit.object, hit.position, glm::reflect(-toViewer, hit.normal), path.next(),
+                  nullptr);
+}
+
 // shaders/environment.frag (glass), with the refracted ray followed through the object.
-glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, int depth,
+glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, Path path,
                         Directions* dirs) const {
   const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
   const float n = clampedIor(object.ior);
@@ -105,7 +158,7 @@ glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, int depth,
   const glm::vec3 t = glm::refract(i, hit.normal, 1.0f / n);
   const bool total = glm::dot(t, t) == 0.0f;
   const auto reflectedRay = [&](Hit* met) {
-    return radiance(hit.object, hit.position, glm::reflect(i, hit.normal), depth + 1, met);
+    return radiance(hit.object, hit.position, glm::reflect(i, hit.normal), path.next(), met);
   };
   glm::vec3 reflected(0.0f);
   glm::vec3 refracted(0.0f);
@@ -119,7 +172,7 @@ glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, int depth,
     const Crossing c =
         crossGlass(world.only(hit.object), meshes, hit.object, n, hit.position, glm::normalize(t));
     Hit met;
-    refracted = radiance(hit.object, c.point, c.direction, depth + 1, &met);
+    refracted = radiance(hit.object, c.point, c.direction, path.next(), &met);
     if (dirs) *dirs = {glm::normalize(t), trueDirection(hit.object, met, c.direction)};
     if (object.fresnel) reflected = reflectedRay(nullptr);
   }
@@ -129,7 +182,7 @@ glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, int depth,
 }
 
 // shaders/cube_textured.frag: the ray from the probe centre along the object-space position.
-glm::vec3 Tracer::cubeTextured(const Hit& hit, int depth, Directions* dirs) const {
+glm::vec3 Tracer::cubeTextured(const Hit& hit, Path path, Directions* dirs) const {
   const glm::vec3 c = centres[static_cast<size_t>(hit.object)];
   if (glm::dot(hit.objectPosition, hit.objectPosition) == 0.0f) {
     // The object's origin itself: a zero lookup vector, undefined in GL.
@@ -138,7 +191,7 @@ glm::vec3 Tracer::cubeTextured(const Hit& hit, int depth, Directions* dirs) cons
   }
   const glm::vec3 d = glm::normalize(hit.objectPosition);
   Hit met;
-  const glm::vec3 colour = radiance(hit.object, c, d, depth + 1, &met);
+  const glm::vec3 colour = radiance(hit.object, c, d, path.next(), &met);
   if (dirs) *dirs = {d, trueDirection(hit.object, met, d)};
   return colour;
 }

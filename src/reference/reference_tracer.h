@@ -3,6 +3,7 @@
 // reference_shading.h (shaders/shading.glsl's).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -10,6 +11,7 @@
 #include "core/scene.h"
 #include "core/skybox_faces.h"
 #include "reference/embree_scene.h"
+#include "reference/lobe_sampler.h"
 
 namespace reflect {
 
@@ -34,6 +36,15 @@ struct Directions {
   glm::vec3 truth{0.0f};
 };
 
+// Where a ray is on its way from the eye: the reflective surfaces it has left (the bounce limit
+// counts them), and of those the rough mirrors, whose lobes already average it over many rays
+// (a rough mirror it meets then traces fewer: Tracer::lobeAverage).
+struct Path {
+  int depth = 0;
+  int roughMirrors = 0;
+  Path next() const { return {depth + 1, roughMirrors}; }
+};
+
 struct Tracer {
   const Scene& scene;
   const std::vector<WorldMesh>& meshes;
@@ -41,27 +52,35 @@ struct Tracer {
   const CubeFaces* skybox;
   const std::vector<glm::vec3>& centres;  // per object: probe centre (bounds centre if none)
   glm::vec3 eye;
+  // Rough mirrors (SceneObject::rough()): the lobe samples a pixel's own rough mirror averages,
+  // and the seed of their random points (lobe_sampler.h). A rough mirror seen in another's lobe
+  // traces fewer (lobeAverage() says why).
+  int lobeSamples = 512;  // ReferenceOptions's
+  uint32_t seed = 1;
+  // Per object: its lobe's albedo (rough mirrors; the others' are empty).
+  std::vector<LobeAlbedoTable> lobeAlbedos;
 
   // What a ray sees where it meets nothing: the sky along it, or the clear colour.
   glm::vec3 background(const glm::vec3& dir) const;
 
   // What the ray origin + t dir (t > 0) sees among the objects other than `leaving`, clamped as
-  // a capture texel is. `depth` counts the reflective surfaces the ray has left. The world a
+  // a capture texel is. `path`: what the ray has met so far. The world a
   // reflector sees ends at its probe's far planes, as the main camera's ends at its own: a
   // surface farther than the capture's far distance along any axis from the probe centre is
   // not there (the floor's far reaches at a grazing reflection show the background).
-  glm::vec3 radiance(int leaving, const glm::vec3& origin, const glm::vec3& dir, int depth,
+  glm::vec3 radiance(int leaving, const glm::vec3& origin, const glm::vec3& dir, Path path,
                      Hit* met) const;
 
   // The colour of surface `hit` seen along -toViewer (unit), unclamped; `dirs` (reflectors
   // only, may be null) gets its lookup and true directions.
-  glm::vec3 shade(const Hit& hit, const glm::vec3& toViewer, int depth, Directions* dirs) const;
+  glm::vec3 shade(const Hit& hit, const glm::vec3& toViewer, Path path, Directions* dirs) const;
 
  private:
   glm::vec3 trueDirection(int object, const Hit& met, const glm::vec3& dir) const;
-  glm::vec3 mirror(const Hit& hit, const glm::vec3& toViewer, int depth, Directions* dirs) const;
-  glm::vec3 glass(const Hit& hit, const glm::vec3& toViewer, int depth, Directions* dirs) const;
-  glm::vec3 cubeTextured(const Hit& hit, int depth, Directions* dirs) const;
+  glm::vec3 mirror(const Hit& hit, const glm::vec3& toViewer, Path path, Directions* dirs) const;
+  glm::vec3 lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path path) const;
+  glm::vec3 glass(const Hit& hit, const glm::vec3& toViewer, Path path, Directions* dirs) const;
+  glm::vec3 cubeTextured(const Hit& hit, Path path, Directions* dirs) const;
 };
 
 }  // namespace reflect
