@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <set>
 
 #include "app/headless_frames.h"
 #include "core/probe_layout.h"
@@ -69,6 +70,19 @@ Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
   report.meanAngularErrorDeg = angle.value();
   report.reflectorPixels = report.reflector.pixelCount;
   report.offReflectorPixels = report.offReflector.pixelCount;
+  std::set<int> reflectors;
+  for (size_t i = 0; i < off.size(); ++i) {
+    if (reference.reflectorMask[i]) reflectors.insert(reference.objectIds[i]);
+  }
+  for (int object : reflectors) {
+    std::vector<uint8_t> own(off.size());
+    for (size_t i = 0; i < own.size(); ++i) {
+      own[i] = reference.reflectorMask[i] && reference.objectIds[i] == object;
+    }
+    auto metrics = imageErrorMetrics(raster, exact, own);
+    if (!metrics) return Result<AccuracyReport>::failure(metrics.error());
+    report.perReflector.emplace_back(object, metrics.value());
+  }
   return report;
 }
 

@@ -32,6 +32,8 @@ struct AccuracyReport {
   // all the others.
   size_t reflectorPixels = 0;
   size_t offReflectorPixels = 0;
+  // Per reflector object (by scene index, ascending): its own pixels of the reflector mask.
+  std::vector<std::pair<int, ImageErrorMetrics>> perReflector;
   double rasterMs = 0.0;     // renderFrameAt, including read-back
   double referenceMs = 0.0;  // renderReference
   RgbaImage referenceImage;  // measureAccuracy: the reference frame itself

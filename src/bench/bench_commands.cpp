@@ -38,6 +38,22 @@ void printFilterCosts(const std::vector<SweepRow>& rows) {
   }
 }
 
+// Rough readers: each rough mirror's own reflector PSNR (issue 24's target: >= 35 dB at roughness
+// 0.3 and above under the default).
+void printRoughErrors(const std::vector<SweepRow>& rows) {
+  bool header = false;
+  for (const SweepRow& r : rows) {
+    if (r.roughPsnrDb.empty()) continue;
+    if (!header) {
+      std::printf("\nrough mirrors, each its own reflector PSNR dB (pooled over the times):\n");
+      header = true;
+    }
+    std::printf("%s |", r.setting.name.c_str());
+    for (const auto& [label, psnr] : r.roughPsnrDb) std::printf(" %s: %.2f |", label.c_str(), psnr);
+    std::printf("\n");
+  }
+}
+
 }  // namespace
 
 int benchFramesDefault(BenchMode mode) {
@@ -233,6 +249,7 @@ std::string runSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory
       options.tunedTimes.empty() ? "none" : timesText(options.tunedTimes).c_str(),
       sweepTable(rows.value()).c_str());
   printFilterCosts(rows.value());
+  printRoughErrors(rows.value());
   const SweepRow* original = nullptr;
   const SweepRow* byDefault = nullptr;
   const SweepRow* centre = nullptr;

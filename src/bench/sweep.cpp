@@ -157,6 +157,7 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     row.captureMs = median(frames[i].captureMs);
     row.filterMs = median(frames[i].filterMs);
     double heldOutMse = 0, tunedMse = 0, p95 = 0, angle = 0, offMse = 0, visible = 0;
+    std::map<int, double> roughMse;  // by object
     row.worstPsnrDb = kPsnrCapDb;
     for (bool heldOut : {true, false}) {
       for (double t : heldOut ? o.heldOutTimes : o.tunedTimes) {
@@ -171,6 +172,11 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
           continue;
         }
         heldOutMse += mse / static_cast<double>(o.heldOutTimes.size());
+        for (const auto& [object, metrics] : r.perReflector) {
+          if (!demos[i]->scene().objects[static_cast<size_t>(object)].rough()) continue;
+          roughMse[object] +=
+              metrics.rmse * metrics.rmse / static_cast<double>(o.heldOutTimes.size());
+        }
         offMse += r.offReflector.rmse * r.offReflector.rmse;
         p95 += r.reflector.p95PixelError;
         row.maxError = std::max(row.maxError, static_cast<double>(r.reflector.maxPixelError));
@@ -189,6 +195,12 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     row.p95 = p95 / n;
     row.meanAngularErrorDeg = angle / n;
     row.visiblePerFrame = visible / n;
+    for (const auto& [object, mse] : roughMse) {
+      char label[48];
+      std::snprintf(label, sizeof label, "roughness %g",
+                    demos[i]->scene().objects[static_cast<size_t>(object)].roughness);
+      row.roughPsnrDb.emplace_back(label, psnrFromRmse(std::sqrt(mse)));
+    }
     rows.push_back(row);
     demos[i].reset();
   }

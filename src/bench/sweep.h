@@ -32,6 +32,9 @@ struct SweepRow {
   double cpuMs = 0;  // median CPU time of the process per frame
   // Medians: the capture (faces and prefilter) and its prefilter pass alone (rough readers).
   double captureMs = 0, filterMs = 0;
+  // Rough mirrors: per reflector of roughness > 0, "roughness R" and its pooled PSNR (held-out
+  // times), in scene order.
+  std::vector<std::pair<std::string, double>> roughPsnrDb;
   // Over the reflector at the held-out times: PSNR of the pooled error, the worst time's PSNR,
   // pixels off by more than kVisibleErrorLevels per frame (mean and worst time), RMSE, mean p95,
   // largest error, mean angular error of the looked-up direction; off the reflector, PSNR.

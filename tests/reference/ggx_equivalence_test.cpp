@@ -31,13 +31,12 @@ struct Sample {
   float alpha;
   glm::vec3 normal;
   float nDotV, nDotL, nDotH, vDotH;
-  int samples, faceSize;  // prefilterSourceLod
 };
 
-enum Column { kHammersley, kHalfVector, kTerms, kFrame, kLod, kColumns };
+enum Column { kHammersley, kHalfVector, kTerms, kFrame, kColumns };
 const char* const kColumnNames[] = {"hammersley", "ggxHalfVector",
                                     "ggxDistribution, smithG1, lobeSampleWeight",
-                                    "frameAround tangent", "prefilterSourceLod"};
+                                    "frameAround tangent"};
 
 constexpr const char* kProgram = R"glsl(
 uniform uint u_k;
@@ -46,7 +45,6 @@ uniform vec2 u_u;
 uniform float u_alpha;
 uniform vec3 u_normal;
 uniform vec4 u_cosines;  // n.v, n.l, n.h, v.h
-uniform ivec2 u_lodInputs;  // samples, face size
 out vec4 result;
 
 void main() {
@@ -58,9 +56,6 @@ void main() {
              lobeSampleWeight(u_cosines.x, u_cosines.y, u_cosines.z, u_cosines.w, u_alpha));
   }
   if (column == 3) c = frameAround(u_normal)[0];
-  if (column == 4) {
-    c = vec3(prefilterSourceLod(u_cosines.z, u_alpha, u_lodInputs.x, u_lodInputs.y), 0.0, 0.0);
-  }
   result = vec4(c, 1.0);
 }
 )glsl";
@@ -69,8 +64,7 @@ std::vector<glm::vec3> referenceColumns(const Sample& s) {
   return {glm::vec3(hammersley(s.k, s.n), 0.0f), ggxHalfVector(s.u, s.alpha, s.normal),
           glm::vec3(ggxDistribution(s.nDotH, s.alpha), smithG1(s.nDotV, s.alpha),
                     lobeSampleWeight(s.nDotV, s.nDotL, s.nDotH, s.vDotH, s.alpha)),
-          frameAround(s.normal)[0],
-          glm::vec3(prefilterSourceLod(s.nDotH, s.alpha, s.samples, s.faceSize), 0.0f, 0.0f)};
+          frameAround(s.normal)[0]};
 }
 
 std::vector<Sample> samples() {
@@ -97,8 +91,6 @@ std::vector<Sample> samples() {
         s.nDotL = c.y;
         s.nDotH = c.z;
         s.vDotH = c.w;
-        s.samples = 16 << (k % 2);
-        s.faceSize = 128 << (k % 3);
         out.push_back(s);
         ++k;
       }
@@ -114,7 +106,6 @@ void setUniforms(const ShaderProgram& p, const Sample& s) {
   glUniform1f(p.uniform("u_alpha"), s.alpha);
   glUniform3f(p.uniform("u_normal"), s.normal.x, s.normal.y, s.normal.z);
   glUniform4f(p.uniform("u_cosines"), s.nDotV, s.nDotL, s.nDotH, s.vDotH);
-  glUniform2i(p.uniform("u_lodInputs"), s.samples, s.faceSize);
 }
 
 // Every sample's columns from the GPU: sample i in row i of a kColumns-wide target.

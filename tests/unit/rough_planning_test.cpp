@@ -116,5 +116,27 @@ TEST(RoughPlanning, ARoughPixelTracesLobeRaysAndAFilteredProbeCostsItsSamples) {
   EXPECT_DOUBLE_EQ(planner::filterSamplesFor({1, 2}, 64, 32), 6.0 * (32 * 32 + 16 * 16) * 32);
 }
 
+TEST(PrefilterLobe, WeightsSumToOneAboveTheSurfaceAndWiderLobesReadCoarserLevels) {
+  for (float alpha : {0.04f, 0.25f, 1.0f}) {
+    const std::vector<glm::vec4> lobe = prefilterLobe(alpha, 32, 128);
+    ASSERT_FALSE(lobe.empty());
+    EXPECT_LE(lobe.size(), 32u);
+    float total = 0.0f;
+    for (const glm::vec4& s : lobe) {
+      EXPECT_GT(s.z, 0.0f);  // above the surface (the normal is +z)
+      EXPECT_GE(s.w, 0.0f);
+      total += glm::length(glm::vec3(s));  // a sample's length is its weight
+    }
+    EXPECT_NEAR(total, 1.0f, 1e-5f);
+  }
+  // The lobe's centre sample (hammersley point 0: h = n) reads a level that grows with alpha.
+  EXPECT_LT(prefilterLobe(0.04f, 32, 128)[0].w, prefilterLobe(1.0f, 32, 128)[0].w);
+  // More samples, each a smaller share of the lobe: a finer level.
+  EXPECT_GT(prefilterLobe(0.25f, 8, 128)[0].w, prefilterLobe(0.25f, 128, 128)[0].w);
+  // Held to kMaxFilterSamples (less those below the surface).
+  EXPECT_EQ(prefilterLobe(0.25f, 4096, 128).size(),
+            prefilterLobe(0.25f, kMaxFilterSamples, 128).size());
+}
+
 }  // namespace
 }  // namespace reflect
