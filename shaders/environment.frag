@@ -38,6 +38,12 @@ uniform int u_outputDirection; // 1: write the looked-up direction instead (for 
 
 #include "capture_output.glsl"
 #include "shading.glsl"
+#if ROUGH == 1
+// Here, not only where exact_shade.glsl needs it: a file is included once a program, where it is
+// first named.
+#include "ggx.glsl"
+uniform float u_roughAlpha;  // a rough mirror's lobe alpha (core/ggx.h ggxAlpha)
+#endif
 #include "environment_lookup.glsl"
 #include "exact_shade.glsl"
 
@@ -57,7 +63,12 @@ void main() {
                               fresnel, schlick),
                    refracted);
 #else
-  vec3 reflected = seenReflected(v_worldPosition, reflect(I, N), measured);
+  vec3 R = reflect(I, N);
+#if ROUGH == 1 && SEARCH != SEARCH_EXACT
+  // A prefiltered lookup reads the lobe where its mass is (core/ggx.h); traced rays need no fit.
+  R = specularDominantDirection(N, R, u_roughAlpha);
+#endif
+  vec3 reflected = seenReflected(v_worldPosition, R, measured);
   colour = blended(mirrorBlend(u_colour, u_reflectionWeight, u_baseWeight, fresnel, schlick),
                    reflected);
 #endif

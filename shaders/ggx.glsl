@@ -42,6 +42,11 @@ float smithG1(float cosine, float alpha) {
   return 2.0 * cosine / (cosine + sqrt(a2 + (1.0 - a2) * cosine * cosine));
 }
 
+vec3 specularDominantDirection(vec3 n, vec3 r, float alpha) {
+  float s = 1.0 - alpha;
+  return normalize(mix(n, r, s * (sqrt(s) + alpha)));
+}
+
 float lobeSampleWeight(float nDotV, float nDotL, float nDotH, float vDotH, float alpha) {
   if (nDotL <= 0.0 || nDotV <= 0.0 || nDotH <= 0.0) return 0.0;
   return smithG1(nDotV, alpha) * smithG1(nDotL, alpha) * vDotH / (nDotV * nDotH);

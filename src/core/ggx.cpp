@@ -87,6 +87,17 @@ RoughLevels roughLevelsFor(float roughness, int levels) {
   return {lower, std::min(static_cast<int>(std::ceil(at)), levels)};
 }
 
+int usableRoughLevels(int roughLevels, int faceSize) {
+  int top = 0;
+  while ((2 << top) <= faceSize) ++top;  // floor(log2(faceSize))
+  return std::max(std::min(roughLevels, top), 1);
+}
+
+glm::vec3 specularDominantDirection(const glm::vec3& n, const glm::vec3& r, float alpha) {
+  const float s = 1.0f - alpha;
+  return glm::normalize(glm::mix(n, r, s * (std::sqrt(s) + alpha)));
+}
+
 float roughnessOfLevel(int level, int levels) {
   return levels > 0 ? static_cast<float>(level) / static_cast<float>(levels) : 0.0f;
 }

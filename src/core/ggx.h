@@ -69,6 +69,16 @@ struct RoughLevels {
   int upper = 0;
 };
 RoughLevels roughLevelsFor(float roughness, int levels);
+// The levels a probe of faceSize can hold: the setting, held to log2(faceSize) so that the last
+// level has a texel (a mip chain ends there).
+int usableRoughLevels(int roughLevels, int faceSize);
+
+// Where a prefiltered lookup reads a rough mirror's lobe: the reflected direction r bent towards
+// the normal n as the lobe widens (the microfacet lobe's mass sits between them, the more so the
+// rougher and the more grazing): normalize(mix(n, r, s (sqrt(s) + alpha))), s = 1 - alpha, the
+// fit Frostbite published (Lagarde and de Rousiers 2014). shaders/environment.frag uses it; the
+// traced lobe needs no such fit.
+glm::vec3 specularDominantDirection(const glm::vec3& n, const glm::vec3& r, float alpha);
 float roughnessOfLevel(int level, int levels);
 
 }  // namespace reflect

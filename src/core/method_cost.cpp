@@ -33,7 +33,10 @@ MethodCosts MethodCosts::softwareRenderer() {
   c.triangle = 1.0e-4;
   c.texel = 1.5e-5;
   c.searchPixel = 2.7e-4;
-  c.filterSample = 2.0e-6;
+  // The prefilter pass: 43.9 ms for the 1.2 million samples a frame of rough-spheres' four rough
+  // probes (128-texel faces, 32 samples; `reflect bench --sweep --scene rough-spheres`, its
+  // filter table; docs/bench/sweep-rough.txt).
+  c.filterSample = 3.6e-5;
   return c;
 }
 

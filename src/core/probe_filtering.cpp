@@ -15,7 +15,8 @@ void decideFiltering(ProbePlan& probe, const std::vector<PlannedObject>& objects
   for (int m : probe.members) {
     const SceneObject::Look& look = objects[static_cast<size_t>(m)].look;
     if (look.material != Material::Mirror || look.roughness <= 0.0f) continue;
-    const RoughLevels needed = roughLevelsFor(look.roughness, context.accuracy.roughLevels);
+    const RoughLevels needed = roughLevelsFor(
+        look.roughness, usableRoughLevels(context.accuracy.roughLevels, context.faceSize));
     for (int level : {needed.lower, needed.upper}) {
       if (level > 0 && !contains(levels, level)) levels.push_back(level);
     }

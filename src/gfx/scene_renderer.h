@@ -118,7 +118,7 @@ class SceneRenderer {
     GLint colour = -1, reflectionWeight = -1, baseWeight = -1, eta = -1, fresnelF0 = -1,
           fresnel = -1, twoSurfaces = -1, glassSphere = -1, probeCentre = -1, distanceUnit = -1,
           outputDirection = -1, layers = -1, faceSize = -1, topLevel = -1, pyramidTile = -1,
-          roughLod = -1;
+          roughLod = -1, roughAlpha = -1;
   };
   // One variant (program_key.h) and where its uniforms are; a uniform the variant does not use is
   // -1, which GL ignores.

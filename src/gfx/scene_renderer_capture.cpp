@@ -8,6 +8,7 @@
 #include "core/cube_faces.h"
 #include "core/depth_code.h"
 #include "core/frame_steps.h"
+#include "core/ggx.h"
 #include "core/normal_matrix.h"
 #include "gfx/scene_renderer.h"
 #include "gfx/scene_renderer_detail.h"
@@ -215,8 +216,12 @@ Result<double> SceneRenderer::prefilterProbes(const FramePlan& plan) {
     }
     const CubeCaptureTarget& t = captured->second;
     glBindVertexArray(emptyVertexArray_.id());
-    const PrefilterJob job{t.texture(0),      t.faceSize(),          t.format().halfFloat,
-                           probe.roughLevels, accuracy_.roughLevels, accuracy_.filterSamples,
+    const PrefilterJob job{t.texture(0),
+                           t.faceSize(),
+                           t.format().halfFloat,
+                           probe.roughLevels,
+                           usableRoughLevels(accuracy_.roughLevels, t.faceSize()),
+                           accuracy_.filterSamples,
                            probe.filterFaces};
     Result<double> taken = prefilter_->filter(job, prefiltered_[probe.reflector]);
     if (!taken) return taken;

@@ -6,6 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/cube_faces.h"
+#include "core/ggx.h"
 #include "gfx/scene_renderer.h"
 #include "gfx/scene_renderer_detail.h"
 
@@ -62,7 +63,7 @@ Result<SceneRenderer::Program> SceneRenderer::buildProgram(const ProgramKey& key
                               at("u_twoSurfaces"),  at("u_glassSphere"),      at("u_probeCentre"),
                               at("u_distanceUnit"), at("u_outputDirection"),  at("u_layers"),
                               at("u_faceSize"),     at("u_topLevel"),         at("u_pyramidTile"),
-                              at("u_roughLod")};
+                              at("u_roughLod"),     at("u_roughAlpha")};
       glUniform1i(at("u_environment"), kEnvironmentUnit);
       glUniform1i(at("u_environment2"), kEnvironment2Unit);
       glUniform1i(at("u_pyramid"), kPyramidUnit);
@@ -190,8 +191,10 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
     auto filtered = probe ? prefiltered_.find(probe->reflector) : prefiltered_.end();
     bindTexture(kPrefilteredUnit, GL_TEXTURE_CUBE_MAP,
                 filtered != prefiltered_.end() ? filtered->second.texture() : 0);
-    glUniform1f(env.roughLod, std::clamp(object.roughness, 0.0f, 1.0f) *
-                                  static_cast<float>(accuracy_.roughLevels));
+    glUniform1f(env.roughLod,
+                std::clamp(object.roughness, 0.0f, 1.0f) *
+                    static_cast<float>(usableRoughLevels(accuracy_.roughLevels, faceSize)));
+    glUniform1f(env.roughAlpha, ggxAlpha(object.roughness));
   }
   glActiveTexture(GL_TEXTURE0);
   glUniform3fv(env.probeCentre, 1, glm::value_ptr(centre));
