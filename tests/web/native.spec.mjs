@@ -21,6 +21,13 @@ const FRAME = { fractionOver: 0.002, mean: 0.5 };  // kMaxFractionOver, kMaxMean
 // skybox-grid's mirror pixels (along its grid lines, mirror-symmetric) and 0.27% of
 // shared-probe's (single pixels on reflected outlines) over 16 levels, by 17 to 130.
 const REFLECTORS = { fractionOver: 0.005, mean: 1.0 };
+// rough-spheres' rough mirrors read prefiltered levels, each texel an average of 32 reads of the
+// capture's mip chain at fractional levels; glGenerateMipmap's filter and trilinear cube filtering
+// are the implementation's, so SwiftShader and llvmpipe part by a few levels over whole spheres
+// (measured at 800x600, t = 2: frame 0.34% over 16 levels, mean 0.20; reflectors 3.78%, mean 2.13).
+// Looser limits here, above those by about a third; a page drawing the rough spheres sharp
+// (roughness ignored) is far past them.
+const ROUGH = { frame: { fractionOver: 0.005, mean: 0.5 }, reflectors: { fractionOver: 0.05, mean: 3.0 } };
 
 // Max channel difference per pixel of two RGBA images of one size.
 function differences(a, b) {
@@ -76,9 +83,10 @@ for (const scene of SCENES) {
                 `${(100 * frame.fractionOver).toFixed(3)}%; reflectors (${inside.count} px) mean ` +
                 `${inside.mean.toFixed(3)}, over ${(100 * inside.fractionOver).toFixed(3)}%`);
     expect(inside.count, 'reflector pixels found').toBeGreaterThan(500);
-    expect(frame.fractionOver).toBeLessThanOrEqual(FRAME.fractionOver);
-    expect(frame.mean).toBeLessThanOrEqual(FRAME.mean);
-    expect(inside.fractionOver).toBeLessThanOrEqual(REFLECTORS.fractionOver);
-    expect(inside.mean).toBeLessThanOrEqual(REFLECTORS.mean);
+    const limits = scene === 'rough-spheres' ? ROUGH : { frame: FRAME, reflectors: REFLECTORS };
+    expect(frame.fractionOver).toBeLessThanOrEqual(limits.frame.fractionOver);
+    expect(frame.mean).toBeLessThanOrEqual(limits.frame.mean);
+    expect(inside.fractionOver).toBeLessThanOrEqual(limits.reflectors.fractionOver);
+    expect(inside.mean).toBeLessThanOrEqual(limits.reflectors.mean);
   });
 }
