@@ -20,6 +20,12 @@ constexpr int kWidth = 128;
 constexpr int kHeight = 96;
 constexpr double kTime = 2.0;
 constexpr double kExactMinPsnr = 34.5;
+// Measured at 128x96 (RoughPrefiltered below): the rough spheres 25.17, 26.38, 30.77 and
+// 30.72 dB prefiltered, 1.0 to 7.6 dB above the same spheres drawn sharp; at this size their
+// outlines weigh much (the perfect sphere itself is 24.5 dB there). Floors about 1 dB and half
+// the smallest gain below.
+constexpr double kPrefilteredMinPsnr = 24.0;
+constexpr double kPrefilterGain = 0.5;
 
 Scene roughSpheres(bool roughnessZero = false) {
   Result<Scene> scene = loadNamedScene("rough-spheres");
@@ -90,6 +96,34 @@ TEST(RoughExactMode, LobeRaysMatchTheReference) {
   std::printf("rough-spheres %dx%d: the exact mode's reflector PSNR %.2f dB (max %d)\n", kWidth,
               kHeight, report.value().reflector.psnrDb, report.value().reflector.maxPixelError);
   EXPECT_GE(report.value().reflector.psnrDb, kExactMinPsnr);
+}
+
+// The prefiltered probes (captured and searched, as the default does where it captures), each
+// rough sphere on its own pixels against the reference: issue 24's target is 35 dB at roughness
+// 0.3 and above, which the prefilter misses (README, "Rough mirrors"); this holds what it reaches,
+// and that it is well above the perfect mirror's picture of the same spheres (roughness ignored).
+TEST(RoughPrefiltered, EachRoughSphereAgainstTheReference) {
+  auto rough = testing::makeCapturingDemo(roughSpheres());
+  const ReferenceFrame reference = referenceWithSeed(*rough, 1);
+  auto prefiltered = measureAccuracy(*rough, kTime, kWidth, kHeight, &reference);
+  ASSERT_TRUE(prefiltered) << prefiltered.error();
+  auto sharp = testing::makeCapturingDemo(roughSpheres(true));
+  auto image = renderFrameAt(*sharp, kTime, kWidth, kHeight);
+  ASSERT_TRUE(image) << image.error();
+  auto ignored = compareWithReference(image.value(), reference);
+  ASSERT_TRUE(ignored) << ignored.error();
+  const Scene scene = roughSpheres();
+  ASSERT_EQ(prefiltered.value().perReflector.size(), 5u);
+  for (size_t i = 0; i < 5; ++i) {
+    const auto& [object, metrics] = prefiltered.value().perReflector[i];
+    const double without = ignored.value().perReflector[i].second.psnrDb;
+    const float roughness = scene.objects[static_cast<size_t>(object)].roughness;
+    std::printf("roughness %.2f: prefiltered %.2f dB, roughness ignored %.2f dB\n", roughness,
+                metrics.psnrDb, without);
+    if (roughness == 0.0f) continue;
+    EXPECT_GE(metrics.psnrDb, kPrefilteredMinPsnr) << "roughness " << roughness;
+    EXPECT_GE(metrics.psnrDb, without + kPrefilterGain) << "roughness " << roughness;
+  }
 }
 
 // tests/golden/rough_spheres_roughness0_*.png: rough-spheres at 128x96, t = 2 s, rendered by
