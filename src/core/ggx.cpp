@@ -62,7 +62,7 @@ float prefilterSourceLod(float nDotH, float alpha, int samples, int faceSize) {
 
 std::vector<glm::vec4> prefilterLobe(float alpha, int samples, int faceSize) {
   const int n = std::clamp(samples, 1, kMaxFilterSamples);
-  const glm::vec3 normal(0.0f, 0.0f, 1.0f);  // frameAround(z) is the identity
+  const glm::vec3 normal(0.0f, 0.0f, 1.0f);  // the set is turned about z; the lobe is isotropic
   std::vector<glm::vec4> lobe;
   float total = 0.0f;
   for (int k = 0; k < n; ++k) {
