@@ -17,7 +17,7 @@ const sphere = (page) => page.evaluate(() => window.demo.objects()[3].material);
 test('the reflection weight and the Fresnel switch change the sphere and the URL', async ({ page }) => {
   const errors = collectErrors(page);
   await openDemo(page, '?paused&t=1&policy=every-frame');
-  expect(await sphere(page)).toEqual({ type: 'mirror', reflection: 0.78, base: 0.3, ior: 1.52, fresnel: false,
+  expect(await sphere(page)).toEqual({ type: 'mirror', reflection: 0.78, base: 0.3, ior: 1.52, fresnel: false, roughness: 0,
                                        environment: 'live' });
   const original = await renderAndRead(page);
   await page.locator('#materials > .lil-title').click();  // open the folder
