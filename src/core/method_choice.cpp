@@ -22,7 +22,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<Plann
     if (contains(probe.members, static_cast<int>(i))) {
       const float pixels = screenPixels(worldCentreOf(o), worldRadiusOf(o), view);
       c.trace.pixels += pixels;
-      if (o.look.material == Material::Mirror && o.look.roughness > 0.0f) {
+      if (o.look.rough()) {
         c.trace.lobePixels += pixels;
       }
     } else {

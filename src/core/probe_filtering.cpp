@@ -14,7 +14,7 @@ void decideFiltering(ProbePlan& probe, const std::vector<PlannedObject>& objects
   std::vector<int> levels;
   for (int m : probe.members) {
     const SceneObject::Look& look = objects[static_cast<size_t>(m)].look;
-    if (look.material != Material::Mirror || look.roughness <= 0.0f) continue;
+    if (!look.rough()) continue;
     const RoughLevels needed = roughLevelsFor(
         look.roughness, usableRoughLevels(context.accuracy.roughLevels, context.faceSize));
     for (int level : {needed.lower, needed.upper}) {

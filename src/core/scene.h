@@ -75,10 +75,11 @@ struct SceneObject {
     bool fresnel;
     float roughness;
     bool operator==(const Look&) const = default;
+    // A mirror whose reflection is blurred by a lobe (and so reads a prefiltered probe).
+    bool rough() const { return material == Material::Mirror && roughness > 0.0f; }
   };
   Look look() const { return {material, environment, reflection, base, ior, fresnel, roughness}; }
-  // A mirror whose reflection is blurred by a lobe (and so reads a prefiltered probe).
-  bool rough() const { return material == Material::Mirror && roughness > 0.0f; }
+  bool rough() const { return look().rough(); }
   bool needsLiveProbe() const { return usesEnvironment() && environment == Environment::LiveProbe; }
 };
 
