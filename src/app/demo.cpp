@@ -5,6 +5,7 @@
 #include "core/scene_file.h"
 #include "core/settings_schema.h"
 #include "gfx/gl.h"
+#include "gfx/gl_handle.h"
 
 namespace reflect {
 
@@ -152,10 +153,8 @@ void Demo::releaseGraphics() {
 }
 
 void Demo::loseGraphics() {
-  graphics_.lose(meshes_);
-  inside_.abandon();
-  pick_.abandon();
-  planner_.invalidate();
+  markGlContextLost();
+  releaseGraphics();
 }
 
 }  // namespace reflect

@@ -121,7 +121,8 @@ class Demo {
   // Creates the GL resources from the CPU-side data. Call once a context is current, and again
   // after a lost context is restored. Returns "" or a message.
   std::string initGraphics();
-  // The context is gone: forget GL names without calling GL.
+  // The context is gone: marks its names dead (markGlContextLost), so that freeing the GL
+  // resources forgets them without calling GL; initGraphics makes them again.
   void loseGraphics();
   // Frees the GL resources (the context stays); initGraphics makes them again.
   void releaseGraphics();

@@ -69,19 +69,6 @@ void DemoGraphics::meshReplaced(const std::string& name, MeshLibrary& library) {
   if (tracer_) tracer_->setMesh(name, library.bvh(name));
 }
 
-void DemoGraphics::lose(MeshLibrary& library) {
-  library.setGpu(nullptr);
-  if (renderer_) renderer_->abandon();
-  renderer_.reset();
-  errorView_.lose();
-  if (tracer_) tracer_->abandon();
-  tracer_.reset();
-  if (timer_) timer_->abandon();
-  timer_.reset();
-  if (meshes_) meshes_->abandon();
-  meshes_.reset();
-}
-
 void DemoGraphics::release(MeshLibrary& library) {
   library.setGpu(nullptr);
   errorView_.release();

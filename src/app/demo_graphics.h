@@ -1,7 +1,6 @@
 // The demo's GL resources and their lifetime: the one GPU copy of the meshes that every renderer
 // draws from, the main renderer, the GPU timer, the exact mode's tracer and the error view's pass.
-// Made from the CPU side (init), again after a lost context (lose, then init), or freed with the
-// context alive (release).
+// Made from the CPU side (init), freed (release), and made again after a lost context.
 #pragma once
 
 #include <memory>
@@ -31,9 +30,8 @@ class DemoGraphics {
   std::string setSkybox(const CubeFaces& faces);
   // Mesh `name` was replaced: the tracer, when there is one, takes its new tree.
   void meshReplaced(const std::string& name, MeshLibrary& library);
-  // The context is gone: forget GL names without calling GL.
-  void lose(MeshLibrary& library);
-  // Frees the GL resources (the context stays).
+  // Frees the GL resources. After a lost context (markGlContextLost) the same call forgets the
+  // names instead: each handle knows its context is gone.
   void release(MeshLibrary& library);
 
   bool ready() const { return renderer_ != nullptr; }

@@ -65,14 +65,6 @@ void ErrorViewPass::render(const Scene& scene, const std::vector<PlannedObject>&
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void ErrorViewPass::lose() {
-  if (renderer_) renderer_->abandon();
-  renderer_.reset();
-  if (view_) view_->abandon();
-  view_.reset();
-  tracer_ = nullptr;
-}
-
 void ErrorViewPass::release() {
   renderer_.reset();
   view_.reset();

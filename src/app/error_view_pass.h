@@ -36,9 +36,7 @@ class ErrorViewPass {
   void render(const Scene& scene, const std::vector<PlannedObject>& objects, CaptureContext context,
               const ViewParams& view, const std::vector<DrawItem>& draws, unsigned framebuffer,
               FrameStats& stats);
-  // The context is gone: forget GL names without calling GL.
-  void lose();
-  // Frees its GL resources (the context stays).
+  // Frees its GL resources (or forgets them, after a lost context).
   void release();
 
  private:

@@ -38,14 +38,9 @@ std::string InsideViews::drawImage(const RgbaImage& image, unsigned framebuffer,
   return {};
 }
 
-void InsideViews::abandon() {
-  if (blit_) blit_->abandon();
-  blit_.reset();
-  ages_.clear();
-}
-
 void InsideViews::release() {
   blit_.reset();
+  ages_.clear();
 }
 
 }  // namespace reflect

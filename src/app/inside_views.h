@@ -38,9 +38,7 @@ class InsideViews {
   // Puts `image` on `framebuffer` (width x height) as the views are shown, centred on their
   // background (step through a frame). Returns "" or why it could not.
   std::string drawImage(const RgbaImage& image, unsigned framebuffer, int width, int height);
-  // The context was lost: names are gone, ages start over (the cubes are empty again).
-  void abandon();
-  // The GL objects are freed (the context stays).
+  // The GL objects are freed and the cubes' ages start over (their cubes are gone too).
   void release();
 
  private:

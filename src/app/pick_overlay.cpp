@@ -19,11 +19,6 @@ std::string PickOverlay::draw(const glm::mat4& viewProjection, unsigned framebuf
   return {};
 }
 
-void PickOverlay::abandon() {
-  if (lines_) lines_->abandon();
-  lines_.reset();
-}
-
 void PickOverlay::release() {
   lines_.reset();
 }

@@ -24,8 +24,6 @@ class PickOverlay {
   const std::vector<RaySegment>& segments() const { return segments_; }
   // Draws them into `framebuffer` by the main camera. Returns "" or why not.
   std::string draw(const glm::mat4& viewProjection, unsigned framebuffer, int width, int height);
-  // The context was lost: names are gone (the segments stay, uploaded again when next drawn).
-  void abandon();
   // The GL objects are freed (the context stays).
   void release();
 

@@ -208,14 +208,4 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs, unsigned faces) 
   }
 }
 
-void CubeCaptureTarget::abandon() {
-  for (TextureHandle& t : colour_) t.abandon();
-  for (TextureHandle& t : faceDepths_) t.abandon();
-  pyramid_.abandon();
-  backs_.abandon();
-  depth_.abandon();
-  framebuffer_.abandon();
-  pyramidFramebuffer_.abandon();
-}
-
 }  // namespace reflect

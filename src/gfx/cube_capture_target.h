@@ -75,7 +75,6 @@ class CubeCaptureTarget {
   // The last level: one cell a face (log2 of the face size rounded up to a power of two).
   int topLevel() const { return topLevel_; }
   const CaptureFormat& format() const { return format_; }
-  void abandon();
 
  private:
   std::array<TextureHandle, 2> colour_;

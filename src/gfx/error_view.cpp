@@ -79,15 +79,4 @@ ErrorViewStats ErrorView::compose(GLuint framebuffer) {
   return summariseErrorImage(pixels);
 }
 
-void ErrorView::abandon() {
-  program_.abandon();
-  vao_.abandon();
-  for (Target& t : targets_) {
-    t.colour.abandon();
-    t.depth.abandon();
-    t.framebuffer.abandon();
-  }
-  width_ = height_ = 0;
-}
-
 }  // namespace reflect

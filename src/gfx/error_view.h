@@ -22,7 +22,6 @@ class ErrorView {
   GLuint exactFramebuffer() const { return targets_[1].framebuffer.id(); }
   // The heat map into `framebuffer`, and the numbers.
   ErrorViewStats compose(GLuint framebuffer);
-  void abandon();
 
  private:
   struct Target {

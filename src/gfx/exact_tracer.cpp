@@ -175,12 +175,4 @@ void ExactTracer::bindObject(GLuint program, int object) const {
   glUniform1f(glGetUniformLocation(program, "u_exactAlpha"), alpha);
 }
 
-void ExactTracer::abandon() {
-  atlas_.abandon();
-  normals_.abandon();
-  scene_.abandon();
-  if (sky_) sky_->abandon();
-  sky_.reset();
-}
-
 }  // namespace reflect

@@ -49,7 +49,6 @@ class ExactTracer {
   // `lobeRays`: the rays a rough mirror's pixel traces (AccuracySettings::lobeRays).
   void bind(GLuint program, int lobeRays) const;
   void bindObject(GLuint program, int object) const;
-  void abandon();
 
  private:
   ExactTracer() = default;

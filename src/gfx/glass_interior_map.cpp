@@ -82,11 +82,6 @@ Result<GlassInteriorMap> GlassInteriorMap::create(const MeshBuffer& mesh,
   return map;
 }
 
-void GlassInteriorMap::abandon() {
-  depths_.abandon();
-  normals_.abandon();
-}
-
 const GlassInteriorMap* GlassInteriorMaps::mapFor(const std::string& name, const MeshBuffer& mesh) {
   auto it = maps_.find(name);
   if (it != maps_.end()) return it->second.get();
@@ -104,15 +99,6 @@ const GlassInteriorMap* GlassInteriorMaps::mapFor(const std::string& name, const
   auto& slot = maps_[name];
   if (made) slot = std::make_unique<GlassInteriorMap>(made.take());
   return slot.get();
-}
-
-void GlassInteriorMaps::abandon() {
-  if (program_) program_->abandon();
-  program_.reset();
-  for (auto& [name, map] : maps_) {
-    if (map) map->abandon();
-  }
-  maps_.clear();
 }
 
 GlassExitUniforms GlassExitUniforms::of(const ShaderProgram& p) {

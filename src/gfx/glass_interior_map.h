@@ -45,8 +45,6 @@ class GlassInteriorMap {
   float far() const { return far_; }
   // The mesh's farthest vertex from centre(): every exit lies within it.
   float radius() const { return radius_; }
-  // After a lost context: forget the names without deleting them.
-  void abandon();
 
  private:
   GlassInteriorMap() = default;
@@ -77,7 +75,6 @@ class GlassInteriorMaps {
     for (const auto& [name, map] : maps_) made += map ? 1 : 0;
     return made;
   }
-  void abandon();
 
  private:
   std::unique_ptr<ShaderProgram> program_;

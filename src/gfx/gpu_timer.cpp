@@ -26,27 +26,24 @@ GpuTimer::GpuTimer() {
                hasExtension("GL_EXT_disjoint_timer_query_webgl2") ||
                hasExtension("EXT_disjoint_timer_query_webgl2");
   if (!available_) return;
-  for (auto& slot : queries_) glGenQueries(2, slot.data());
+  for (auto& slot : queries_) {
+    for (QueryHandle& query : slot) query = QueryHandle(genQuery());
+  }
   // Some drivers list the extension but refuse the target through the core entry points.
-  glBeginQuery(kTimeElapsed, queries_[0][0]);
+  glBeginQuery(kTimeElapsed, queries_[0][0].id());
   glEndQuery(kTimeElapsed);
   if (glGetError() != GL_NO_ERROR) {
-    abandon();
+    queries_ = {};
     available_ = false;
     return;
   }
   GLuint discard = 0;
-  glGetQueryObjectuiv(queries_[0][0], GL_QUERY_RESULT, &discard);
-}
-
-GpuTimer::~GpuTimer() {
-  if (!available_) return;
-  for (auto& slot : queries_) glDeleteQueries(2, slot.data());
+  glGetQueryObjectuiv(queries_[0][0].id(), GL_QUERY_RESULT, &discard);
 }
 
 void GpuTimer::begin(Pass pass) {
   if (!available_) return;
-  glBeginQuery(kTimeElapsed, queries_[static_cast<size_t>(slot_)][pass]);
+  glBeginQuery(kTimeElapsed, queries_[static_cast<size_t>(slot_)][pass].id());
   pending_[static_cast<size_t>(slot_)][pass] = true;
 }
 
@@ -62,7 +59,7 @@ void GpuTimer::endFrame() {
   glGetIntegerv(kGpuDisjoint, &disjoint);
   for (int pass = 0; pass < 2; ++pass) {
     if (!pending_[static_cast<size_t>(slot_)][static_cast<size_t>(pass)]) continue;
-    const GLuint query = queries_[static_cast<size_t>(slot_)][static_cast<size_t>(pass)];
+    const GLuint query = queries_[static_cast<size_t>(slot_)][static_cast<size_t>(pass)].id();
     GLuint ready = 0;
     glGetQueryObjectuiv(query, GL_QUERY_RESULT_AVAILABLE, &ready);
     if (!ready) continue;
@@ -71,11 +68,6 @@ void GpuTimer::endFrame() {
     pending_[static_cast<size_t>(slot_)][static_cast<size_t>(pass)] = false;
     if (!disjoint) last_[static_cast<size_t>(pass)] = nanoseconds / 1e6;
   }
-}
-
-void GpuTimer::abandon() {
-  for (auto& slot : queries_) slot = {0, 0};
-  available_ = false;
 }
 
 }  // namespace reflect

@@ -16,9 +16,6 @@ class GpuTimer {
   enum Pass { kCapture = 0, kMain = 1 };
 
   GpuTimer();  // queries the extension; available() says whether it is there
-  ~GpuTimer();
-  GpuTimer(const GpuTimer&) = delete;
-  GpuTimer& operator=(const GpuTimer&) = delete;
 
   bool available() const { return available_; }
   void begin(Pass pass);
@@ -27,12 +24,11 @@ class GpuTimer {
   void endFrame();
   // The most recent complete measurement of each pass, in ms (nullopt until one has arrived).
   std::optional<double> lastMs(Pass pass) const { return last_[pass]; }
-  void abandon();
 
  private:
   static constexpr int kSlots = 3;  // frames in flight before a result is read
   bool available_ = false;
-  std::array<std::array<GLuint, 2>, kSlots> queries_{};
+  std::array<std::array<QueryHandle, 2>, kSlots> queries_;
   std::array<std::array<bool, 2>, kSlots> pending_{};
   int slot_ = 0;
   std::array<std::optional<double>, 2> last_{};

@@ -46,10 +46,4 @@ void ImageBlit::draw(const RgbaImage& image, int width, int height,
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-void ImageBlit::abandon() {
-  program_.abandon();
-  texture_.abandon();
-  vertexArray_.abandon();
-}
-
 }  // namespace reflect

@@ -18,7 +18,6 @@ class ImageBlit {
   // `background` (RGBA8) around it.
   void draw(const RgbaImage& image, int width, int height,
             const std::array<uint8_t, 4>& background);
-  void abandon();
 
  private:
   ShaderProgram program_;

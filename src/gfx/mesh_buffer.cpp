@@ -63,13 +63,6 @@ void MeshBuffer::draw(const std::vector<IndexRange>& ranges) const {
   }
 }
 
-void MeshBuffer::abandon() {
-  tally_.release();
-  vao_.abandon();
-  vertices_.abandon();
-  indices_.abandon();
-}
-
 void MeshBuffers::set(const std::string& name, int lod, const MeshData& mesh) {
   Levels& levels = meshes_[name];
   if (lod == 0) {
@@ -97,13 +90,6 @@ size_t MeshBuffers::levelCount() const {
   size_t count = 0;
   for (const auto& [name, levels] : meshes_) count += levels.buffers.size();
   return count;
-}
-
-void MeshBuffers::abandon() {
-  for (auto& [name, levels] : meshes_) {
-    for (MeshBuffer& buffer : levels.buffers) buffer.abandon();
-  }
-  meshes_.clear();
 }
 
 }  // namespace reflect

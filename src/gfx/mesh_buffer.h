@@ -69,7 +69,6 @@ class MeshBuffer {
   bool flat() const { return flat_; }
   const glm::vec3& flatPoint() const { return flatPoint_; }
   const glm::vec3& flatNormal() const { return flatNormal_; }
-  void abandon();
 
  private:
   MeshBufferTally tally_;
@@ -100,8 +99,6 @@ class MeshBuffers {
   uint64_t serial(const std::string& name) const;
   // Levels held, over every mesh.
   size_t levelCount() const;
-  // After a lost context: drop every GL name without deleting (the context took them).
-  void abandon();
 
  private:
   struct Levels {

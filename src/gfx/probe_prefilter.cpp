@@ -110,9 +110,4 @@ Result<double> ProbePrefilter::filter(const PrefilterJob& job, PrefilteredCube& 
   return taken;
 }
 
-void ProbePrefilter::abandon() {
-  program_.abandon();
-  framebuffer_.abandon();
-}
-
 }  // namespace reflect

@@ -38,7 +38,6 @@ class PrefilteredCube {
   // Allocates (or keeps) mips 0..top - 1 for a source of faceSize in the given format, cleared
   // to black. False on a GL error.
   bool ensure(int faceSize, bool halfFloat, int top);
-  void abandon() { texture_.abandon(); }
 
  private:
   TextureHandle texture_;
@@ -55,7 +54,6 @@ class ProbePrefilter {
   // Leaves framebuffer 0 bound and the viewport at the last level's: callers set their own.
   // Returns the samples taken (texels filtered x samples), the planner's measure of the work.
   Result<double> filter(const PrefilterJob& job, PrefilteredCube& target);
-  void abandon();
 
  private:
   ShaderProgram program_;

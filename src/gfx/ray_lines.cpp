@@ -54,10 +54,4 @@ void RayLines::draw(const glm::mat4& viewProjection, int width, int height) cons
   glEnable(GL_DEPTH_TEST);
 }
 
-void RayLines::abandon() {
-  program_.abandon();
-  buffer_.abandon();
-  vertexArray_.abandon();
-}
-
 }  // namespace reflect

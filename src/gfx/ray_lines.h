@@ -26,8 +26,6 @@ class RayLines {
   void set(const std::vector<RaySegment>& segments);
   // Draws them into the bound framebuffer's `width` x `height`.
   void draw(const glm::mat4& viewProjection, int width, int height) const;
-  // The context is gone: forget the names without calling GL.
-  void abandon();
 
  private:
   ShaderProgram program_;

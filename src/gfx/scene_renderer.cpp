@@ -238,25 +238,4 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Fra
   return counts;
 }
 
-void SceneRenderer::abandon() {
-  for (auto& [key, p] : programs_) p.program.abandon();
-  programs_.clear();
-  current_ = nullptr;
-  glassInteriors_.abandon();
-  pyramid_.first.abandon();
-  pyramid_.reduce.abandon();
-  emptyPyramid_.abandon();
-  emptyDepths_.abandon();
-  emptyVertexArray_.abandon();
-  if (skybox_) skybox_->abandon();
-  skybox_.reset();
-  for (auto& [index, target] : probes_) target.abandon();
-  probes_.clear();
-  for (auto& [index, cube] : prefiltered_) cube.abandon();
-  prefiltered_.clear();
-  if (prefilter_) prefilter_->abandon();
-  prefilter_.reset();
-  meshes_ = nullptr;  // the owner of the set abandons it
-}
-
 }  // namespace reflect

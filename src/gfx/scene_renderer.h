@@ -100,8 +100,6 @@ class SceneRenderer {
   double lastFilterMs() const { return lastFilterMs_; }
   // Glass interior maps made so far (one per non-sphere glass mesh in use), for tests.
   size_t glassInteriorMaps() const { return glassInteriors_.count(); }
-  // After a lost context: drop every GL name without deleting (the context took them).
-  void abandon();
   // The exact mode's scene (search: exact), bound with the environment program; not owned.
   void setExactTracer(const ExactTracer* tracer) { exact_ = tracer; }
   // The last program that failed to build, as "environment.frag (main, exact): ...", or "".

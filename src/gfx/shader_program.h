@@ -34,7 +34,6 @@ class ShaderProgram {
   GLint optionalUniform(const char* name) const {
     return glGetUniformLocation(program_.id(), name);
   }
-  void abandon() { program_.abandon(); }
 
  private:
   ProgramHandle program_;

@@ -83,12 +83,4 @@ void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view,
   glDepthFunc(GL_LESS);
 }
 
-void SkyboxPass::abandon() {
-  main_.program.abandon();
-  capture_.program.abandon();
-  texture_.abandon();
-  vao_.abandon();
-  vertices_.abandon();
-}
-
 }  // namespace reflect

@@ -20,7 +20,6 @@ class SkyboxPass {
   // stored infinitely far. `view` may contain a translation: only its rotation is used.
   void draw(const glm::mat4& projection, const glm::mat4& view, const CaptureState& pass) const;
   GLuint texture() const { return texture_.id(); }
-  void abandon();
 
  private:
   // Two variants (capture_output.glsl): the main pass writes the colour alone, a capture its

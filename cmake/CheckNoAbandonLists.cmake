@@ -1,0 +1,20 @@
+# GL lifetime has one rule: a handle knows its context generation (src/gfx/gl_handle.h). A class
+# that grows its own list of names to forget after a lost context breaks that rule; this check
+# fails on any `abandon()` in src/. Run as: cmake -DSOURCE_DIR=... -P CheckNoAbandonLists.cmake
+file(GLOB_RECURSE sources "${SOURCE_DIR}/*.h" "${SOURCE_DIR}/*.cpp")
+set(found "")
+foreach(source IN LISTS sources)
+  file(STRINGS "${source}" lines REGEX "abandon\\(\\)")
+  if(lines)
+    list(APPEND found "${source}: ${lines}")
+  endif()
+endforeach()
+if(found)
+  list(JOIN found "\n" text)
+  message(FATAL_ERROR "hand-written abandon() lists (a GlHandle forgets a lost context itself):\n${text}")
+endif()
+list(LENGTH sources count)
+if(count EQUAL 0)
+  message(FATAL_ERROR "no sources under ${SOURCE_DIR}")
+endif()
+message(STATUS "${count} sources, no abandon() list")
