@@ -16,7 +16,9 @@ inline long gLiveGlObjects = 0;
 // calling GL: no class keeps a list of its handles to abandon.
 inline unsigned gGlContextGeneration = 1;
 // The platform calls this when the context is lost, before the owners are destroyed.
-inline void markGlContextLost() { ++gGlContextGeneration; }
+inline void markGlContextLost() {
+  ++gGlContextGeneration;
+}
 
 template <void (*Delete)(GLuint)>
 class GlHandle {

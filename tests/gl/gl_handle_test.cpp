@@ -2,15 +2,15 @@
 // context is forgotten through the handles themselves, and a live one is still freed.
 #include <gtest/gtest.h>
 
-#include "gfx/gl_handle.h"
 #include "core/scene.h"
+#include "gfx/gl_handle.h"
 #include "gl_fixture.h"
 
 namespace reflect {
 namespace {
 
-// The tests' context (gl_fixture: one for the run) is never really lost, so a name a handle deleted is gone and a name it
-// forgot is still there: glIsTexture tells the two apart.
+// The tests' context (gl_fixture: one for the run) is never really lost, so a name a handle deleted
+// is gone and a name it forgot is still there: glIsTexture tells the two apart.
 bool textureExists(GLuint name) {
   return glIsTexture(name) == GL_TRUE;
 }
