@@ -27,7 +27,6 @@ uniform vec3 u_captureAxis;        // the captured face's look direction
 uniform float u_captureUnit;       // the capture's near plane
 uniform int u_captureFace;         // 0..5, for the peel's look-up of the first layer
 uniform float u_captureExtent;     // the drawn object's size (bounding box diagonal), near units
-uniform int u_captureGuessDepth;   // 1: the far end takes kThickness (depth_encoding.glsl)
 uniform highp usampler2DArray u_peelDepths;  // the first layer's codes (passes 2 and 3)
 uniform highp usampler2DArray u_peelBacks;   // the backs pass 3 found (pass 2 peels behind)
 
@@ -57,8 +56,7 @@ void writeOutputs(vec3 colour, vec3 worldPosition, vec3 normal, bool infinite) {
   highp float spread = min(0.5 * (abs(dFdx(z)) + abs(dFdy(z))), kMaxSpread * u_captureExtent);
   uint code = infinite ? kInfiniteDepthCode : encodeDepth(z);
   uint nearCode = infinite ? kInfiniteDepthCode : encodeDepth(z - spread);
-  float deep = u_captureGuessDepth == 1 ? 1.0 + kThickness : 1.0;
-  uint farCode = infinite ? kInfiniteDepthCode : encodeDepth((z + spread) * deep);
+  uint farCode = infinite ? kInfiniteDepthCode : encodeDepth(z + spread);
   bool facesAway = !infinite && dot(normal, offset) > 0.0;
   if (u_captureLayer == 2) {
     ivec3 texel = ivec3(ivec2(gl_FragCoord.xy), u_captureFace);

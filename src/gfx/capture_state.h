@@ -3,9 +3,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
-#include <glm/gtc/type_ptr.hpp>
-
-#include "gfx/shader_program.h"
+#include "gfx/uniform_table.h"
 
 namespace reflect {
 
@@ -24,32 +22,33 @@ struct CaptureState {
   glm::vec3 axis{0.0f, 0.0f, -1.0f};  // the face's look direction
   float unit = 1.0f;                  // the capture's near plane
   int face = 0;
-  // The pass cannot see how deep what it draws is: the far ends take kThickness.
-  bool guessDepth = false;
 };
 
+// capture_output.glsl's uniforms, entries of their program's table (uniform_table.h). A shader
+// that never captures may lose some to the optimiser: they are then -1, which GL ignores.
 struct CaptureUniforms {
-  GLint layer = -1, centre = -1, axis = -1, unit = -1, face = -1, extent = -1, guessDepth = -1;
+  UniformTable& table;
+  Uniform<int> layer{table, "u_captureLayer"};
+  Uniform<glm::vec3> centre{table, "u_captureCentre"};
+  Uniform<glm::vec3> axis{table, "u_captureAxis"};
+  Uniform<float> unit{table, "u_captureUnit"};
+  Uniform<int> face{table, "u_captureFace"};
+  Uniform<float> extent{table, "u_captureExtent"};  // set per draw: the drawn object's size
+  Uniform<int> peelDepths{table, "u_peelDepths"};
+  Uniform<int> peelBacks{table, "u_peelBacks"};
 
-  static CaptureUniforms of(const ShaderProgram& p) {
-    // Optional: a shader that never captures may lose some to the optimiser.
-    CaptureUniforms u{p.optionalUniform("u_captureLayer"), p.optionalUniform("u_captureCentre"),
-                      p.optionalUniform("u_captureAxis"),  p.optionalUniform("u_captureUnit"),
-                      p.optionalUniform("u_captureFace"),  p.optionalUniform("u_captureExtent")};
-    glUseProgram(p.id());
-    glUniform1i(p.optionalUniform("u_peelDepths"), kPeelDepthsUnit);
-    glUniform1i(p.optionalUniform("u_peelBacks"), kPeelBacksUnit);
-    return u;
+  // The peel's texture units, once, into the program in use (after the table is located).
+  void setUnits() const {
+    peelDepths.set(kPeelDepthsUnit);
+    peelBacks.set(kPeelBacksUnit);
   }
-
-  // Sets them in the program in use.
+  // The pass, into the program in use.
   void set(const CaptureState& s) const {
-    glUniform1i(layer, s.layer);
-    glUniform3fv(centre, 1, glm::value_ptr(s.centre));
-    glUniform3fv(axis, 1, glm::value_ptr(s.axis));
-    glUniform1f(unit, s.unit);
-    glUniform1i(face, s.face);
-    glUniform1i(guessDepth, s.guessDepth ? 1 : 0);
+    layer.set(s.layer);
+    centre.set(s.centre);
+    axis.set(s.axis);
+    unit.set(s.unit);
+    face.set(s.face);
   }
 };
 

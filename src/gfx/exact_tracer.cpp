@@ -145,34 +145,32 @@ void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& p
   for (const SceneObject& o : scene.objects) lobeAlphas_.push_back(ggxAlpha(o.roughness));
 }
 
-void ExactTracer::bind(GLuint program, int lobeRays) const {
+void ExactTracer::bind(const ExactUniforms& u, int lobeRays) const {
   bindUnit(kExactAtlasUnit, GL_TEXTURE_2D, atlas_.id());
   bindUnit(kExactNormalsUnit, GL_TEXTURE_2D, normals_.id());
   bindUnit(kExactSceneUnit, GL_TEXTURE_2D, scene_.id());
   bindUnit(kExactSkyUnit, GL_TEXTURE_CUBE_MAP, sky_ ? sky_->texture() : 0);
   glActiveTexture(GL_TEXTURE0);
-  const auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
-  glUniform1i(at("u_exactAtlas"), kExactAtlasUnit);
-  glUniform1i(at("u_exactNormals"), kExactNormalsUnit);
-  glUniform1i(at("u_exactScene"), kExactSceneUnit);
-  glUniform1i(at("u_exactSky"), kExactSkyUnit);
-  glUniform1i(at("u_exactHasSky"), sky_ ? 1 : 0);
-  glUniform3f(at("u_exactClear"), clear_.r, clear_.g, clear_.b);
-  glUniform1i(at("u_exactHeader"), packed_.header);
-  glUniform1i(at("u_exactEmpty"), packed_.empty ? 1 : 0);
-  glUniform3f(at("u_exactLight"), light_.x, light_.y, light_.z);
-  glUniform4f(at("u_exactPhong"), phong_.x, phong_.y, phong_.z, phong_.w);
-  glUniform3f(at("u_exactEye"), eye_.x, eye_.y, eye_.z);
-  glUniform1f(at("u_exactFar"), far_);
-  glUniform1i(at("u_exactMark"), mark_ ? 1 : 0);
-  glUniform1i(at("u_exactLobeRays"), lobeRays);  // rough mirrors' programs (ROUGH 1) alone
+  u.atlas.set(kExactAtlasUnit);
+  u.normals.set(kExactNormalsUnit);
+  u.scene.set(kExactSceneUnit);
+  u.sky.set(kExactSkyUnit);
+  u.hasSky.set(sky_ != nullptr);
+  u.clear.set(clear_);
+  u.header.set(packed_.header);
+  u.empty.set(packed_.empty);
+  u.light.set(light_);
+  u.phong.set(phong_);
+  u.eye.set(eye_);
+  u.far.set(far_);
+  u.mark.set(mark_);
+  u.lobeRays.set(lobeRays);  // rough mirrors' programs (ROUGH 1) alone
 }
 
-void ExactTracer::bindObject(GLuint program, int object) const {
-  glUniform1i(glGetUniformLocation(program, "u_exactSelf"), object);
+void ExactTracer::bindObject(const ExactUniforms& u, int object) const {
+  u.self.set(object);
   const size_t i = static_cast<size_t>(object);
-  const float alpha = i < lobeAlphas_.size() ? lobeAlphas_[i] : 0.0f;
-  glUniform1f(glGetUniformLocation(program, "u_exactAlpha"), alpha);
+  u.alpha.set(i < lobeAlphas_.size() ? lobeAlphas_[i] : 0.0f);
 }
 
 }  // namespace reflect

@@ -18,6 +18,7 @@
 #include "gfx/capture_state.h"
 #include "gfx/gl_handle.h"
 #include "gfx/skybox_pass.h"
+#include "gfx/uniform_table.h"
 
 namespace reflect {
 
@@ -29,6 +30,28 @@ inline constexpr GLint kExactSkyUnit = kExactAtlasUnit + 3;
 // WebGL2 and GL ES 3.0 promise 16 units to a fragment shader.
 static_assert(kExactSkyUnit < 16,
               "the exact mode's samplers must fit the 16 units ES 3.0 promises");
+
+// exact_trace.glsl's and exact_shade.glsl's uniforms, entries of their program's table
+// (uniform_table.h); -1 in the variants that do not trace.
+struct ExactUniforms {
+  UniformTable& table;
+  Uniform<int> atlas{table, "u_exactAtlas"};
+  Uniform<int> normals{table, "u_exactNormals"};
+  Uniform<int> scene{table, "u_exactScene"};
+  Uniform<int> sky{table, "u_exactSky"};
+  Uniform<bool> hasSky{table, "u_exactHasSky"};
+  Uniform<glm::vec3> clear{table, "u_exactClear"};
+  Uniform<int> header{table, "u_exactHeader"};
+  Uniform<bool> empty{table, "u_exactEmpty"};
+  Uniform<glm::vec3> light{table, "u_exactLight"};
+  Uniform<glm::vec4> phong{table, "u_exactPhong"};
+  Uniform<glm::vec3> eye{table, "u_exactEye"};
+  Uniform<float> far{table, "u_exactFar"};
+  Uniform<bool> mark{table, "u_exactMark"};
+  Uniform<int> lobeRays{table, "u_exactLobeRays"};
+  Uniform<int> self{table, "u_exactSelf"};
+  Uniform<float> alpha{table, "u_exactAlpha"};
+};
 
 class ExactTracer {
  public:
@@ -47,8 +70,8 @@ class ExactTracer {
   // For the environment program in use: the textures and the frame's uniforms; then, per draw,
   // which object it is (its rays never meet itself, and glass is crossed inside it).
   // `lobeRays`: the rays a rough mirror's pixel traces (AccuracySettings::lobeRays).
-  void bind(GLuint program, int lobeRays) const;
-  void bindObject(GLuint program, int object) const;
+  void bind(const ExactUniforms& u, int lobeRays) const;
+  void bindObject(const ExactUniforms& u, int object) const;
 
  private:
   ExactTracer() = default;

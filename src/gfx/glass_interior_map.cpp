@@ -101,24 +101,19 @@ const GlassInteriorMap* GlassInteriorMaps::mapFor(const std::string& name, const
   return slot.get();
 }
 
-GlassExitUniforms GlassExitUniforms::of(const ShaderProgram& p) {
-  GlassExitUniforms u{p.uniform("u_glassToMap"), p.uniform("u_glassFromMap"),
-                      p.uniform("u_glassNormalFromMap"), p.uniform("u_glassMap")};
-  glUseProgram(p.id());
-  glUniform1i(p.uniform("u_glassDepths"), kGlassDepthUnit);
-  glUniform1i(p.uniform("u_glassNormals"), kGlassNormalsUnit);
-  return u;
+void GlassExitUniforms::setUnits() const {
+  depths.set(kGlassDepthUnit);
+  normals.set(kGlassNormalsUnit);
 }
 
 void GlassExitUniforms::set(const GlassInteriorMap& interior, const glm::mat4& model) const {
   // The map's space is the mesh's own, moved so that the map's centre is the origin.
   const glm::mat4 placed = model * glm::translate(glm::mat4(1.0f), interior.centre());
   const glm::mat4 unplaced = glm::inverse(placed);
-  const glm::mat3 normals = glm::transpose(glm::inverse(glm::mat3(placed)));
-  glUniformMatrix4fv(toMap, 1, GL_FALSE, glm::value_ptr(unplaced));
-  glUniformMatrix4fv(fromMap, 1, GL_FALSE, glm::value_ptr(placed));
-  glUniformMatrix3fv(normalFromMap, 1, GL_FALSE, glm::value_ptr(normals));
-  glUniform3f(map, interior.near(), interior.far(), interior.radius());
+  toMap.set(unplaced);
+  fromMap.set(placed);
+  normalFromMap.set(glm::transpose(glm::inverse(glm::mat3(placed))));
+  map.set(glm::vec3(interior.near(), interior.far(), interior.radius()));
   glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(kGlassDepthUnit));
   glBindTexture(GL_TEXTURE_CUBE_MAP, interior.depths());
   glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(kGlassNormalsUnit));

@@ -83,9 +83,18 @@ class GlassInteriorMaps {
 };
 
 // The uniforms of glass_exit.glsl in an environment program built with GLASS_EXIT 1.
+// Entries of their program's table (uniform_table.h); -1 in the variants without it.
 struct GlassExitUniforms {
-  GLint toMap = -1, fromMap = -1, normalFromMap = -1, map = -1;
-  static GlassExitUniforms of(const ShaderProgram& p);
+  UniformTable& table;
+  Uniform<glm::mat4> toMap{table, "u_glassToMap"};
+  Uniform<glm::mat4> fromMap{table, "u_glassFromMap"};
+  Uniform<glm::mat3> normalFromMap{table, "u_glassNormalFromMap"};
+  Uniform<glm::vec3> map{table, "u_glassMap"};
+  Uniform<int> depths{table, "u_glassDepths"};
+  Uniform<int> normals{table, "u_glassNormals"};
+
+  // The maps' texture units, once, into the program in use (after the table is located).
+  void setUnits() const;
   // Binds `interior` for an object placed by `model`, and its textures to their units.
   void set(const GlassInteriorMap& interior, const glm::mat4& model) const;
 };

@@ -13,16 +13,6 @@
 #include "gfx/scene_renderer_detail.h"
 
 namespace reflect {
-namespace {
-
-void setObjectMatrices(GLint model, GLint normalMatrix, const glm::mat4& m) {
-  glUniformMatrix4fv(model, 1, GL_FALSE, glm::value_ptr(m));
-  const glm::mat3 normal = normalMatrixOf(glm::mat3(m));
-  glUniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normal));
-}
-
-}  // namespace
-
 using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
@@ -114,20 +104,21 @@ void SceneRenderer::use(const Program& p, const Scene& scene, const glm::mat4& v
                         int outputDirections) {
   current_ = &p;
   glUseProgram(p.program.id());
-  p.capture.set(pass);
-  glUniformMatrix4fv(p.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProj));
-  glUniform3fv(p.viewPosition, 1, glm::value_ptr(viewPosition));
+  const ProgramUniforms& u = *p.uniforms;
+  u.capture.set(pass);
+  u.viewProjection.set(viewProj);
+  u.viewPosition.set(viewPosition);
   switch (p.key.look) {
     case Look::Phong:
-      glUniform3fv(p.phong.lightPosition, 1, glm::value_ptr(scene.light.position));
-      glUniform1f(p.phong.ambient, scene.light.ambient);
-      glUniform1f(p.phong.diffuse, scene.light.diffuse);
-      glUniform1f(p.phong.specular, scene.light.specular);
-      glUniform1f(p.phong.shininess, scene.light.shininess);
+      u.lightPosition.set(scene.light.position);
+      u.ambient.set(scene.light.ambient);
+      u.diffuse.set(scene.light.diffuse);
+      u.specular.set(scene.light.specular);
+      u.shininess.set(scene.light.shininess);
       break;
     case Look::Environment:
-      glUniform1i(p.environment.outputDirection, outputDirections);
-      if (p.key.search == Search::Exact && exact_) exact_->bind(p.program.id(), accuracy_.lobeRays);
+      u.outputDirection.set(outputDirections);
+      if (p.key.search == Search::Exact && exact_) exact_->bind(u.exact, accuracy_.lobeRays);
       break;
     case Look::CubeTextured:
       break;
@@ -140,38 +131,38 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
   const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
   const Program& p = *current_;
+  const ProgramUniforms& u = *p.uniforms;
   const glm::mat4 model = scene.modelMatrix(object, seconds);
-  setObjectMatrices(p.model, p.normalMatrix, model);
+  u.model.set(model);
+  u.normalMatrix.set(normalMatrixOf(glm::mat3(model)));
   // The object's size, for the third capture pass (capture_output.glsl).
   const Bounds world = transformBounds(buffer->bounds(), model);
-  glUniform1f(p.capture.extent, glm::length(world.max - world.min) / scene.capture.near);
+  u.capture.extent.set(glm::length(world.max - world.min) / scene.capture.near);
+  u.colour.set(object.colour);
   switch (p.key.look) {
     case Look::Phong:
-      glUniform3fv(p.phong.colour, 1, glm::value_ptr(object.colour));
       break;
     case Look::Environment: {
-      const EnvironmentUniforms& env = p.environment;
-      glUniform3fv(env.colour, 1, glm::value_ptr(object.colour));
-      glUniform1f(env.reflectionWeight, object.reflection);
-      glUniform1f(env.baseWeight, object.base);
-      glUniform1f(env.eta, 1.0f / clampedIor(object.ior));
-      glUniform1f(env.fresnelF0, fresnelF0(object.ior));
-      glUniform1i(env.fresnel, object.fresnel ? 1 : 0);
+      u.reflectionWeight.set(object.reflection);
+      u.baseWeight.set(object.base);
+      u.eta.set(1.0f / clampedIor(object.ior));
+      u.fresnelF0.set(fresnelF0(object.ior));
+      u.fresnel.set(object.fresnel);
       if (p.key.refracts) {
         // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in
         // closed form, otherwise through its interior map, with the GLASS_EXIT programs.
         const MeshBuffer* full = mesh(object.mesh, 0);
         const float radius = sphereRadiusIn(full, model);
         const GlassInteriorMap* interior = p.key.glassExit ? glassExitOf(object, model) : nullptr;
-        if (interior) p.glassExit.set(*interior, model);
+        if (interior) u.glassExit.set(*interior, model);
         const bool twoSurfaces = accuracy_.glassSurfaces == 2 && (radius > 0.0f || interior);
-        glUniform1i(env.twoSurfaces, twoSurfaces ? 1 : 0);
+        u.twoSurfaces.set(twoSurfaces);
         const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
-        glUniform4f(env.glassSphere, centre.x, centre.y, centre.z, radius);
+        u.glassSphere.set(glm::vec4(centre, radius));
       }
       bindEnvironment(scene, plan, item.object);
       if (p.key.search == Search::Exact && exact_) {
-        exact_->bindObject(p.program.id(), item.object);
+        exact_->bindObject(u.exact, item.object);
       }
       break;
     }

@@ -22,16 +22,17 @@
 #include "core/skybox_faces.h"
 #include "gfx/capture_state.h"
 #include "gfx/cube_capture_target.h"
+#include "gfx/exact_tracer.h"
 #include "gfx/glass_interior_map.h"
 #include "gfx/mesh_buffer.h"
 #include "gfx/probe_prefilter.h"
 #include "gfx/program_key.h"
 #include "gfx/shader_program.h"
 #include "gfx/skybox_pass.h"
+#include "gfx/uniform_table.h"
 
 namespace reflect {
 
-class ExactTracer;
 
 struct ViewParams {
   glm::mat4 view{1.0f};
@@ -106,28 +107,61 @@ class SceneRenderer {
   const std::string& programError() const { return programError_; }
   // Programs built so far (each variant once), for tests.
   size_t programCount() const { return programs_.size(); }
+  // The active uniforms of the programs built so far that no table entry sets, as
+  // "<variant>: <name>", for tests: a uniform a shader reads and C++ never writes.
+  std::vector<std::string> unsetUniforms() const;
 
  private:
-  struct PhongUniforms {
-    GLint colour = -1, lightPosition = -1, ambient = -1, diffuse = -1, specular = -1,
-          shininess = -1;
+  // Every uniform of the scene's programs (mesh.vert with phong.frag, environment.frag or
+  // cube_textured.frag), a table for each variant (uniform_table.h); an entry the variant does
+  // not use is -1, which GL ignores.
+  struct ProgramUniforms : UniformTable {
+    CaptureUniforms capture{*this};
+    Uniform<glm::mat4> viewProjection{*this, "u_viewProjection"};
+    Uniform<glm::mat4> model{*this, "u_model"};
+    Uniform<glm::mat3> normalMatrix{*this, "u_normalMatrix"};
+    Uniform<glm::vec3> viewPosition{*this, "u_viewPosition"};
+    Uniform<glm::vec3> colour{*this, "u_colour"};
+    // phong.frag
+    Uniform<glm::vec3> lightPosition{*this, "u_lightPosition"};
+    Uniform<float> ambient{*this, "u_ambient"};
+    Uniform<float> diffuse{*this, "u_diffuse"};
+    Uniform<float> specular{*this, "u_specular"};
+    Uniform<float> shininess{*this, "u_shininess"};
+    // environment.frag: the material
+    Uniform<float> reflectionWeight{*this, "u_reflectionWeight"};
+    Uniform<float> baseWeight{*this, "u_baseWeight"};
+    Uniform<float> eta{*this, "u_eta"};
+    Uniform<float> fresnelF0{*this, "u_fresnelF0"};
+    Uniform<bool> fresnel{*this, "u_fresnel"};
+    Uniform<bool> twoSurfaces{*this, "u_twoSurfaces"};
+    Uniform<glm::vec4> glassSphere{*this, "u_glassSphere"};
+    Uniform<float> roughLod{*this, "u_roughLod"};
+    Uniform<float> roughAlpha{*this, "u_roughAlpha"};
+    // environment.frag: the probe and its search
+    Uniform<glm::vec3> probeCentre{*this, "u_probeCentre"};
+    Uniform<float> distanceUnit{*this, "u_distanceUnit"};
+    Uniform<int> outputDirection{*this, "u_outputDirection"};
+    Uniform<int> layers{*this, "u_layers"};
+    Uniform<int> faceSize{*this, "u_faceSize"};
+    Uniform<int> topLevel{*this, "u_topLevel"};
+    Uniform<int> pyramidTile{*this, "u_pyramidTile"};
+    UniformArray<glm::vec3, 6> faceRight{*this, "u_faceRight"};
+    UniformArray<glm::vec3, 6> faceUp{*this, "u_faceUp"};
+    UniformArray<glm::vec3, 6> faceAxis{*this, "u_faceAxis"};
+    // Texture units, set once when the program is built.
+    Uniform<int> environment{*this, "u_environment"};
+    Uniform<int> environment2{*this, "u_environment2"};
+    Uniform<int> pyramid{*this, "u_pyramid"};
+    Uniform<int> prefiltered{*this, "u_prefiltered"};
+    GlassExitUniforms glassExit{*this};
+    ExactUniforms exact{*this};
   };
-  struct EnvironmentUniforms {
-    GLint colour = -1, reflectionWeight = -1, baseWeight = -1, eta = -1, fresnelF0 = -1,
-          fresnel = -1, twoSurfaces = -1, glassSphere = -1, probeCentre = -1, distanceUnit = -1,
-          outputDirection = -1, layers = -1, faceSize = -1, topLevel = -1, pyramidTile = -1,
-          roughLod = -1, roughAlpha = -1;
-  };
-  // One variant (program_key.h) and where its uniforms are; a uniform the variant does not use is
-  // -1, which GL ignores.
+  // One variant (program_key.h) and its uniforms (held by pointer: a table does not move).
   struct Program {
     ProgramKey key;
     ShaderProgram program;
-    CaptureUniforms capture;
-    GLint viewProjection = -1, model = -1, normalMatrix = -1, viewPosition = -1;
-    PhongUniforms phong;
-    EnvironmentUniforms environment;
-    GlassExitUniforms glassExit;  // only with key.glassExit
+    std::unique_ptr<ProgramUniforms> uniforms;
   };
   struct PyramidProgramSet {
     ShaderProgram first, reduce;
@@ -144,7 +178,7 @@ class SceneRenderer {
                    const FacePlan& face, PassCounts& counts);
   PassCounts capturePass(const CaptureJob& job, const ProbePlan& probe, const CubeCaptureTarget& t,
                          const FacePlan& face, StepPass pass,
-                         const std::vector<DrawItem>& backDraws, bool onePass);
+                         const std::vector<DrawItem>& backDraws);
   static Result<Program> buildProgram(const ProgramKey& key, bool mediump);
   // The program of `key`, built the first time it is asked for; null when it does not build (the
   // error goes to stderr once).

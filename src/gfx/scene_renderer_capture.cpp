@@ -70,8 +70,7 @@ Result<CubeCaptureTarget*> SceneRenderer::captureTarget(const Scene& scene,
 
 PassCounts SceneRenderer::capturePass(const CaptureJob& job, const ProbePlan& probe,
                                       const CubeCaptureTarget& t, const FacePlan& face,
-                                      StepPass step, const std::vector<DrawItem>& backDraws,
-                                      bool onePass) {
+                                      StepPass step, const std::vector<DrawItem>& backDraws) {
   const Scene& scene = job.scene;
   const int layer = static_cast<int>(step);
   const glm::mat4 view = cubeFaceView(probe.centre, face.face);
@@ -89,9 +88,7 @@ PassCounts SceneRenderer::capturePass(const CaptureJob& job, const ProbePlan& pr
   bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY,
               layer == 1 ? emptyDepths_.id() : t.faceDepths(0));
   bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY, layer == 2 ? t.backs() : emptyDepths_.id());
-  // Pass 1 of a one-layer probe and pass 2 cannot see how deep their objects are.
-  const bool guessDepth = layer == 2 || (layer == 1 && onePass);
-  const CaptureState pass{layer, probe.centre, axis, scene.capture.near, face.face, guessDepth};
+  const CaptureState pass{layer, probe.centre, axis, scene.capture.near, face.face};
   // Other mirrors in view use their cube as it was before this frame's capture of them (one
   // bounce); they are seen from the probe centre.
   const PassCounts counts =
@@ -132,7 +129,7 @@ bool SceneRenderer::captureFace(CaptureJob& job, const ProbePlan& probe, const C
   }
   bool stopped = false;
   for (StepPass pass : passes) {
-    counts += capturePass(job, probe, t, face, pass, backDraws, passes.size() == 1);
+    counts += capturePass(job, probe, t, face, pass, backDraws);
     if (job.stopAfterStep()) {
       stopped = true;
       break;

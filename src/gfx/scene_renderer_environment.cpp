@@ -15,7 +15,8 @@ namespace {
 
 // The faces' view directions as the capture renders them (cubeFaceView's lookAt): right, up and
 // look direction per face, for the search's projection onto each face.
-void setFaceFrames(const ShaderProgram& p) {
+template <typename Uniforms>
+void setFaceFrames(const Uniforms& u) {
   glm::vec3 right[6], up[6], axis[6];
   for (size_t f = 0; f < 6; ++f) {
     const glm::mat4 view = cubeFaceView(glm::vec3(0.0f), static_cast<int>(f));
@@ -23,9 +24,9 @@ void setFaceFrames(const ShaderProgram& p) {
     up[f] = glm::vec3(view[0][1], view[1][1], view[2][1]);
     axis[f] = -glm::vec3(view[0][2], view[1][2], view[2][2]);
   }
-  glUniform3fv(p.uniform("u_faceRight"), 6, glm::value_ptr(right[0]));
-  glUniform3fv(p.uniform("u_faceUp"), 6, glm::value_ptr(up[0]));
-  glUniform3fv(p.uniform("u_faceAxis"), 6, glm::value_ptr(axis[0]));
+  u.faceRight.set(right);
+  u.faceUp.set(up);
+  u.faceAxis.set(axis);
 }
 
 }  // namespace
@@ -40,42 +41,19 @@ Result<SceneRenderer::Program> SceneRenderer::buildProgram(const ProgramKey& key
   Result<ShaderProgram> built =
       ShaderProgram::build("mesh.vert", key.fragmentFile(), mediump, precision + key.defines());
   if (!built) return Result<Program>::failure(built.error());
-  const ShaderProgram& p = built.value();
   Program out;
   out.key = key;
-  out.capture = CaptureUniforms::of(p);
-  out.viewProjection = p.uniform("u_viewProjection");
-  out.model = p.uniform("u_model");
-  out.normalMatrix = p.optionalUniform("u_normalMatrix");
-  out.viewPosition = p.optionalUniform("u_viewPosition");
-  glUseProgram(p.id());
-  switch (key.look) {
-    case Look::Phong:
-      out.phong = PhongUniforms{p.uniform("u_colour"),   p.uniform("u_lightPosition"),
-                                p.uniform("u_ambient"),  p.uniform("u_diffuse"),
-                                p.uniform("u_specular"), p.uniform("u_shininess")};
-      break;
-    case Look::Environment: {
-      const auto at = [&p](const char* name) { return p.optionalUniform(name); };
-      out.environment =
-          EnvironmentUniforms{at("u_colour"),       at("u_reflectionWeight"), at("u_baseWeight"),
-                              at("u_eta"),          at("u_fresnelF0"),        at("u_fresnel"),
-                              at("u_twoSurfaces"),  at("u_glassSphere"),      at("u_probeCentre"),
-                              at("u_distanceUnit"), at("u_outputDirection"),  at("u_layers"),
-                              at("u_faceSize"),     at("u_topLevel"),         at("u_pyramidTile"),
-                              at("u_roughLod"),     at("u_roughAlpha")};
-      glUniform1i(at("u_environment"), kEnvironmentUnit);
-      glUniform1i(at("u_environment2"), kEnvironment2Unit);
-      glUniform1i(at("u_pyramid"), kPyramidUnit);
-      if (key.rough) glUniform1i(at("u_prefiltered"), kPrefilteredUnit);
-      if (key.search == Search::Hierarchical) setFaceFrames(p);
-      if (key.glassExit) out.glassExit = GlassExitUniforms::of(p);
-      break;
-    }
-    case Look::CubeTextured:
-      glUniform1i(p.uniform("u_environment"), kEnvironmentUnit);
-      break;
-  }
+  out.uniforms = std::make_unique<ProgramUniforms>();
+  const ProgramUniforms& u = *out.uniforms;
+  out.uniforms->locate(built.value());
+  glUseProgram(built.value().id());
+  u.capture.setUnits();
+  u.environment.set(kEnvironmentUnit);
+  u.environment2.set(kEnvironment2Unit);
+  u.pyramid.set(kPyramidUnit);
+  u.prefiltered.set(kPrefilteredUnit);
+  if (key.search == Search::Hierarchical) setFaceFrames(u);
+  if (key.glassExit) u.glassExit.setUnits();
   glUseProgram(0);
   out.program = built.take();
   return out;
@@ -93,6 +71,19 @@ const SceneRenderer::Program* SceneRenderer::program(const ProgramKey& key) {
     return nullptr;
   }
   return &programs_.emplace(key, built.take()).first->second;
+}
+
+std::vector<std::string> SceneRenderer::unsetUniforms() const {
+  std::vector<std::string> out;
+  for (const auto& [key, p] : programs_) {
+    for (const std::string& name : p.uniforms->unlisted(p.program.id())) {
+      out.push_back(key.describe() + ": " + name);
+    }
+  }
+  if (skybox_) {
+    for (const std::string& name : skybox_->unsetUniforms()) out.push_back("skybox: " + name);
+  }
+  return out;
 }
 
 ProgramKey SceneRenderer::keyFor(const Scene& scene, const FramePlan& plan, const DrawItem& item,
@@ -185,24 +176,23 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   if (current_->key.look == Look::CubeTextured) return;
   bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, colour2 ? colour2 : colour);
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
-  const EnvironmentUniforms& env = current_->environment;
+  const ProgramUniforms& u = *current_->uniforms;
   if (current_->key.rough) {
     const ProbePlan* probe = plan.probeOf(index);
     auto filtered = probe ? prefiltered_.find(probe->reflector) : prefiltered_.end();
     bindTexture(kPrefilteredUnit, GL_TEXTURE_CUBE_MAP,
                 filtered != prefiltered_.end() ? filtered->second.texture() : 0);
-    glUniform1f(env.roughLod,
-                std::clamp(object.roughness, 0.0f, 1.0f) *
-                    static_cast<float>(usableRoughLevels(accuracy_.roughLevels, faceSize)));
-    glUniform1f(env.roughAlpha, ggxAlpha(object.roughness));
+    u.roughLod.set(std::clamp(object.roughness, 0.0f, 1.0f) *
+                   static_cast<float>(usableRoughLevels(accuracy_.roughLevels, faceSize)));
+    u.roughAlpha.set(ggxAlpha(object.roughness));
   }
   glActiveTexture(GL_TEXTURE0);
-  glUniform3fv(env.probeCentre, 1, glm::value_ptr(centre));
-  glUniform1f(env.distanceUnit, scene.capture.near);
-  glUniform1i(env.layers, layers);
-  glUniform1i(env.faceSize, faceSize);
-  glUniform1i(env.topLevel, topLevel);
-  glUniform1i(env.pyramidTile, 1 << topLevel);
+  u.probeCentre.set(centre);
+  u.distanceUnit.set(scene.capture.near);
+  u.layers.set(layers);
+  u.faceSize.set(faceSize);
+  u.topLevel.set(topLevel);
+  u.pyramidTile.set(1 << topLevel);
 }
 
 }  // namespace reflect

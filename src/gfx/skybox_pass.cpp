@@ -23,9 +23,12 @@ Result<SkyboxPass::Program> SkyboxPass::build(bool capture) {
                            capture ? "#define CAPTURE_OUTPUT 1\n" : "#define CAPTURE_OUTPUT 0\n");
   if (!built) return Result<Program>::failure(built.error());
   Program p;
-  p.viewRotationProjection = built.value().uniform("u_viewRotationProjection");
-  p.skybox = built.value().uniform("u_skybox");
-  p.capture = CaptureUniforms::of(built.value());
+  p.uniforms = std::make_unique<Uniforms>();
+  p.uniforms->locate(built.value());
+  glUseProgram(built.value().id());
+  p.uniforms->skybox.set(kEnvironmentUnit);
+  p.uniforms->capture.setUnits();
+  glUseProgram(0);
   p.program = built.take();
   return p;
 }
@@ -66,6 +69,14 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
   return pass;
 }
 
+std::vector<std::string> SkyboxPass::unsetUniforms() const {
+  std::vector<std::string> out = main_.uniforms->unlisted(main_.program.id());
+  for (const std::string& name : capture_.uniforms->unlisted(capture_.program.id())) {
+    out.push_back(name);
+  }
+  return out;
+}
+
 void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view,
                       const CaptureState& pass) const {
   const glm::mat4 rotationOnly(glm::mat3{view});
@@ -73,9 +84,8 @@ void SkyboxPass::draw(const glm::mat4& projection, const glm::mat4& view,
   glDepthFunc(GL_LEQUAL);
   const Program& p = pass.layer == 0 ? main_ : capture_;
   glUseProgram(p.program.id());
-  glUniformMatrix4fv(p.viewRotationProjection, 1, GL_FALSE, glm::value_ptr(viewRotationProjection));
-  glUniform1i(p.skybox, kEnvironmentUnit);
-  p.capture.set(pass);
+  p.uniforms->viewRotationProjection.set(viewRotationProjection);
+  p.uniforms->capture.set(pass);
   glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
   glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
   glBindVertexArray(vao_.id());

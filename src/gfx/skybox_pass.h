@@ -1,6 +1,10 @@
 // The static cube map of a scene's skybox and the pass that draws it behind everything.
 #pragma once
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "core/result.h"
@@ -20,15 +24,20 @@ class SkyboxPass {
   // stored infinitely far. `view` may contain a translation: only its rotation is used.
   void draw(const glm::mat4& projection, const glm::mat4& view, const CaptureState& pass) const;
   GLuint texture() const { return texture_.id(); }
+  // Active uniforms of its two programs that their tables do not set (for tests).
+  std::vector<std::string> unsetUniforms() const;
 
  private:
   // Two variants (capture_output.glsl): the main pass writes the colour alone, a capture its
   // distance and depth codes as well.
+  struct Uniforms : UniformTable {
+    Uniform<glm::mat4> viewRotationProjection{*this, "u_viewRotationProjection"};
+    Uniform<int> skybox{*this, "u_skybox"};
+    CaptureUniforms capture{*this};
+  };
   struct Program {
     ShaderProgram program;
-    GLint viewRotationProjection = -1;
-    GLint skybox = -1;
-    CaptureUniforms capture;
+    std::unique_ptr<Uniforms> uniforms;  // a table does not move
   };
   static Result<Program> build(bool capture);
   Program main_, capture_;

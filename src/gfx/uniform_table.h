@@ -1,0 +1,98 @@
+// A program's uniforms as a typed table: each is declared once, with its GLSL name and the C++
+// type it takes, and registers itself in the table that locates them all by name. Nothing is
+// filled by position, a value of the wrong type does not compile, and a test can ask a program
+// for the active uniforms no table entry sets (a uniform the shader reads and C++ never writes).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <string>
+#include <vector>
+
+#include "gfx/shader_program.h"
+
+namespace reflect {
+
+class UniformSlot;
+
+// The uniforms registered by their declarations. Not copyable or movable (the entries point into
+// their owner): hold a table's owner by unique_ptr where it must move.
+class UniformTable {
+ public:
+  UniformTable() = default;
+  UniformTable(const UniformTable&) = delete;
+  UniformTable& operator=(const UniformTable&) = delete;
+
+  // Finds every entry in `program` (-1, which GL ignores, where the variant does not use it).
+  void locate(const ShaderProgram& program);
+  // The active uniforms of `program` that no entry names ("u_faceAxis" for "u_faceAxis[0]"),
+  // except those whose names start with one of `setElsewhere`.
+  std::vector<std::string> unlisted(GLuint program,
+                                    const std::vector<std::string>& setElsewhere = {}) const;
+
+ private:
+  friend class UniformSlot;
+  std::vector<UniformSlot*> entries_;
+};
+
+class UniformSlot {
+ public:
+  UniformSlot(UniformTable& table, const char* name) : name_(name) {
+    table.entries_.push_back(this);
+  }
+  UniformSlot(const UniformSlot&) = delete;
+  UniformSlot& operator=(const UniformSlot&) = delete;
+  const char* name() const { return name_; }
+  GLint location() const { return location_; }
+
+ private:
+  friend class UniformTable;
+  const char* name_;
+  GLint location_ = -1;
+};
+
+// What each C++ type sets: the GLSL type of the same name (bool as an int 0 or 1).
+inline void setUniform(GLint at, int value) {
+  glUniform1i(at, value);
+}
+inline void setUniform(GLint at, bool value) {
+  glUniform1i(at, value ? 1 : 0);
+}
+inline void setUniform(GLint at, float value) {
+  glUniform1f(at, value);
+}
+inline void setUniform(GLint at, const glm::vec3& value) {
+  glUniform3fv(at, 1, glm::value_ptr(value));
+}
+inline void setUniform(GLint at, const glm::vec4& value) {
+  glUniform4fv(at, 1, glm::value_ptr(value));
+}
+inline void setUniform(GLint at, const glm::mat3& value) {
+  glUniformMatrix3fv(at, 1, GL_FALSE, glm::value_ptr(value));
+}
+inline void setUniform(GLint at, const glm::mat4& value) {
+  glUniformMatrix4fv(at, 1, GL_FALSE, glm::value_ptr(value));
+}
+
+template <typename T>
+class Uniform : public UniformSlot {
+ public:
+  using UniformSlot::UniformSlot;
+  // Into the program in use.
+  void set(const T& value) const { setUniform(location(), value); }
+};
+
+// An array uniform (`uniform vec3 u_faceAxis[6]`), set whole.
+template <typename T, size_t N>
+class UniformArray : public UniformSlot {
+ public:
+  using UniformSlot::UniformSlot;
+  void set(const T (&values)[N]) const;
+};
+
+template <>
+inline void UniformArray<glm::vec3, 6>::set(const glm::vec3 (&values)[6]) const {
+  glUniform3fv(location(), 6, glm::value_ptr(values[0]));
+}
+
+}  // namespace reflect
