@@ -144,7 +144,7 @@ void CubeCaptureTarget::endBackPass() {
   glDepthFunc(GL_LESS);
 }
 
-void CubeCaptureTarget::finish(const PyramidPrograms& programs, unsigned faces) const {
+void CubeCaptureTarget::finish(const DepthPyramidPrograms& programs, unsigned faces) const {
   glDisable(GL_DEPTH_TEST);
   if (format_.depthChain && faces != 0) {
     glBindFramebuffer(GL_FRAMEBUFFER, pyramidFramebuffer_.id());
@@ -169,10 +169,10 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs, unsigned faces) 
     };
     // Level 0, from the faces' own layers and the backs.
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, 0);
-    glUseProgram(programs.first);
-    glUniform1i(programs.layers, format_.layers);
-    glUniform1i(programs.faceSize, format_.faceSize);
-    glUniform1i(programs.tile, baseTile);
+    glUseProgram(programs.first.id());
+    programs.firstUniforms.layers.set(format_.layers);
+    programs.firstUniforms.faceSize.set(format_.faceSize);
+    programs.firstUniforms.tile.set(baseTile);
     glActiveTexture(GL_TEXTURE0);  // u_faces
     glBindTexture(GL_TEXTURE_2D_ARRAY, faceDepths_[0].id());
     glActiveTexture(GL_TEXTURE1);  // u_backs
@@ -187,7 +187,7 @@ void CubeCaptureTarget::finish(const PyramidPrograms& programs, unsigned faces) 
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     // Levels 1..top, each from the one below, which is the only level the draw may read: the
     // one written is outside the sampled range, so this is no feedback loop (WebGL checks).
-    glUseProgram(programs.reduce);
+    glUseProgram(programs.reduce.id());
     glBindTexture(GL_TEXTURE_2D, pyramid);
     for (int mip = 1; mip <= topLevel_; ++mip) {
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, mip - 1);

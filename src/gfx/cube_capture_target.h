@@ -22,6 +22,7 @@
 #include <string>
 
 #include "core/result.h"
+#include "gfx/depth_pyramid_programs.h"
 #include "gfx/gl_handle.h"
 
 namespace reflect {
@@ -34,14 +35,6 @@ struct CaptureFormat {
   bool depthChain = false;  // the hierarchical search's depths and pyramids
   int layers = 1;           // 1 or 2 (a second layer needs the depths)
   bool operator==(const CaptureFormat&) const = default;
-};
-
-// The programs that build a pyramid (fullscreen.vert + depth_pyramid.frag / depth_reduce.frag)
-// and where their uniforms are.
-struct PyramidPrograms {
-  GLuint first = 0;
-  GLint layers = -1, faceSize = -1, tile = -1;
-  GLuint reduce = 0;
 };
 
 class CubeCaptureTarget {
@@ -65,7 +58,7 @@ class CubeCaptureTarget {
   // face f: the faces drawn this frame; the others' tiles still bound their unchanged depths)
   // from the layers' faces (and, for the first layer, the backs), then the colour mip chain when
   // the format asks for one. Leaves the depth test off.
-  void finish(const PyramidPrograms& programs, unsigned faces) const;
+  void finish(const DepthPyramidPrograms& programs, unsigned faces) const;
 
   GLuint texture(int layer = 0) const { return colour_[static_cast<size_t>(layer)].id(); }
   GLuint faceDepths(int layer = 0) const { return faceDepths_[static_cast<size_t>(layer)].id(); }

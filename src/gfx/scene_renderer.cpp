@@ -17,11 +17,8 @@ using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
 Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
-  Result<ShaderProgram> pyramidFirst =
-      ShaderProgram::build("fullscreen.vert", "depth_pyramid.frag");
-  if (!pyramidFirst) return Result<SceneRenderer>::failure(pyramidFirst.error());
-  Result<ShaderProgram> reduce = ShaderProgram::build("fullscreen.vert", "depth_reduce.frag");
-  if (!reduce) return Result<SceneRenderer>::failure(reduce.error());
+  Result<std::unique_ptr<DepthPyramidPrograms>> pyramid = DepthPyramidPrograms::create();
+  if (!pyramid) return Result<SceneRenderer>::failure(pyramid.error());
 
   SceneRenderer r;
   r.accuracy_ = accuracy;
@@ -31,18 +28,7 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
     if (!r.program(key)) return Result<SceneRenderer>::failure(r.programError_);
   }
 
-  const ShaderProgram& pf = pyramidFirst.value();
-  glUseProgram(pf.id());
-  glUniform1i(pf.uniform("u_faces"), 0);
-  glUniform1i(pf.uniform("u_backs"), 1);
-  glUniform1i(pf.uniform("u_faces2"), 2);
-  glUseProgram(reduce.value().id());
-  glUniform1i(reduce.value().uniform("u_source"), 0);
-  r.pyramid_.uses = PyramidPrograms{pf.id(), pf.uniform("u_layers"), pf.uniform("u_faceSize"),
-                                    pf.uniform("u_tile"), reduce.value().id()};
-  r.pyramid_.first = pyramidFirst.take();
-  r.pyramid_.reduce = reduce.take();
-  glUseProgram(0);
+  r.pyramid_ = pyramid.take();
 
   r.emptyDepths_ = TextureHandle(genTexture());
   glBindTexture(GL_TEXTURE_2D_ARRAY, r.emptyDepths_.id());

@@ -33,7 +33,6 @@
 
 namespace reflect {
 
-
 struct ViewParams {
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};
@@ -163,10 +162,6 @@ class SceneRenderer {
     ShaderProgram program;
     std::unique_ptr<ProgramUniforms> uniforms;
   };
-  struct PyramidProgramSet {
-    ShaderProgram first, reduce;
-    PyramidPrograms uses;
-  };
 
   SceneRenderer() = default;
   // The capture's parts (scene_renderer_capture.cpp).
@@ -219,7 +214,7 @@ class SceneRenderer {
   std::string programError_;
   const Program* current_ = nullptr;
   GlassInteriorMaps glassInteriors_;
-  PyramidProgramSet pyramid_;
+  std::unique_ptr<DepthPyramidPrograms> pyramid_;
   std::unique_ptr<SkyboxPass> skybox_;
   // Bound to the depth units whenever nothing else is, so no program ever samples a texture the
   // pass renders into (a feedback loop WebGL refuses to draw).

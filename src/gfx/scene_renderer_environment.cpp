@@ -83,6 +83,12 @@ std::vector<std::string> SceneRenderer::unsetUniforms() const {
   if (skybox_) {
     for (const std::string& name : skybox_->unsetUniforms()) out.push_back("skybox: " + name);
   }
+  for (const std::string& name : pyramid_->firstUniforms.unlisted(pyramid_->first.id())) {
+    out.push_back("depth_pyramid.frag: " + name);
+  }
+  for (const std::string& name : pyramid_->reduceUniforms.unlisted(pyramid_->reduce.id())) {
+    out.push_back("depth_reduce.frag: " + name);
+  }
   return out;
 }
 
