@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/glass_crossing.h"
 #include "core/normal_matrix.h"
 #include "core/trace_limits.h"
 
@@ -89,21 +90,16 @@ GlassRoute followGlass(const SceneBvh& scene, const SurfacePoint& entry, const g
   path.leaving = path.inside;
   if (!twoSurfaces) return path;
   const float epsilon = selfEpsilon(scene, entry.object);
-  for (;;) {
-    const SurfacePoint far =
-        firstSurface(scene, {path.exitPoint, path.leaving}, epsilon, -1, entry.object);
-    if (far.object < 0) return path;  // no far side (a ray along a silhouette): on from here
-    const glm::vec3 facing = glm::dot(path.leaving, far.normal) > 0.0f ? -far.normal : far.normal;
-    const glm::vec3 out = glm::refract(path.leaving, facing, ior);
-    path.exitPoint = far.position;
-    if (glm::dot(out, out) > 0.0f) {
-      path.leaving = glm::normalize(out);
-      path.exited = true;
-      return path;
-    }
-    path.leaving = glm::reflect(path.leaving, facing);
-    if (++path.internalReflections == kMaxInternalReflections) return path;
-  }
+  const GlassCrossing crossing = crossGlassInterior(
+      entry.position, path.inside, ior, [&](const glm::vec3& from, const glm::vec3& dir) {
+        const SurfacePoint far = firstSurface(scene, {from, dir}, epsilon, -1, entry.object);
+        return FarSurface{far.object >= 0, far.position, far.normal};
+      });
+  path.exitPoint = crossing.point;
+  path.leaving = crossing.direction;
+  path.exited = crossing.exited;
+  path.internalReflections = crossing.internalReflections;
+  return path;
 }
 
 double angleDegrees(const glm::vec3& a, const glm::vec3& b) {

@@ -24,23 +24,10 @@ glm::vec3 saturate(const glm::vec3& c) {
 Crossing crossGlass(RTCScene only, const std::vector<WorldMesh>& meshes, int object, float n,
                     const glm::vec3& entry, const glm::vec3& inside) {
   const float epsilon = meshes[static_cast<size_t>(object)].selfEpsilon;
-  Crossing c;
-  c.point = entry;
-  c.direction = inside;
-  for (;;) {
-    const Hit far = trace(only, meshes, c.point, c.direction, epsilon, kInfinity);
-    if (far.object < 0) return c;  // no far surface (a ray along a silhouette): on from here
-    const glm::vec3 facing = glm::dot(c.direction, far.normal) > 0.0f ? -far.normal : far.normal;
-    const glm::vec3 out = glm::refract(c.direction, facing, n);
-    c.point = far.position;
-    if (glm::dot(out, out) > 0.0f) {
-      c.direction = glm::normalize(out);
-      c.exited = true;
-      return c;
-    }
-    c.direction = glm::reflect(c.direction, facing);
-    if (++c.internalReflections == kMaxInternalReflections) return c;
-  }
+  return crossGlassInterior(entry, inside, n, [&](const glm::vec3& from, const glm::vec3& dir) {
+    const Hit far = trace(only, meshes, from, dir, epsilon, kInfinity);
+    return FarSurface{far.object >= 0, far.position, far.normal};
+  });
 }
 
 glm::vec3 Tracer::background(const glm::vec3& dir) const {

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/glass_crossing.h"
 #include "core/scene.h"
 #include "core/skybox_faces.h"
 #include "reference/embree_scene.h"
@@ -16,17 +17,10 @@
 namespace reflect {
 
 // How a ray refracted into a glass object crosses it: where it leaves and along what.
-struct Crossing {
-  glm::vec3 point{0.0f};      // the last surface point
-  glm::vec3 direction{0.0f};  // the ray that goes on from it
-  int internalReflections = 0;
-  bool exited = false;  // refracted out (false: still inside after the limit, or no far surface)
-};
+using Crossing = GlassCrossing;
 
 // From `entry` (on glass object `object`, of index n) along the refracted direction `inside`:
-// the far surface, refract(D, N_in, n) out of it, or on total internal reflection reflect(D, N_in)
-// and on, kMaxInternalReflections times at most. N_in is the surface's interpolated normal
-// turned to face the ray (the inward normal at an exit).
+// core/glass_crossing.h's rule, the far surfaces found by Embree in the object alone (`only`).
 Crossing crossGlass(RTCScene only, const std::vector<WorldMesh>& meshes, int object, float n,
                     const glm::vec3& entry, const glm::vec3& inside);
 

@@ -16,6 +16,7 @@
 #include "gfx/offscreen_target.h"
 #include "gfx/shader_library.h"
 #include "gfx/shader_program.h"
+#include "gpu_sample_rows.h"
 
 namespace reflect {
 namespace {
@@ -171,38 +172,11 @@ void setUniforms(const ShaderProgram& p, const Sample& s) {
               s.phongTerms.w);
 }
 
-// Every sample's columns from the GPU: sample i in row i of a kColumns-wide target.
+// Every sample's columns from the GPU.
 std::vector<glm::vec3> gpuColumns(const std::vector<Sample>& all) {
-  const std::string fragment = std::string(embeddedShader("shading.glsl")) + kProgram;
-  Result<ShaderProgram> program =
-      ShaderProgram::buildFromSource("fullscreen.vert", embeddedShader("fullscreen.vert"),
-                                     "shading.glsl + test", fragment.c_str(), false, "");
-  EXPECT_TRUE(program) << program.error();
-  const int rows = static_cast<int>(all.size());
-  Result<OffscreenTarget> target = OffscreenTarget::create(kColumns, rows, true);
-  EXPECT_TRUE(target) << target.error();
-  if (!program || !target) return {};
-  VertexArrayHandle vao(genVertexArray());
-  glBindFramebuffer(GL_FRAMEBUFFER, target.value().framebuffer());
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(program.value().id());
-  glBindVertexArray(vao.id());
-  for (int i = 0; i < rows; ++i) {
-    setUniforms(program.value(), all[static_cast<size_t>(i)]);
-    glViewport(0, i, kColumns, 1);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-  glBindVertexArray(0);
-  glUseProgram(0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  // readFloats gives the top row first: sample i is row rows - 1 - i.
-  std::vector<glm::vec3> flipped = target.value().readFloats();
-  std::vector<glm::vec3> out;
-  for (int i = 0; i < rows; ++i) {
-    const auto row = flipped.begin() + static_cast<std::ptrdiff_t>((rows - 1 - i) * kColumns);
-    out.insert(out.end(), row, row + kColumns);
-  }
-  return out;
+  return testing::drawSampleRows(
+      "shading.glsl", kProgram, kColumns, static_cast<int>(all.size()),
+      [&all](const ShaderProgram& p, int i) { setUniforms(p, all[static_cast<size_t>(i)]); });
 }
 
 const char* const kColumnNames[] = {"phongShade",          "fresnelF0, schlickWeight, total",

@@ -6,24 +6,21 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/frame_steps.h"
+#include "planned_boxes.h"
 
 namespace reflect {
 namespace {
 
-const Bounds kUnitBox{{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}};
-
+// Boxes with three levels of detail, so that the steps' triangle counts tell the levels apart.
 PlannedObject boxAt(glm::vec3 position) {
-  PlannedObject o;
-  o.localBounds = kUnitBox;
-  o.model = glm::translate(glm::mat4(1.0f), position);
+  PlannedObject o = testing::boxAt(position);
   o.levels = {{4000, nullptr}, {1000, nullptr}, {250, nullptr}};
   return o;
 }
 
 PlannedObject mirrorAt(glm::vec3 position) {
-  PlannedObject o = boxAt(position);
-  o.probed = true;
-  o.look.material = Material::Mirror;
+  PlannedObject o = testing::mirrorAt(position);
+  o.levels = boxAt(position).levels;
   return o;
 }
 

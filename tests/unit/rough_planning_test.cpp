@@ -7,26 +7,13 @@
 #include "core/frame_planner.h"
 #include "core/ggx.h"
 #include "core/planner_parts.h"
+#include "planned_boxes.h"
 
 namespace reflect {
 namespace {
 
-const Bounds kUnitBox{{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}};
-
-PlannedObject boxAt(glm::vec3 position) {
-  PlannedObject o;
-  o.localBounds = kUnitBox;
-  o.model = glm::translate(glm::mat4(1.0f), position);
-  return o;
-}
-
-PlannedObject mirrorAt(glm::vec3 position, float roughness) {
-  PlannedObject o = boxAt(position);
-  o.probed = true;
-  o.look.material = Material::Mirror;
-  o.look.roughness = roughness;
-  return o;
-}
+using testing::boxAt;
+using testing::mirrorAt;
 
 CaptureContext capturing(int roughLevels = 5) {
   CaptureContext c;
