@@ -46,9 +46,10 @@ async function readStream(stream, total, onProgress, limit, name) {
   return bytes;
 }
 
-// Fetches a file with progress. `limit` refuses a larger file (by Content-Length before reading,
-// or as soon as more arrives).
-export async function fetchBytes(url, { onProgress = null, limit = 0 } = {}) {
+// Starts fetching `url`: the response and its announced size (0 when unknown). Rejects with a
+// message naming the URL when it cannot be fetched, answers with an HTTP error, or announces more
+// than `limit` bytes (when a limit is set).
+async function openResponse(url, limit) {
   let response;
   try {
     response = await fetch(url);
@@ -61,6 +62,13 @@ export async function fetchBytes(url, { onProgress = null, limit = 0 } = {}) {
     response.body?.cancel();
     throw new Error(tooLargeMessage(url, total));
   }
+  return { response, total };
+}
+
+// Fetches a file with progress. `limit` refuses a larger file (by Content-Length before reading,
+// or as soon as more arrives).
+export async function fetchBytes(url, { onProgress = null, limit = 0 } = {}) {
+  const { response, total } = await openResponse(url, limit);
   if (!response.body) return new Uint8Array(await response.arrayBuffer());
   return readStream(response.body, total, onProgress, limit, url);
 }
@@ -119,18 +127,7 @@ async function streamIntoNow(bridge, target, stream, total, { onProgress = null,
 // Fetches the model at `url` into mesh `target.name`, parsing it as it arrives. Resolves to "" or
 // the parser's error; rejects with a message when it cannot be fetched or is too large.
 export async function fetchMesh(bridge, target, url, { onProgress = null, limit = 0 } = {}) {
-  let response;
-  try {
-    response = await fetch(url);
-  } catch (e) {
-    throw new Error(`${url}: could not be fetched (${e.message})`);
-  }
-  if (!response.ok) throw new Error(`${url}: HTTP ${response.status} ${response.statusText}`.trim());
-  const total = Number(response.headers.get('Content-Length')) || 0;
-  if (limit && total > limit) {
-    response.body?.cancel();
-    throw new Error(tooLargeMessage(url, total));
-  }
+  const { response, total } = await openResponse(url, limit);
   const body = response.body || new Blob([await response.arrayBuffer()]).stream();
   return streamInto(bridge, target, body, total, { onProgress, limit });
 }

@@ -2,7 +2,6 @@
 // PNG, with the same thresholds as the default scene's test (see golden_compare.h).
 #include <gtest/gtest.h>
 
-#include <filesystem>
 
 #include "app/headless_frames.h"
 #include "gl_fixture.h"
@@ -26,17 +25,7 @@ TEST_P(ShippedScene, MatchesGoldenAtTwoSeconds) {
                                testing::reflectorMask(shipped, 2.0, 320, 240));
 }
 
-std::vector<std::string> shippedScenes() {
-  std::vector<std::string> names;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(builtInAssetDirectory() + "/scenes")) {
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-INSTANTIATE_TEST_SUITE_P(AllScenes, ShippedScene, ::testing::ValuesIn(shippedScenes()),
+INSTANTIATE_TEST_SUITE_P(AllScenes, ShippedScene, ::testing::ValuesIn(shippedSceneNames()),
                          [](const auto& param) {
                            std::string name = param.param;
                            std::replace(name.begin(), name.end(), '-', '_');

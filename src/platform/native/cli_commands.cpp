@@ -1,4 +1,5 @@
 #include "platform/native/cli_commands.h"
+#include <functional>
 
 #include "app/demo.h"
 #include "platform/native/cli_settings.h"
@@ -77,6 +78,21 @@ void defineScene(CLI::App& c, CliOptions& o, CliWording& w) {
       w, "WxH", frameSizeExpected())
       ->check(frameSize());
   defineView(c, o, w);
+}
+
+// What render, explain and bench share after their own options: the scene and the settings, and
+// a callback that records the command, applies a preset and notes an explicit --policy (then
+// `more`, the command's own).
+void defineFrameCommand(CLI::App& c, CliOptions& o, CliWording& w, const char* name,
+                        std::function<void()> more = {}) {
+  defineScene(c, o, w);
+  addSettingOptions(c, o, w);
+  c.callback([&c, &o, name, more] {
+    o.command = name;
+    applyPreset(c, o);
+    o.policySet = c.count("--policy") > 0;
+    if (more) more();
+  });
 }
 
 // A mode of the bench: a flag of the modes group.
@@ -207,13 +223,7 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
       addSetting(c, w, field, o.view);
     }
   }
-  defineScene(c, o, w);
-  addSettingOptions(c, o, w);
-  c.callback([&c, &o] {
-    o.command = "render";
-    applyPreset(c, o);
-    o.policySet = c.count("--policy") > 0;
-  });
+  defineFrameCommand(c, o, w, "render");
 }
 
 // Everything render takes for the frame (scene, time, camera, size, settings) and the pixel.
@@ -228,27 +238,15 @@ void defineExplain(CLI::App& c, CliOptions& o, CliWording& w) {
   valueOption(c.add_option("--time", o.time, "scene time in seconds (default 0)"), w, "SECONDS",
               "a number of seconds")
       ->check(decimalNumber("seconds"));
-  defineScene(c, o, w);
-  addSettingOptions(c, o, w);
-  c.callback([&c, &o] {
-    o.command = "explain";
-    applyPreset(c, o);
-    o.policySet = c.count("--policy") > 0;
-  });
+  defineFrameCommand(c, o, w, "explain");
 }
 
 void defineBench(CLI::App& c, CliOptions& o, CliWording& w) {
   defineModes(c, o, w);
   defineCounts(c, o, w);
   defineSweepOptions(c, o, w);
-  defineScene(c, o, w);
-  addSettingOptions(c, o, w);
-  c.callback([&c, &o] {
-    o.command = "bench";
-    applyPreset(c, o);
-    o.policySet = c.count("--policy") > 0;
-    o.budgetSet = c.get_option("--budget")->count() > 0;
-  });
+  defineFrameCommand(c, o, w, "bench",
+                     [&c, &o] { o.budgetSet = c.get_option("--budget")->count() > 0; });
 }
 
 void defineHelp(CLI::App& c, CliOptions& o) {
