@@ -1,31 +1,28 @@
 #include "core/accuracy_settings.h"
 
+#include <iterator>
+
+#include "core/enum_names.h"
+
 namespace reflect {
 
+namespace {
+
+constexpr EnumName<Search> kSearchNames[] = {{Search::Plain, "plain"},
+                                             {Search::Linear, "linear"},
+                                             {Search::Hierarchical, "hierarchical"},
+                                             {Search::Exact, "exact"},
+                                             {Search::Planned, "planned"}};
+static_assert(std::size(kSearchNames) == std::size(kSearches), "every search has a name");
+
+}  // namespace
+
 const char* searchName(Search search) {
-  switch (search) {
-    case Search::Plain:
-      return "plain";
-    case Search::Linear:
-      return "linear";
-    case Search::Hierarchical:
-      return "hierarchical";
-    case Search::Exact:
-      return "exact";
-    case Search::Planned:
-      return "planned";
-  }
-  return "?";
+  return nameIn(kSearchNames, search);
 }
 
 bool parseSearch(const std::string& name, Search* search) {
-  for (Search s : kSearches) {
-    if (name == searchName(s)) {
-      *search = s;
-      return true;
-    }
-  }
-  return false;
+  return parseIn(kSearchNames, name, search);
 }
 
 std::string AccuracySettings::describe() const {

@@ -1,46 +1,36 @@
 // The material and environment names of scene files, the page and the CLI (settings_schema.h).
 #include <string>
 
+#include "core/enum_names.h"
 #include "core/settings_schema.h"
 
 namespace reflect {
 
+namespace {
+
+constexpr EnumName<Material> kMaterialNames[] = {{Material::Phong, "phong"},
+                                                 {Material::Mirror, "mirror"},
+                                                 {Material::Glass, "glass"},
+                                                 {Material::CubeTextured, "cube-textured"}};
+constexpr EnumName<Environment> kEnvironmentNames[] = {{Environment::LiveProbe, "live"},
+                                                       {Environment::Skybox, "skybox"}};
+
+}  // namespace
+
 const char* materialName(Material material) {
-  switch (material) {
-    case Material::Phong:
-      return "phong";
-    case Material::Mirror:
-      return "mirror";
-    case Material::Glass:
-      return "glass";
-    case Material::CubeTextured:
-      return "cube-textured";
-  }
-  return "?";
+  return nameIn(kMaterialNames, material);
 }
 
 bool parseMaterial(const std::string& name, Material* material) {
-  for (Material m : {Material::Phong, Material::Mirror, Material::Glass, Material::CubeTextured}) {
-    if (name == materialName(m)) {
-      *material = m;
-      return true;
-    }
-  }
-  return false;
+  return parseIn(kMaterialNames, name, material);
 }
 
 const char* environmentName(Environment environment) {
-  return environment == Environment::Skybox ? "skybox" : "live";
+  return nameIn(kEnvironmentNames, environment);
 }
 
 bool parseEnvironment(const std::string& name, Environment* environment) {
-  for (Environment e : {Environment::LiveProbe, Environment::Skybox}) {
-    if (name == environmentName(e)) {
-      *environment = e;
-      return true;
-    }
-  }
-  return false;
+  return parseIn(kEnvironmentNames, name, environment);
 }
 
 }  // namespace reflect

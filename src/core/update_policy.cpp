@@ -2,6 +2,7 @@
 // faces each redraws this frame.
 #include <algorithm>
 
+#include "core/enum_names.h"
 #include "core/frame_planner.h"
 #include "core/planner_parts.h"
 
@@ -9,29 +10,21 @@ namespace reflect {
 
 using planner::contains;
 
+namespace {
+
+constexpr EnumName<UpdatePolicy> kPolicyNames[] = {{UpdatePolicy::EveryFrame, "every-frame"},
+                                                   {UpdatePolicy::WhenChanged, "when-changed"},
+                                                   {UpdatePolicy::TimeSliced, "time-sliced"},
+                                                   {UpdatePolicy::EveryNFrames, "every-n"}};
+
+}  // namespace
+
 const char* policyName(UpdatePolicy policy) {
-  switch (policy) {
-    case UpdatePolicy::EveryFrame:
-      return "every-frame";
-    case UpdatePolicy::WhenChanged:
-      return "when-changed";
-    case UpdatePolicy::TimeSliced:
-      return "time-sliced";
-    case UpdatePolicy::EveryNFrames:
-      return "every-n";
-  }
-  return "?";
+  return nameIn(kPolicyNames, policy);
 }
 
 bool parsePolicy(const std::string& text, UpdatePolicy* policy) {
-  for (UpdatePolicy p : {UpdatePolicy::EveryFrame, UpdatePolicy::WhenChanged,
-                         UpdatePolicy::TimeSliced, UpdatePolicy::EveryNFrames}) {
-    if (text == policyName(p)) {
-      *policy = p;
-      return true;
-    }
-  }
-  return false;
+  return parseIn(kPolicyNames, text, policy);
 }
 
 int PlannerSettings::maxStalenessFrames() const {

@@ -1,6 +1,8 @@
 // The settings table: one name per setting, checked values, messages that say what is expected.
 #include <gtest/gtest.h>
 
+#include "core/accuracy_settings.h"
+#include "core/frame_planner.h"
 #include "core/settings_schema.h"
 
 namespace reflect {
@@ -127,6 +129,38 @@ TEST(SettingsSchema, EnumerationNamesRoundTrip) {
   EXPECT_FALSE(parseEnvironment("sky", &e));
   Material m = Material::Phong;
   EXPECT_FALSE(parseMaterial("chrome", &m));
+}
+
+// Every value's name parses back to it, and a name no value has is refused (core/enum_names.h).
+TEST(EnumNames, EveryValueRoundTripsAndUnknownNamesAreRefused) {
+  for (Search search : kSearches) {
+    Search parsed = Search::Plain;
+    EXPECT_TRUE(parseSearch(searchName(search), &parsed)) << searchName(search);
+    EXPECT_EQ(parsed, search);
+  }
+  for (Material material :
+       {Material::Phong, Material::Mirror, Material::Glass, Material::CubeTextured}) {
+    Material parsed = Material::Phong;
+    EXPECT_TRUE(parseMaterial(materialName(material), &parsed)) << materialName(material);
+    EXPECT_EQ(parsed, material);
+  }
+  for (Environment environment : {Environment::LiveProbe, Environment::Skybox}) {
+    Environment parsed = Environment::LiveProbe;
+    EXPECT_TRUE(parseEnvironment(environmentName(environment), &parsed));
+    EXPECT_EQ(parsed, environment);
+  }
+  for (UpdatePolicy policy : {UpdatePolicy::EveryFrame, UpdatePolicy::WhenChanged,
+                              UpdatePolicy::TimeSliced, UpdatePolicy::EveryNFrames}) {
+    UpdatePolicy parsed = UpdatePolicy::EveryFrame;
+    EXPECT_TRUE(parsePolicy(policyName(policy), &parsed)) << policyName(policy);
+    EXPECT_EQ(parsed, policy);
+  }
+  Search unchanged = Search::Linear;
+  EXPECT_FALSE(parseSearch("Exact", &unchanged));  // names are case-sensitive
+  EXPECT_EQ(unchanged, Search::Linear);
+  Material material = Material::Glass;
+  EXPECT_FALSE(parseMaterial("?", &material));
+  EXPECT_EQ(material, Material::Glass);
 }
 
 }  // namespace
