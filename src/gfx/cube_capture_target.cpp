@@ -170,9 +170,9 @@ void CubeCaptureTarget::finish(const DepthPyramidPrograms& programs, unsigned fa
     // Level 0, from the faces' own layers and the backs.
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pyramid, 0);
     glUseProgram(programs.first.id());
-    programs.firstUniforms.layers.set(format_.layers);
-    programs.firstUniforms.faceSize.set(format_.faceSize);
-    programs.firstUniforms.tile.set(baseTile);
+    programs.first.u().layers.set(format_.layers);
+    programs.first.u().faceSize.set(format_.faceSize);
+    programs.first.u().tile.set(baseTile);
     glActiveTexture(GL_TEXTURE0);  // u_faces
     glBindTexture(GL_TEXTURE_2D_ARRAY, faceDepths_[0].id());
     glActiveTexture(GL_TEXTURE1);  // u_backs

@@ -2,26 +2,29 @@
 
 namespace reflect {
 
-Result<std::unique_ptr<DepthPyramidPrograms>> DepthPyramidPrograms::create() {
-  using Built = Result<std::unique_ptr<DepthPyramidPrograms>>;
-  Result<ShaderProgram> first = ShaderProgram::build("fullscreen.vert", "depth_pyramid.frag");
+Result<DepthPyramidPrograms> DepthPyramidPrograms::create() {
+  using Built = Result<DepthPyramidPrograms>;
+  auto first = TabledProgram<FirstUniforms>::build("fullscreen.vert", "depth_pyramid.frag");
   if (!first) return Built::failure(first.error());
-  Result<ShaderProgram> reduce = ShaderProgram::build("fullscreen.vert", "depth_reduce.frag");
+  auto reduce = TabledProgram<ReduceUniforms>::build("fullscreen.vert", "depth_reduce.frag");
   if (!reduce) return Built::failure(reduce.error());
-  auto programs = std::make_unique<DepthPyramidPrograms>();
-  programs->first = first.take();
-  programs->reduce = reduce.take();
-  const FirstUniforms& f = programs->firstUniforms;
-  programs->firstUniforms.locate(programs->first);
-  glUseProgram(programs->first.id());
-  f.faces.set(0);
-  f.backs.set(1);
-  f.faces2.set(2);
-  programs->reduceUniforms.locate(programs->reduce);
-  glUseProgram(programs->reduce.id());
-  programs->reduceUniforms.source.set(0);
+  DepthPyramidPrograms programs;
+  programs.first = first.take();
+  programs.reduce = reduce.take();
+  glUseProgram(programs.first.id());
+  programs.first.u().faces.set(0);
+  programs.first.u().backs.set(1);
+  programs.first.u().faces2.set(2);
+  glUseProgram(programs.reduce.id());
+  programs.reduce.u().source.set(0);
   glUseProgram(0);
   return programs;
+}
+
+std::vector<std::string> DepthPyramidPrograms::unlisted() const {
+  std::vector<std::string> out = first.unlisted();
+  for (const std::string& name : reduce.unlisted()) out.push_back(name);
+  return out;
 }
 
 }  // namespace reflect

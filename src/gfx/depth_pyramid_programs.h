@@ -1,10 +1,11 @@
 // The two programs that build a probe's depth pyramid (fullscreen.vert with depth_pyramid.frag
 // for level 0, depth_reduce.frag for each level above) and their uniforms as tables
 // (uniform_table.h). The scene renderer builds them once; each capture target's finish() uses
-// them. Held by pointer: a table does not move.
+// them.
 #pragma once
 
-#include <memory>
+#include <string>
+#include <vector>
 
 #include "core/result.h"
 #include "gfx/shader_program.h"
@@ -26,11 +27,12 @@ struct DepthPyramidPrograms {
   };
 
   // Builds both and sets their samplers' units. Failure names the shader file.
-  static Result<std::unique_ptr<DepthPyramidPrograms>> create();
+  static Result<DepthPyramidPrograms> create();
+  // The active uniforms their tables do not set (for tests).
+  std::vector<std::string> unlisted() const;
 
-  ShaderProgram first, reduce;
-  FirstUniforms firstUniforms;
-  ReduceUniforms reduceUniforms;
+  TabledProgram<FirstUniforms> first;
+  TabledProgram<ReduceUniforms> reduce;
 };
 
 }  // namespace reflect

@@ -5,13 +5,10 @@
 namespace reflect {
 
 Result<ErrorView> ErrorView::create() {
-  Result<ShaderProgram> program = ShaderProgram::build("fullscreen.vert", "error_view.frag");
+  auto program = TabledProgram<Uniforms>::build("fullscreen.vert", "error_view.frag");
   if (!program) return Result<ErrorView>::failure(program.error());
   ErrorView v;
   v.program_ = program.take();
-  v.current_ = v.program_.uniform("u_current");
-  v.exact_ = v.program_.uniform("u_exact");
-  v.output_ = v.program_.uniform("u_output");
   v.vao_ = VertexArrayHandle(genVertexArray());
   return v;
 }
@@ -55,18 +52,19 @@ ErrorViewStats ErrorView::compose(GLuint framebuffer) {
   glBindTexture(GL_TEXTURE_2D, targets_[0].colour.id());
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, targets_[1].colour.id());
-  glUniform1i(current_, 0);
-  glUniform1i(exact_, 1);
+  const Uniforms& u = program_.u();
+  u.current.set(0);
+  u.exact.set(1);
   glBindVertexArray(vao_.id());
   glViewport(0, 0, width_, height_);
   // The differences first, read back; then the picture.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_[2].framebuffer.id());
-  glUniform1i(output_, 1);
+  u.output.set(1);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   std::vector<uint8_t> pixels(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 4);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glUniform1i(output_, 0);
+  u.output.set(0);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE1);

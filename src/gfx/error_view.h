@@ -8,6 +8,7 @@
 #include "core/result.h"
 #include "gfx/gl_handle.h"
 #include "gfx/shader_program.h"
+#include "gfx/uniform_table.h"
 
 namespace reflect {
 
@@ -31,8 +32,12 @@ class ErrorView {
   };
   ErrorView() = default;
 
-  ShaderProgram program_;
-  GLint current_ = -1, exact_ = -1, output_ = -1;
+  struct Uniforms : UniformTable {
+    Uniform<int> current{*this, "u_current"};  // unit 0
+    Uniform<int> exact{*this, "u_exact"};      // unit 1
+    Uniform<int> output{*this, "u_output"};    // 1: the differences, 0: the picture
+  };
+  TabledProgram<Uniforms> program_;
   VertexArrayHandle vao_;
   Target targets_[3];  // current, exact, differences
   int width_ = 0, height_ = 0;

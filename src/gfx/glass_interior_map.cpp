@@ -27,7 +27,7 @@ TextureHandle createCube(GLenum internalFormat, GLenum filter) {
 }  // namespace
 
 Result<GlassInteriorMap> GlassInteriorMap::create(const MeshBuffer& mesh,
-                                                  const ShaderProgram& program) {
+                                                  const GlassInteriorProgram& program) {
   GlassInteriorMap map;
   map.centre_ = mesh.bounds().centre();
   map.radius_ = mesh.boundingRadius();
@@ -53,11 +53,9 @@ Result<GlassInteriorMap> GlassInteriorMap::create(const MeshBuffer& mesh,
   glDisable(GL_CULL_FACE);
   glUseProgram(program.id());
   const glm::mat4 model = glm::translate(glm::mat4(1.0f), -map.centre_);
-  glUniformMatrix4fv(program.uniform("u_model"), 1, GL_FALSE, glm::value_ptr(model));
-  const glm::mat3 identity(1.0f);
-  glUniformMatrix3fv(program.uniform("u_normalMatrix"), 1, GL_FALSE, glm::value_ptr(identity));
+  program.u().model.set(model);
+  program.u().normalMatrix.set(glm::mat3(1.0f));
   const glm::mat4 projection = cubeFaceProjection(map.near_, map.far_);
-  const GLint viewProjection = program.uniform("u_viewProjection");
   std::string error;
   for (int face = 0; face < 6 && error.empty(); ++face) {
     const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face);
@@ -72,7 +70,7 @@ Result<GlassInteriorMap> GlassInteriorMap::create(const MeshBuffer& mesh,
     glClearDepthf(1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     const glm::mat4 vp = projection * cubeFaceView(glm::vec3(0.0f), face);
-    glUniformMatrix4fv(viewProjection, 1, GL_FALSE, glm::value_ptr(vp));
+    program.u().viewProjection.set(vp);
     mesh.draw();
   }
   glBindVertexArray(0);
@@ -86,13 +84,14 @@ const GlassInteriorMap* GlassInteriorMaps::mapFor(const std::string& name, const
   auto it = maps_.find(name);
   if (it != maps_.end()) return it->second.get();
   if (!program_) {
-    Result<ShaderProgram> built = ShaderProgram::build("mesh.vert", "glass_interior.frag");
+    Result<GlassInteriorProgram> built =
+        GlassInteriorProgram::build("mesh.vert", "glass_interior.frag");
     if (!built) {
       error_ = built.error();
       maps_[name] = nullptr;
       return nullptr;
     }
-    program_ = std::make_unique<ShaderProgram>(built.take());
+    program_ = std::make_unique<GlassInteriorProgram>(built.take());
   }
   Result<GlassInteriorMap> made = GlassInteriorMap::create(mesh, *program_);
   if (!made) error_ = made.error();

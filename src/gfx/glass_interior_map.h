@@ -17,12 +17,21 @@
 #include "gfx/gl_handle.h"
 #include "gfx/mesh_buffer.h"
 #include "gfx/shader_program.h"
+#include "gfx/uniform_table.h"
 
 namespace reflect {
 
 // Past the exact mode's units (exact_tracer.h): the exact mode never binds an interior map.
 inline constexpr GLint kGlassDepthUnit = 11;    // samplerCube: an interior map's depths
 inline constexpr GLint kGlassNormalsUnit = 12;  // samplerCube: its normals
+
+// The uniforms of the program that draws a map (mesh.vert + glass_interior.frag).
+struct GlassInteriorUniforms : UniformTable {
+  Uniform<glm::mat4> model{*this, "u_model"};
+  Uniform<glm::mat3> normalMatrix{*this, "u_normalMatrix"};
+  Uniform<glm::mat4> viewProjection{*this, "u_viewProjection"};
+};
+using GlassInteriorProgram = TabledProgram<GlassInteriorUniforms>;
 
 class GlassInteriorMap {
  public:
@@ -35,7 +44,8 @@ class GlassInteriorMap {
 
   // Draws `mesh` into a new map with `program` (mesh.vert + glass_interior.frag). Leaves
   // framebuffer 0 bound and the depth test on.
-  static Result<GlassInteriorMap> create(const MeshBuffer& mesh, const ShaderProgram& program);
+  static Result<GlassInteriorMap> create(const MeshBuffer& mesh,
+                                         const GlassInteriorProgram& program);
 
   GLuint depths() const { return depths_.id(); }
   GLuint normals() const { return normals_.id(); }
@@ -77,7 +87,7 @@ class GlassInteriorMaps {
   }
 
  private:
-  std::unique_ptr<ShaderProgram> program_;
+  std::unique_ptr<GlassInteriorProgram> program_;
   std::map<std::string, std::unique_ptr<GlassInteriorMap>> maps_;  // null: making it failed
   std::string error_;
 };

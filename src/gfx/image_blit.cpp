@@ -3,13 +3,10 @@
 namespace reflect {
 
 Result<ImageBlit> ImageBlit::create() {
-  Result<ShaderProgram> program = ShaderProgram::build("fullscreen.vert", "image_blit.frag");
+  auto program = TabledProgram<Uniforms>::build("fullscreen.vert", "image_blit.frag");
   if (!program) return Result<ImageBlit>::failure(program.error());
   ImageBlit blit;
   blit.program_ = program.take();
-  blit.image_ = blit.program_.uniform("u_image");
-  blit.origin_ = blit.program_.uniform("u_origin");
-  blit.background_ = blit.program_.uniform("u_background");
   blit.vertexArray_ = VertexArrayHandle(genVertexArray());
   return blit;
 }
@@ -36,10 +33,11 @@ void ImageBlit::draw(const RgbaImage& image, int width, int height,
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glUseProgram(program_.id());
-  glUniform1i(image_, 0);
+  const Uniforms& u = program_.u();
+  u.image.set(0);
   // Centred; a negative origin cuts the image equally on both sides.
-  glUniform2i(origin_, (width - image.width) / 2, (height - image.height) / 2);
-  glUniform3f(background_, background[0] / 255.0f, background[1] / 255.0f, background[2] / 255.0f);
+  u.origin.set(glm::ivec2((width - image.width) / 2, (height - image.height) / 2));
+  u.background.set(glm::vec3(background[0], background[1], background[2]) / 255.0f);
   glBindVertexArray(vertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

@@ -8,6 +8,7 @@
 #include "core/result.h"
 #include "gfx/gl_handle.h"
 #include "gfx/shader_program.h"
+#include "gfx/uniform_table.h"
 
 namespace reflect {
 
@@ -20,11 +21,15 @@ class ImageBlit {
             const std::array<uint8_t, 4>& background);
 
  private:
-  ShaderProgram program_;
+  struct Uniforms : UniformTable {
+    Uniform<int> image{*this, "u_image"};  // unit 0
+    Uniform<glm::ivec2> origin{*this, "u_origin"};
+    Uniform<glm::vec3> background{*this, "u_background"};
+  };
+  TabledProgram<Uniforms> program_;
   TextureHandle texture_;
   int textureWidth_ = 0, textureHeight_ = 0;  // the size texture_ was made for
   VertexArrayHandle vertexArray_;             // empty: the full-screen triangle needs no attributes
-  GLint image_ = -1, origin_ = -1, background_ = -1;
 };
 
 }  // namespace reflect

@@ -49,18 +49,14 @@ bool PrefilteredCube::ensure(int faceSize, bool halfFloat, int top) {
 }
 
 Result<ProbePrefilter> ProbePrefilter::create() {
-  Result<ShaderProgram> built = ShaderProgram::build(
+  auto built = TabledProgram<Uniforms>::build(
       "fullscreen.vert", "prefilter.frag", false,
       "#define PREFILTER_MAX_SAMPLES " + std::to_string(kMaxFilterSamples) + "\n");
   if (!built) return Result<ProbePrefilter>::failure(built.error());
   ProbePrefilter p;
   p.program_ = built.take();
-  p.face_ = p.program_.uniform("u_face");
-  p.lobe_ = p.program_.uniform("u_lobe");
-  p.samples_ = p.program_.uniform("u_samples");
-  p.targetSize_ = p.program_.uniform("u_targetSize");
   glUseProgram(p.program_.id());
-  glUniform1i(p.program_.uniform("u_source"), 0);
+  p.program_.u().source.set(0);
   glUseProgram(0);
   p.framebuffer_ = FramebufferHandle(genFramebuffer());
   return p;
@@ -85,17 +81,18 @@ Result<double> ProbePrefilter::filter(const PrefilterJob& job, PrefilteredCube& 
   for (int level : job.levels) {
     const int size = std::max(job.faceSize >> level, 1);
     glViewport(0, 0, size, size);
-    glUniform1f(targetSize_, static_cast<float>(size));
+    const Uniforms& u = program_.u();
+    u.targetSize.set(static_cast<float>(size));
     const std::vector<glm::vec4> lobe = prefilterLobe(
         ggxAlpha(roughnessOfLevel(level, job.roughLevels)), job.samples, job.faceSize);
-    glUniform4fv(lobe_, static_cast<GLsizei>(lobe.size()), &lobe[0].x);
-    glUniform1i(samples_, static_cast<GLint>(lobe.size()));
+    u.lobe.set(lobe.data(), lobe.size());
+    u.samples.set(static_cast<int>(lobe.size()));
     for (int face = 0; face < 6; ++face) {
       if ((job.faces & (1u << face)) == 0) continue;
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
                              GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face),
                              target.texture(), level - 1);
-      glUniform1i(face_, face);
+      u.face.set(face);
       glDrawArrays(GL_TRIANGLES, 0, 3);
       taken += static_cast<double>(size) * size * static_cast<double>(lobe.size());
     }

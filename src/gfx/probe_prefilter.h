@@ -18,6 +18,7 @@
 #include "core/result.h"
 #include "gfx/gl_handle.h"
 #include "gfx/shader_program.h"
+#include "gfx/uniform_table.h"
 
 namespace reflect {
 
@@ -56,9 +57,15 @@ class ProbePrefilter {
   Result<double> filter(const PrefilterJob& job, PrefilteredCube& target);
 
  private:
-  ShaderProgram program_;
+  struct Uniforms : UniformTable {
+    Uniform<int> source{*this, "u_source"};  // unit 0
+    Uniform<int> face{*this, "u_face"};
+    UniformArray<glm::vec4> lobe{*this, "u_lobe"};
+    Uniform<int> samples{*this, "u_samples"};
+    Uniform<float> targetSize{*this, "u_targetSize"};
+  };
+  TabledProgram<Uniforms> program_;
   FramebufferHandle framebuffer_;
-  GLint face_ = -1, lobe_ = -1, samples_ = -1, targetSize_ = -1;
 };
 
 }  // namespace reflect

@@ -5,11 +5,10 @@
 namespace reflect {
 
 Result<RayLines> RayLines::create() {
-  Result<ShaderProgram> program = ShaderProgram::build("ray_lines.vert", "ray_lines.frag");
+  auto program = TabledProgram<Uniforms>::build("ray_lines.vert", "ray_lines.frag");
   if (!program) return Result<RayLines>::failure(program.error());
   RayLines lines;
   lines.program_ = program.take();
-  lines.viewProjection_ = lines.program_.uniform("u_viewProjection");
   lines.buffer_ = BufferHandle(genBuffer());
   lines.vertexArray_ = VertexArrayHandle(genVertexArray());
   glBindVertexArray(lines.vertexArray_.id());
@@ -47,7 +46,7 @@ void RayLines::draw(const glm::mat4& viewProjection, int width, int height) cons
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glUseProgram(program_.id());
-  glUniformMatrix4fv(viewProjection_, 1, GL_FALSE, glm::value_ptr(viewProjection));
+  program_.u().viewProjection.set(viewProjection);
   glBindVertexArray(vertexArray_.id());
   glDrawArrays(GL_LINES, 0, vertices_);
   glBindVertexArray(0);

@@ -10,6 +10,7 @@
 #include "core/result.h"
 #include "gfx/gl_handle.h"
 #include "gfx/shader_program.h"
+#include "gfx/uniform_table.h"
 
 namespace reflect {
 
@@ -28,10 +29,12 @@ class RayLines {
   void draw(const glm::mat4& viewProjection, int width, int height) const;
 
  private:
-  ShaderProgram program_;
+  struct Uniforms : UniformTable {
+    Uniform<glm::mat4> viewProjection{*this, "u_viewProjection"};
+  };
+  TabledProgram<Uniforms> program_;
   BufferHandle buffer_;
   VertexArrayHandle vertexArray_;
-  GLint viewProjection_ = -1;
   GLsizei vertices_ = 0;
 };
 

@@ -17,7 +17,7 @@ using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
 Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
-  Result<std::unique_ptr<DepthPyramidPrograms>> pyramid = DepthPyramidPrograms::create();
+  Result<DepthPyramidPrograms> pyramid = DepthPyramidPrograms::create();
   if (!pyramid) return Result<SceneRenderer>::failure(pyramid.error());
 
   SceneRenderer r;
@@ -90,7 +90,7 @@ void SceneRenderer::use(const Program& p, const Scene& scene, const glm::mat4& v
                         int outputDirections) {
   current_ = &p;
   glUseProgram(p.program.id());
-  const ProgramUniforms& u = *p.uniforms;
+  const ProgramUniforms& u = p.program.u();
   u.capture.set(pass);
   u.viewProjection.set(viewProj);
   u.viewPosition.set(viewPosition);
@@ -117,7 +117,7 @@ PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
   const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
   const Program& p = *current_;
-  const ProgramUniforms& u = *p.uniforms;
+  const ProgramUniforms& u = p.program.u();
   const glm::mat4 model = scene.modelMatrix(object, seconds);
   u.model.set(model);
   u.normalMatrix.set(normalMatrixOf(glm::mat3(model)));

@@ -145,9 +145,9 @@ class SceneRenderer {
     Uniform<int> faceSize{*this, "u_faceSize"};
     Uniform<int> topLevel{*this, "u_topLevel"};
     Uniform<int> pyramidTile{*this, "u_pyramidTile"};
-    UniformArray<glm::vec3, 6> faceRight{*this, "u_faceRight"};
-    UniformArray<glm::vec3, 6> faceUp{*this, "u_faceUp"};
-    UniformArray<glm::vec3, 6> faceAxis{*this, "u_faceAxis"};
+    UniformArray<glm::vec3> faceRight{*this, "u_faceRight"};
+    UniformArray<glm::vec3> faceUp{*this, "u_faceUp"};
+    UniformArray<glm::vec3> faceAxis{*this, "u_faceAxis"};
     // Texture units, set once when the program is built.
     Uniform<int> environment{*this, "u_environment"};
     Uniform<int> environment2{*this, "u_environment2"};
@@ -156,11 +156,10 @@ class SceneRenderer {
     GlassExitUniforms glassExit{*this};
     ExactUniforms exact{*this};
   };
-  // One variant (program_key.h) and its uniforms (held by pointer: a table does not move).
+  // One variant (program_key.h), built with its uniforms' table.
   struct Program {
     ProgramKey key;
-    ShaderProgram program;
-    std::unique_ptr<ProgramUniforms> uniforms;
+    TabledProgram<ProgramUniforms> program;
   };
 
   SceneRenderer() = default;
@@ -214,7 +213,7 @@ class SceneRenderer {
   std::string programError_;
   const Program* current_ = nullptr;
   GlassInteriorMaps glassInteriors_;
-  std::unique_ptr<DepthPyramidPrograms> pyramid_;
+  DepthPyramidPrograms pyramid_;
   std::unique_ptr<SkyboxPass> skybox_;
   // Bound to the depth units whenever nothing else is, so no program ever samples a texture the
   // pass renders into (a feedback loop WebGL refuses to draw).

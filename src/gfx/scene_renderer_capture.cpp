@@ -169,7 +169,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
     glBindVertexArray(emptyVertexArray_.id());
     unsigned captured = 0;
     for (const FacePlan& face : probe.faces) captured |= 1u << face.face;
-    t.finish(*pyramid_, captured);
+    t.finish(pyramid_, captured);
     glEnable(GL_DEPTH_TEST);
     if (capturesDepths(probe, accuracy_) && job.stopAfterStep()) going = false;
   }

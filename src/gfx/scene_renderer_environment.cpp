@@ -24,9 +24,9 @@ void setFaceFrames(const Uniforms& u) {
     up[f] = glm::vec3(view[0][1], view[1][1], view[2][1]);
     axis[f] = -glm::vec3(view[0][2], view[1][2], view[2][2]);
   }
-  u.faceRight.set(right);
-  u.faceUp.set(up);
-  u.faceAxis.set(axis);
+  u.faceRight.set(right, 6);
+  u.faceUp.set(up, 6);
+  u.faceAxis.set(axis, 6);
 }
 
 }  // namespace
@@ -38,15 +38,12 @@ Result<SceneRenderer::Program> SceneRenderer::buildProgram(const ProgramKey& key
                                                            bool mediumpAsked) {
   const bool mediump = mediumpAsked && key.allowsMediump();
   const std::string precision = mediump ? "#define REFLECT_MEDIUMP 1\n" : "";
-  Result<ShaderProgram> built =
-      ShaderProgram::build("mesh.vert", key.fragmentFile(), mediump, precision + key.defines());
+  auto built = TabledProgram<ProgramUniforms>::build("mesh.vert", key.fragmentFile(), mediump,
+                                                     precision + key.defines());
   if (!built) return Result<Program>::failure(built.error());
-  Program out;
-  out.key = key;
-  out.uniforms = std::make_unique<ProgramUniforms>();
-  const ProgramUniforms& u = *out.uniforms;
-  out.uniforms->locate(built.value());
-  glUseProgram(built.value().id());
+  Program out{key, built.take()};
+  const ProgramUniforms& u = out.program.u();
+  glUseProgram(out.program.id());
   u.capture.setUnits();
   u.environment.set(kEnvironmentUnit);
   u.environment2.set(kEnvironment2Unit);
@@ -55,7 +52,6 @@ Result<SceneRenderer::Program> SceneRenderer::buildProgram(const ProgramKey& key
   if (key.search == Search::Hierarchical) setFaceFrames(u);
   if (key.glassExit) u.glassExit.setUnits();
   glUseProgram(0);
-  out.program = built.take();
   return out;
 }
 
@@ -76,19 +72,14 @@ const SceneRenderer::Program* SceneRenderer::program(const ProgramKey& key) {
 std::vector<std::string> SceneRenderer::unsetUniforms() const {
   std::vector<std::string> out;
   for (const auto& [key, p] : programs_) {
-    for (const std::string& name : p.uniforms->unlisted(p.program.id())) {
+    for (const std::string& name : p.program.unlisted()) {
       out.push_back(key.describe() + ": " + name);
     }
   }
   if (skybox_) {
     for (const std::string& name : skybox_->unsetUniforms()) out.push_back("skybox: " + name);
   }
-  for (const std::string& name : pyramid_->firstUniforms.unlisted(pyramid_->first.id())) {
-    out.push_back("depth_pyramid.frag: " + name);
-  }
-  for (const std::string& name : pyramid_->reduceUniforms.unlisted(pyramid_->reduce.id())) {
-    out.push_back("depth_reduce.frag: " + name);
-  }
+  for (const std::string& name : pyramid_.unlisted()) out.push_back("depth pyramid: " + name);
   return out;
 }
 
@@ -182,7 +173,7 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   if (current_->key.look == Look::CubeTextured) return;
   bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, colour2 ? colour2 : colour);
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
-  const ProgramUniforms& u = *current_->uniforms;
+  const ProgramUniforms& u = current_->program.u();
   if (current_->key.rough) {
     const ProbePlan* probe = plan.probeOf(index);
     auto filtered = probe ? prefiltered_.find(probe->reflector) : prefiltered_.end();

@@ -18,19 +18,15 @@ constexpr float kCube[] = {
 }  // namespace
 
 Result<SkyboxPass::Program> SkyboxPass::build(bool capture) {
-  Result<ShaderProgram> built =
-      ShaderProgram::build("skybox.vert", "skybox.frag", false,
-                           capture ? "#define CAPTURE_OUTPUT 1\n" : "#define CAPTURE_OUTPUT 0\n");
-  if (!built) return Result<Program>::failure(built.error());
-  Program p;
-  p.uniforms = std::make_unique<Uniforms>();
-  p.uniforms->locate(built.value());
+  Result<Program> built =
+      Program::build("skybox.vert", "skybox.frag", false,
+                     capture ? "#define CAPTURE_OUTPUT 1\n" : "#define CAPTURE_OUTPUT 0\n");
+  if (!built) return built;
   glUseProgram(built.value().id());
-  p.uniforms->skybox.set(kEnvironmentUnit);
-  p.uniforms->capture.setUnits();
+  built.value().u().skybox.set(kEnvironmentUnit);
+  built.value().u().capture.setUnits();
   glUseProgram(0);
-  p.program = built.take();
-  return p;
+  return built;
 }
 
 Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
@@ -70,10 +66,8 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
 }
 
 std::vector<std::string> SkyboxPass::unsetUniforms() const {
-  std::vector<std::string> out = main_.uniforms->unlisted(main_.program.id());
-  for (const std::string& name : capture_.uniforms->unlisted(capture_.program.id())) {
-    out.push_back(name);
-  }
+  std::vector<std::string> out = main_.unlisted();
+  for (const std::string& name : capture_.unlisted()) out.push_back(name);
   return out;
 }
 

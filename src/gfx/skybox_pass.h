@@ -35,10 +35,7 @@ class SkyboxPass {
     Uniform<int> skybox{*this, "u_skybox"};
     CaptureUniforms capture{*this};
   };
-  struct Program {
-    ShaderProgram program;
-    std::unique_ptr<Uniforms> uniforms;  // a table does not move
-  };
+  using Program = TabledProgram<Uniforms>;
   static Result<Program> build(bool capture);
   Program main_, capture_;
   TextureHandle texture_;

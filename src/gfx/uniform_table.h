@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,9 @@ inline void setUniform(GLint at, bool value) {
 inline void setUniform(GLint at, float value) {
   glUniform1f(at, value);
 }
+inline void setUniform(GLint at, const glm::ivec2& value) {
+  glUniform2i(at, value.x, value.y);
+}
 inline void setUniform(GLint at, const glm::vec3& value) {
   glUniform3fv(at, 1, glm::value_ptr(value));
 }
@@ -82,17 +86,45 @@ class Uniform : public UniformSlot {
   void set(const T& value) const { setUniform(location(), value); }
 };
 
-// An array uniform (`uniform vec3 u_faceAxis[6]`), set whole.
-template <typename T, size_t N>
+// An array uniform (`uniform vec3 u_faceAxis[6]`), set from its first element on.
+template <typename T>
 class UniformArray : public UniformSlot {
  public:
   using UniformSlot::UniformSlot;
-  void set(const T (&values)[N]) const;
+  void set(const T* values, size_t count) const;
 };
 
 template <>
-inline void UniformArray<glm::vec3, 6>::set(const glm::vec3 (&values)[6]) const {
-  glUniform3fv(location(), 6, glm::value_ptr(values[0]));
+inline void UniformArray<glm::vec3>::set(const glm::vec3* values, size_t count) const {
+  glUniform3fv(location(), static_cast<GLsizei>(count), glm::value_ptr(values[0]));
 }
+template <>
+inline void UniformArray<glm::vec4>::set(const glm::vec4* values, size_t count) const {
+  glUniform4fv(location(), static_cast<GLsizei>(count), glm::value_ptr(values[0]));
+}
+
+// A program built with its table of uniforms, located: the one way the renderer's programs are
+// made. `Uniforms` is a UniformTable of entries; held by pointer, as a table does not move.
+template <typename Uniforms>
+struct TabledProgram {
+  ShaderProgram program;
+  std::unique_ptr<Uniforms> uniforms;
+
+  // ShaderProgram::build's arguments; failure carries its message (the file and the log).
+  static Result<TabledProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
+                                     bool mediump = false, const std::string& defines = "") {
+    Result<ShaderProgram> built = ShaderProgram::build(vertexFile, fragmentFile, mediump, defines);
+    if (!built) return Result<TabledProgram>::failure(built.error());
+    TabledProgram p;
+    p.uniforms = std::make_unique<Uniforms>();
+    p.uniforms->locate(built.value());
+    p.program = built.take();
+    return p;
+  }
+  GLuint id() const { return program.id(); }
+  const Uniforms& u() const { return *uniforms; }
+  // The active uniforms this program's table does not set (for tests).
+  std::vector<std::string> unlisted() const { return uniforms->unlisted(program.id()); }
+};
 
 }  // namespace reflect
