@@ -78,12 +78,18 @@ void checkPyramid(const CubeCaptureTarget& probe, int layer, unsigned faces = 0x
   }
 }
 
+// One frame of `demo` at t = 0 into a size x size target; its first reflector's probe, or null.
+const CubeCaptureTarget* probeAfterOneFrame(Demo& demo, int size) {
+  auto target = OffscreenTarget::create(size, size);
+  EXPECT_TRUE(target) << target.error();
+  if (!target) return nullptr;
+  demo.frame(0.0, target.value().framebuffer(), size, size, true);
+  return demo.renderer()->probeTarget(demo.scene().reflectorIndex());
+}
+
 void checkScene(Scene scene, int layersExpected) {
   auto demo = testing::makeCapturingDemo(scene);
-  auto target = OffscreenTarget::create(64, 64);
-  ASSERT_TRUE(target);
-  demo->frame(0.0, target.value().framebuffer(), 64, 64, true);
-  const CubeCaptureTarget* probe = demo->renderer()->probeTarget(demo->scene().reflectorIndex());
+  const CubeCaptureTarget* probe = probeAfterOneFrame(*demo, 64);
   ASSERT_NE(probe, nullptr);
   ASSERT_TRUE(probe->format().depthChain);
   ASSERT_EQ(probe->format().layers, layersExpected);
@@ -105,10 +111,7 @@ TEST(DepthPyramid, WhereNothingWasDrawnTheCodeIsTheFarPlanesAsTheCSideComputesIt
   Scene scene = makeDynamicReflectionScene();
   scene.capture.faceSize = 16;
   auto demo = testing::makeCapturingDemo(scene);
-  auto target = OffscreenTarget::create(16, 16);
-  ASSERT_TRUE(target);
-  demo->frame(0.0, target.value().framebuffer(), 16, 16, true);
-  const CubeCaptureTarget* probe = demo->renderer()->probeTarget(demo->scene().reflectorIndex());
+  const CubeCaptureTarget* probe = probeAfterOneFrame(*demo, 16);
   ASSERT_NE(probe, nullptr);
   // Straight up (+Y) from the sphere's centre there is nothing: the clear value.
   const std::vector<glm::uvec2> up = readCodes(probe->faceDepths(0), true, 2, 0, 16, 16);
@@ -143,10 +146,7 @@ TEST(DepthPyramid, TheSecondLayerIsTheNearestSurfaceBehindTheFirst) {
   scene.capture.faceSize = 16;
   scene.capture.near = 0.1f;
   auto demo = testing::makeCapturingDemo(scene);
-  auto target = OffscreenTarget::create(16, 16);
-  ASSERT_TRUE(target);
-  demo->frame(0.0, target.value().framebuffer(), 16, 16, true);
-  const CubeCaptureTarget* probe = demo->renderer()->probeTarget(demo->scene().reflectorIndex());
+  const CubeCaptureTarget* probe = probeAfterOneFrame(*demo, 16);
   ASSERT_NE(probe, nullptr);
   ASSERT_EQ(probe->format().layers, 2);
   const float near = scene.capture.near;

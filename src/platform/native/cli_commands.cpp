@@ -193,26 +193,24 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
                            "scene time in seconds (default 0); the figures orbit 27 deg/s"),
               w, "SECONDS", "a number of seconds")
       ->check(decimalNumber("seconds"));
-  valueOption(c.add_option("--out", o.out, "the PNG to write (default " + o.out + ")"), w, "FILE",
-              "a PNG file name");
-  valueOption(c.add_option("--reference", o.referenceOut,
-                           "also write the exact (ray-traced, Embree) frame and print the "
-                           "reflector's error against it"),
-              w, "FILE", "a PNG file name");
-  valueOption(c.add_option("--error-view", o.errorViewOut,
-                           "also write the error view of the frame (a heat map of each mirror and "
-                           "glass pixel's difference from the exact mode) and print the reflector "
-                           "PSNR and the pixels off by more than 32 levels"),
-              w, "FILE", "a PNG file name");
-  valueOption(c.add_option("--faces", o.facesOut,
-                           "also write the faces view: the probe's cube map unfolded as a cross, "
-                           "each face with the course's look and up vectors, captured or stale"),
-              w, "FILE", "a PNG file name");
-  valueOption(c.add_option("--face-use", o.faceUseOut,
-                           "also write the face-use view: each mirror and glass pixel in the "
-                           "colour of the cube face it read, with a legend of the pixels each "
-                           "face serves"),
-              w, "FILE", "a PNG file name");
+  // The files render writes: the frame, and each view asked for beside it.
+  const auto pngFile = [&c, &w](const char* name, std::string& file, const std::string& help) {
+    valueOption(c.add_option(name, file, help), w, "FILE", "a PNG file name");
+  };
+  pngFile("--out", o.out, "the PNG to write (default " + o.out + ")");
+  pngFile("--reference", o.referenceOut,
+          "also write the exact (ray-traced, Embree) frame and print the reflector's error "
+          "against it");
+  pngFile("--error-view", o.errorViewOut,
+          "also write the error view of the frame (a heat map of each mirror and glass pixel's "
+          "difference from the exact mode) and print the reflector PSNR and the pixels off by "
+          "more than 32 levels");
+  pngFile("--faces", o.facesOut,
+          "also write the faces view: the probe's cube map unfolded as a cross, each face with "
+          "the course's look and up vectors, captured or stale");
+  pngFile("--face-use", o.faceUseOut,
+          "also write the face-use view: each mirror and glass pixel in the colour of the cube "
+          "face it read, with a legend of the pixels each face serves");
   valueOption(c.add_option("--steps", o.stepsDir,
                            "also step through the frame: write one PNG per draw step into DIR "
                            "(step-01.png ...: each face's capture passes, then the main pass, "
