@@ -1,6 +1,7 @@
 // What the browser benches share: the repository's root, a free port, the static server
 // (tools/serve.mjs) started on it, Debian's Chromium launched as playwright.config.mjs launches it,
-// and percentiles.
+// percentiles, and the renderer processes' memory.
+import { readFileSync, readdirSync } from 'node:fs';
 import { spawn } from 'node:child_process';
 import { createServer } from 'node:net';
 import { dirname, join, resolve } from 'node:path';
@@ -60,4 +61,31 @@ export function percentile(values, p) {
 
 export function summary(values) {
   return { p10: percentile(values, 0.1), median: percentile(values, 0.5), p90: percentile(values, 0.9) };
+}
+
+// Resident memory (VmRSS) summed over the renderer processes among `pid`'s descendants.
+export function rendererMemory(pid) {
+  const parents = new Map();
+  for (const entry of readdirSync('/proc')) {
+    if (!/^\d+$/.test(entry)) continue;
+    try {
+      const stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
+      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+      parents.set(Number(entry), Number(fields[1]));
+    } catch { /* gone */ }
+  }
+  const descends = (p) => {
+    for (let q = p, depth = 0; q && depth < 64; q = parents.get(q), ++depth) if (q === pid) return true;
+    return false;
+  };
+  let kb = 0, count = 0;
+  for (const p of parents.keys()) {
+    if (!descends(p)) continue;
+    try {
+      if (!readFileSync(`/proc/${p}/cmdline`, 'utf8').includes('--type=renderer')) continue;
+      const rss = /VmRSS:\s+(\d+) kB/.exec(readFileSync(`/proc/${p}/status`, 'utf8'));
+      if (rss) { kb += Number(rss[1]); ++count; }
+    } catch { /* gone */ }
+  }
+  return { mb: kb / 1024, processes: count };
 }

@@ -35,10 +35,10 @@
 //
 // Either way: serves build/web/site with tools/serve.mjs on a free port, 800x800 viewport.
 import { spawnSync } from 'node:child_process';
-import { copyFileSync, existsSync, mkdirSync, readFileSync, readdirSync } from 'node:fs';
+import { copyFileSync, existsSync, mkdirSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { chromium } from '@playwright/test';
-import { chromiumOptions, freePort, launchChromium, repo, startServer, summary } from './bench_lib.mjs';
+import { chromiumOptions, freePort, launchChromium, rendererMemory, repo, startServer, summary } from './bench_lib.mjs';
 
 const site = join(repo, 'build/web/site');
 
@@ -95,6 +95,76 @@ function distinct(values) {
   return set.length === 1 ? String(set[0]) : `${set[0]}..${set[set.length - 1]} (varies)`;
 }
 
+// The GPU and browser the page runs on, and its drawing buffer's size.
+function rendererInfo(page) {
+  return page.evaluate(() => {
+    const canvas = document.getElementById('canvas');
+    const gl = document.createElement('canvas').getContext('webgl2');
+    let renderer = 'unknown', vendor = 'unknown';
+    if (gl) {
+      const ext = gl.getExtension('WEBGL_debug_renderer_info');
+      renderer = gl.getParameter(ext ? ext.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
+      vendor = gl.getParameter(ext ? ext.UNMASKED_VENDOR_WEBGL : gl.VENDOR);
+      gl.getExtension('WEBGL_lose_context')?.loseContext();
+    }
+    return { renderer, vendor, width: canvas.width, height: canvas.height, userAgent: navigator.userAgent };
+  });
+}
+
+// demo.frame(1/60) `options.frames` times after `options.warmup`, each call's wall time and stats.
+function timeFrames(page, options) {
+  // All frames in one task: the page's own rAF loop cannot slip frames in between.
+  return page.evaluate(({ warmup, count }) => {
+    for (let i = 0; i < warmup; ++i) window.demo.frame(1 / 60);
+    const out = [];
+    for (let i = 0; i < count; ++i) {
+      const start = performance.now();
+      const s = window.demo.frame(1 / 60);
+      const wallMs = performance.now() - start;
+      out.push({ wallMs, frameMs: s.frameMs, captureMs: s.captureMs, triangles: s.triangles,
+                 drawCalls: s.drawCalls, facesCaptured: s.facesCaptured, cubeFaceSize: s.cubeFaceSize,
+                 timing: s.timing, policy: s.policy, gpuFrameMs: s.gpuFrameMs, gpuCaptureMs: s.gpuCaptureMs });
+    }
+    return out;
+  }, { warmup: options.warmup, count: options.frames });
+}
+
+// The raw frames' table: medians and spread of each time, the counts a frame draws.
+function printFrames(frames, info, options) {
+  const fmt = (x) => x.toFixed(2).padStart(8);
+  const row = (label, values) => {
+    const s = summary(values);
+    return `${label.padEnd(22)}${fmt(s.median)}${fmt(s.p10)}${fmt(s.p90)}`;
+  };
+  const last = frames[frames.length - 1];
+  console.log(`renderer:        ${info.renderer} (${info.vendor})`);
+  console.log(`browser:         ${info.userAgent}`);
+  console.log(`page:            ${options.query} at ${options.width}x${options.height} CSS px, ` +
+              `drawing buffer ${info.width}x${info.height}, cube faces ${last.cubeFaceSize} px` +
+              (last.policy ? `, capture policy ${last.policy}` : ''));
+  console.log(`frames:          ${frames.length} timed of demo.frame(1/60) after ${options.warmup} warm-up ` +
+              `(timing: ${last.timing})`);
+  console.log('');
+  console.log(`${''.padEnd(22)}${'median'.padStart(8)}${'p10'.padStart(8)}${'p90'.padStart(8)}`);
+  console.log(row('frame ms (page)', frames.map((f) => f.frameMs)));
+  console.log(row('capture ms (page)', frames.map((f) => f.captureMs)));
+  console.log(row('main pass ms (page)', frames.map((f) => f.frameMs - f.captureMs)));
+  console.log(row('wall ms per call', frames.map((f) => f.wallMs)));
+  // GPU timer queries (EXT_disjoint_timer_query), where the page reports them (-1: unavailable).
+  const gpu = frames.filter((f) => f.gpuFrameMs >= 0);
+  if (gpu.length) {
+    console.log(row('gpu frame ms', gpu.map((f) => f.gpuFrameMs)));
+    console.log(row('gpu capture ms', gpu.filter((f) => f.gpuCaptureMs >= 0).map((f) => f.gpuCaptureMs)));
+  } else if (frames.some((f) => f.gpuFrameMs !== undefined)) {
+    console.log('gpu timer queries:    not available in this browser');
+  }
+  console.log('');
+  console.log(`triangles/frame: ${distinct(frames.map((f) => f.triangles))}`);
+  console.log(`draw calls/frame: ${distinct(frames.map((f) => f.drawCalls))}`);
+  console.log(`faces captured/frame: ${distinct(frames.map((f) => f.facesCaptured))}`);
+  console.log(`=> ${(1000 / summary(frames.map((f) => f.wallMs)).median).toFixed(1)} frames/s at the median wall time`);
+}
+
 async function main() {
   const options = parseArgs(process.argv.slice(2));
   if (options.heavy) return heavyBench(options);
@@ -114,18 +184,7 @@ async function main() {
     await page.waitForFunction(() => window.demo !== undefined);
     await page.evaluate(() => window.demo.ready);
 
-    const info = await page.evaluate(() => {
-      const canvas = document.getElementById('canvas');
-      const gl = document.createElement('canvas').getContext('webgl2');
-      let renderer = 'unknown', vendor = 'unknown';
-      if (gl) {
-        const ext = gl.getExtension('WEBGL_debug_renderer_info');
-        renderer = gl.getParameter(ext ? ext.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
-        vendor = gl.getParameter(ext ? ext.UNMASKED_VENDOR_WEBGL : gl.VENDOR);
-        gl.getExtension('WEBGL_lose_context')?.loseContext();
-      }
-      return { renderer, vendor, width: canvas.width, height: canvas.height, userAgent: navigator.userAgent };
-    });
+    const info = await rendererInfo(page);
 
     if (!options.raw) {
       // The page runs the bench itself after demo.ready; each policy's frames in one task.
@@ -145,53 +204,8 @@ async function main() {
       return;
     }
 
-    // All frames in one task: the page's own rAF loop cannot slip frames in between.
-    const frames = await page.evaluate(({ warmup, count }) => {
-      for (let i = 0; i < warmup; ++i) window.demo.frame(1 / 60);
-      const out = [];
-      for (let i = 0; i < count; ++i) {
-        const start = performance.now();
-        const s = window.demo.frame(1 / 60);
-        const wallMs = performance.now() - start;
-        out.push({ wallMs, frameMs: s.frameMs, captureMs: s.captureMs, triangles: s.triangles,
-                   drawCalls: s.drawCalls, facesCaptured: s.facesCaptured, cubeFaceSize: s.cubeFaceSize,
-                   timing: s.timing, policy: s.policy, gpuFrameMs: s.gpuFrameMs, gpuCaptureMs: s.gpuCaptureMs });
-      }
-      return out;
-    }, { warmup: options.warmup, count: options.frames });
-
-    const fmt = (x) => x.toFixed(2).padStart(8);
-    const row = (label, values) => {
-      const s = summary(values);
-      return `${label.padEnd(22)}${fmt(s.median)}${fmt(s.p10)}${fmt(s.p90)}`;
-    };
-    const last = frames[frames.length - 1];
-    console.log(`renderer:        ${info.renderer} (${info.vendor})`);
-    console.log(`browser:         ${info.userAgent}`);
-    console.log(`page:            ${options.query} at ${options.width}x${options.height} CSS px, ` +
-                `drawing buffer ${info.width}x${info.height}, cube faces ${last.cubeFaceSize} px` +
-                (last.policy ? `, capture policy ${last.policy}` : ''));
-    console.log(`frames:          ${frames.length} timed of demo.frame(1/60) after ${options.warmup} warm-up ` +
-                `(timing: ${last.timing})`);
-    console.log('');
-    console.log(`${''.padEnd(22)}${'median'.padStart(8)}${'p10'.padStart(8)}${'p90'.padStart(8)}`);
-    console.log(row('frame ms (page)', frames.map((f) => f.frameMs)));
-    console.log(row('capture ms (page)', frames.map((f) => f.captureMs)));
-    console.log(row('main pass ms (page)', frames.map((f) => f.frameMs - f.captureMs)));
-    console.log(row('wall ms per call', frames.map((f) => f.wallMs)));
-    // GPU timer queries (EXT_disjoint_timer_query), where the page reports them (-1: unavailable).
-    const gpu = frames.filter((f) => f.gpuFrameMs >= 0);
-    if (gpu.length) {
-      console.log(row('gpu frame ms', gpu.map((f) => f.gpuFrameMs)));
-      console.log(row('gpu capture ms', gpu.filter((f) => f.gpuCaptureMs >= 0).map((f) => f.gpuCaptureMs)));
-    } else if (frames.some((f) => f.gpuFrameMs !== undefined)) {
-      console.log('gpu timer queries:    not available in this browser');
-    }
-    console.log('');
-    console.log(`triangles/frame: ${distinct(frames.map((f) => f.triangles))}`);
-    console.log(`draw calls/frame: ${distinct(frames.map((f) => f.drawCalls))}`);
-    console.log(`faces captured/frame: ${distinct(frames.map((f) => f.facesCaptured))}`);
-    console.log(`=> ${(1000 / summary(frames.map((f) => f.wallMs)).median).toFixed(1)} frames/s at the median wall time`);
+    const frames = await timeFrames(page, options);
+    printFrames(frames, info, options);
     for (const p of problems) console.log(`note: ${p}`);
   } finally {
     if (browser) await browser.close();
@@ -227,33 +241,6 @@ const PAGE_HOOKS = () => {
     WebAssembly.instantiateStreaming = function (...args) { return streaming.apply(this, args).then(keep); };
   }
 };
-
-// Resident memory (VmRSS) summed over the renderer processes among `pid`'s descendants.
-function rendererMemory(pid) {
-  const parents = new Map();
-  for (const entry of readdirSync('/proc')) {
-    if (!/^\d+$/.test(entry)) continue;
-    try {
-      const stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
-      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
-      parents.set(Number(entry), Number(fields[1]));
-    } catch { /* gone */ }
-  }
-  const descends = (p) => {
-    for (let q = p, depth = 0; q && depth < 64; q = parents.get(q), ++depth) if (q === pid) return true;
-    return false;
-  };
-  let kb = 0, count = 0;
-  for (const p of parents.keys()) {
-    if (!descends(p)) continue;
-    try {
-      if (!readFileSync(`/proc/${p}/cmdline`, 'utf8').includes('--type=renderer')) continue;
-      const rss = /VmRSS:\s+(\d+) kB/.exec(readFileSync(`/proc/${p}/status`, 'utf8'));
-      if (rss) { kb += Number(rss[1]); ++count; }
-    } catch { /* gone */ }
-  }
-  return { mb: kb / 1024, processes: count };
-}
 
 // The heavy figure in DIR/heavy-bench/ with the other built-in models beside it (as a folder of
 // the course's models would be), made once.

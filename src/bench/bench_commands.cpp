@@ -196,6 +196,29 @@ std::string runPolicyComparison(const BenchCommandOptions& o, const BenchDemoFac
   return {};
 }
 
+namespace {
+
+// Keeps the settings `only` names, in its order (all when it is empty). Returns "" or a message
+// naming the first unknown name and the names there are.
+std::string keepOnly(const std::vector<std::string>& only, std::vector<SweepSetting>& settings) {
+  if (only.empty()) return {};
+  std::vector<SweepSetting> chosen;
+  for (const std::string& name : only) {
+    auto it = std::find_if(settings.begin(), settings.end(),
+                           [&](const SweepSetting& s) { return s.name == name; });
+    if (it == settings.end()) {
+      std::string names;
+      for (const SweepSetting& s : settings) names += (names.empty() ? "" : ", ") + s.name;
+      return "--only: no sweep setting is called " + name + " (there are " + names + ")";
+    }
+    chosen.push_back(*it);
+  }
+  settings = chosen;
+  return {};
+}
+
+}  // namespace
+
 std::string runSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory& makeDemo) {
   SweepOptions options;
   options.frames = o.frames.value_or(benchFramesDefault(BenchMode::Sweep));
@@ -210,20 +233,8 @@ std::string runSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory
     options.tunedTimes.clear();
   }
   std::vector<SweepSetting> settings = sweepSettings();
-  if (!o.only.empty()) {
-    std::vector<SweepSetting> chosen;
-    for (const std::string& name : o.only) {
-      auto it = std::find_if(settings.begin(), settings.end(),
-                             [&](const SweepSetting& s) { return s.name == name; });
-      if (it == settings.end()) {
-        std::string names;
-        for (const SweepSetting& s : settings) names += (names.empty() ? "" : ", ") + s.name;
-        return "--only: no sweep setting is called " + name + " (there are " + names + ")";
-      }
-      chosen.push_back(*it);
-    }
-    settings = chosen;
-  }
+  const std::string unknown = keepOnly(o.only, settings);
+  if (!unknown.empty()) return unknown;
   const SweepDemoFactory factory = [&]() {
     DemoVariant variant;
     variant.defaultAccuracy = true;

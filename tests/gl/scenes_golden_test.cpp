@@ -2,7 +2,6 @@
 // PNG, with the same thresholds as the default scene's test (see golden_compare.h).
 #include <gtest/gtest.h>
 
-
 #include "app/headless_frames.h"
 #include "gl_fixture.h"
 #include "golden_compare.h"

@@ -49,6 +49,23 @@ MeshData bumpyFigure(const Bounds& bounds, int slices, int stacks) {
   return m;
 }
 
+// The camera's rays through the pixel centres of a kSize x kSize frame, from the near plane.
+std::vector<QueryRay> cameraRays(const Scene& scene) {
+  const LookCamera camera(scene.camera);
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(camera.projection(1.0f) * camera.view()));
+  std::vector<QueryRay> rays;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const double nx = (x + 0.5) / kSize * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / kSize * 2.0;
+      const glm::dvec4 n = inverse * glm::dvec4(nx, ny, -1.0, 1.0);
+      const glm::dvec4 f = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
+      const glm::vec3 origin(glm::dvec3(n) / n.w);
+      rays.push_back({origin, glm::normalize(glm::vec3(glm::dvec3(f) / f.w) - origin), 0.0f});
+    }
+  }
+  return rays;
+}
+
 // Compares Embree's first hits with the BVH's for the frame's rays; returns the share that agree.
 double agreement(const Scene& scene, const std::map<std::string, MeshData>& meshes,
                  size_t* rayCount) {
@@ -76,19 +93,7 @@ double agreement(const Scene& scene, const std::map<std::string, MeshData>& mesh
   }
   const SceneBvh bvh = buildSceneBvh(instances);
 
-  // The camera's rays through the pixel centres, from the near plane.
-  const LookCamera camera(scene.camera);
-  const glm::dmat4 inverse = glm::inverse(glm::dmat4(camera.projection(1.0f) * camera.view()));
-  std::vector<QueryRay> rays;
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x) {
-      const double nx = (x + 0.5) / kSize * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / kSize * 2.0;
-      const glm::dvec4 n = inverse * glm::dvec4(nx, ny, -1.0, 1.0);
-      const glm::dvec4 f = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
-      const glm::vec3 origin(glm::dvec3(n) / n.w);
-      rays.push_back({origin, glm::normalize(glm::vec3(glm::dvec3(f) / f.w) - origin), 0.0f});
-    }
-  }
+  std::vector<QueryRay> rays = cameraRays(scene);
   auto primary = embreeFirstHits(scene, lookup, kTime, rays);
   EXPECT_TRUE(primary) << primary.error();
   if (!primary) return 0.0;
