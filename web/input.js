@@ -25,11 +25,12 @@ export const PINCH_PIXELS_PER_STEP = 20;
 // Two fingers moved together this far (CSS px) slide the eye one step (0.1) the other way.
 export const PAN_PIXELS_PER_STEP = 10;
 
+// A press that stays within CLICK_PIXELS of where it began is a click (actions.click: pick a
+// pixel), besides the drag it also is.
+const CLICK_PIXELS = 4;
+
 export function attachInput(canvas, actions) {
   const pointers = new Map();  // pointerId -> { x, y }
-  // A press that stays within kClickPixels of where it began is a click (actions.click: pick a
-  // pixel), besides the drag it also is.
-  const kClickPixels = 4;
   let press = null;  // the one pointer down: { id, x, y } where it began, or null
   let pinch = null;  // with two pointers down: { distance, x, y } (the midpoint) when last seen
   const twoFingers = () => {
@@ -67,7 +68,7 @@ export function attachInput(canvas, actions) {
   const end = (e) => {
     if (!pointers.delete(e.pointerId)) return;
     if (e.type === 'pointerup' && press?.id === e.pointerId &&
-        Math.hypot(e.clientX - press.x, e.clientY - press.y) < kClickPixels) {
+        Math.hypot(e.clientX - press.x, e.clientY - press.y) < CLICK_PIXELS) {
       const box = canvas.getBoundingClientRect();
       actions.click?.(e.clientX - box.left, e.clientY - box.top);
     }

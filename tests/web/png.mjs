@@ -4,43 +4,37 @@ import { inflateSync } from 'node:zlib';
 
 const SIGNATURE = [137, 80, 78, 71, 13, 10, 26, 10];
 
-// Returns { width, height, data } with data an RGBA Uint8Array (width * height * 4).
-export function decodePng(buffer) {
-  const bytes = new Uint8Array(buffer.buffer, buffer.byteOffset, buffer.byteLength);
-  for (let i = 0; i < 8; ++i) {
-    if (bytes[i] !== SIGNATURE[i]) throw new Error('not a PNG file');
-  }
+// The chunks a decode needs: the header's fields, the palette and its alphas, the image data.
+function readChunks(bytes) {
   const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-  let width = 0, height = 0, bitDepth = 0, colourType = 0, interlace = 0;
-  let palette = null, transparency = null;
-  const idat = [];
+  const png = { width: 0, height: 0, bitDepth: 0, colourType: 0, interlace: 0,
+                palette: null, transparency: null, idat: [] };
   for (let pos = 8; pos + 8 <= bytes.length;) {
     const length = view.getUint32(pos);
     const type = String.fromCharCode(...bytes.subarray(pos + 4, pos + 8));
     const body = bytes.subarray(pos + 8, pos + 8 + length);
     if (type === 'IHDR') {
-      width = view.getUint32(pos + 8);
-      height = view.getUint32(pos + 12);
-      bitDepth = body[8];
-      colourType = body[9];
-      interlace = body[12];
+      png.width = view.getUint32(pos + 8);
+      png.height = view.getUint32(pos + 12);
+      png.bitDepth = body[8];
+      png.colourType = body[9];
+      png.interlace = body[12];
     } else if (type === 'PLTE') {
-      palette = body;
+      png.palette = body;
     } else if (type === 'tRNS') {
-      transparency = body;
+      png.transparency = body;
     } else if (type === 'IDAT') {
-      idat.push(body);
+      png.idat.push(body);
     } else if (type === 'IEND') {
       break;
     }
     pos += 12 + length;
   }
-  if (bitDepth !== 8) throw new Error(`unsupported PNG bit depth ${bitDepth}`);
-  if (interlace !== 0) throw new Error('interlaced PNG is not supported');
-  const channels = { 0: 1, 2: 3, 3: 1, 4: 2, 6: 4 }[colourType];
-  if (!channels) throw new Error(`unsupported PNG colour type ${colourType}`);
+  return png;
+}
 
-  const raw = inflateSync(Buffer.concat(idat.map((c) => Buffer.from(c))));
+// The scanlines with their filters undone: `channels` bytes a pixel, rows top first.
+function unfilter(raw, width, height, channels) {
   const stride = width * channels;
   const pixels = new Uint8Array(height * stride);
   let previous = new Uint8Array(stride);
@@ -70,7 +64,24 @@ export function decodePng(buffer) {
     }
     previous = out;
   }
+  return pixels;
+}
 
+// Returns { width, height, data } with data an RGBA Uint8Array (width * height * 4).
+export function decodePng(buffer) {
+  const bytes = new Uint8Array(buffer.buffer, buffer.byteOffset, buffer.byteLength);
+  for (let i = 0; i < 8; ++i) {
+    if (bytes[i] !== SIGNATURE[i]) throw new Error('not a PNG file');
+  }
+  const { width, height, bitDepth, colourType, interlace, palette, transparency, idat } =
+    readChunks(bytes);
+  if (bitDepth !== 8) throw new Error(`unsupported PNG bit depth ${bitDepth}`);
+  if (interlace !== 0) throw new Error('interlaced PNG is not supported');
+  const channels = { 0: 1, 2: 3, 3: 1, 4: 2, 6: 4 }[colourType];
+  if (!channels) throw new Error(`unsupported PNG colour type ${colourType}`);
+
+  const raw = inflateSync(Buffer.concat(idat.map((c) => Buffer.from(c))));
+  const pixels = unfilter(raw, width, height, channels);
   const data = new Uint8Array(width * height * 4);
   for (let i = 0; i < width * height; ++i) {
     const s = i * channels, d = i * 4;
