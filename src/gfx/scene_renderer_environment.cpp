@@ -77,7 +77,7 @@ std::vector<std::string> SceneRenderer::unsetUniforms() const {
     }
   }
   if (skybox_) {
-    for (const std::string& name : skybox_->unsetUniforms()) out.push_back("skybox: " + name);
+    for (const std::string& name : skybox_->unlisted()) out.push_back("skybox: " + name);
   }
   for (const std::string& name : pyramid_.unlisted()) out.push_back("depth pyramid: " + name);
   return out;

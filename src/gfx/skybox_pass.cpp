@@ -65,7 +65,7 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
   return pass;
 }
 
-std::vector<std::string> SkyboxPass::unsetUniforms() const {
+std::vector<std::string> SkyboxPass::unlisted() const {
   std::vector<std::string> out = main_.unlisted();
   for (const std::string& name : capture_.unlisted()) out.push_back(name);
   return out;

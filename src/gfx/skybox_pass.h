@@ -25,7 +25,7 @@ class SkyboxPass {
   void draw(const glm::mat4& projection, const glm::mat4& view, const CaptureState& pass) const;
   GLuint texture() const { return texture_.id(); }
   // Active uniforms of its two programs that their tables do not set (for tests).
-  std::vector<std::string> unsetUniforms() const;
+  std::vector<std::string> unlisted() const;
 
  private:
   // Two variants (capture_output.glsl): the main pass writes the colour alone, a capture its

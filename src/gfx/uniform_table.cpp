@@ -8,8 +8,7 @@ void UniformTable::locate(const ShaderProgram& program) {
   for (UniformSlot* entry : entries_) entry->location_ = program.optionalUniform(entry->name_);
 }
 
-std::vector<std::string> UniformTable::unlisted(
-    GLuint program, const std::vector<std::string>& setElsewhere) const {
+std::vector<std::string> UniformTable::unlisted(GLuint program) const {
   GLint count = 0, longest = 0;
   glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
   glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
@@ -25,10 +24,7 @@ std::vector<std::string> UniformTable::unlisted(
     const size_t bracket = name.find('[');  // arrays are listed as "name[0]"
     if (bracket != std::string::npos) name.resize(bracket);
     const auto named = [&name](const UniformSlot* e) { return name == e->name(); };
-    const auto elsewhere = [&name](const std::string& p) { return name.rfind(p, 0) == 0; };
-    if (std::any_of(entries_.begin(), entries_.end(), named)) continue;
-    if (std::any_of(setElsewhere.begin(), setElsewhere.end(), elsewhere)) continue;
-    out.push_back(name);
+    if (std::none_of(entries_.begin(), entries_.end(), named)) out.push_back(name);
   }
   return out;
 }

@@ -26,10 +26,8 @@ class UniformTable {
 
   // Finds every entry in `program` (-1, which GL ignores, where the variant does not use it).
   void locate(const ShaderProgram& program);
-  // The active uniforms of `program` that no entry names ("u_faceAxis" for "u_faceAxis[0]"),
-  // except those whose names start with one of `setElsewhere`.
-  std::vector<std::string> unlisted(GLuint program,
-                                    const std::vector<std::string>& setElsewhere = {}) const;
+  // The active uniforms of `program` that no entry names ("u_faceAxis" for "u_faceAxis[0]").
+  std::vector<std::string> unlisted(GLuint program) const;
 
  private:
   friend class UniformSlot;
