@@ -87,18 +87,20 @@ void leaveGlassSphere(inout vec3 origin, inout vec3 d) {
 
 #if ROUGH == 1
 uniform samplerCube u_prefiltered;  // the probe's rough levels (gfx/probe_prefilter.h)
-uniform float u_roughLod;           // roughness x roughLevels: the rough level this mirror reads
+uniform float u_roughLod;    // roughness x roughLevels: the rough level the reflection reads
+uniform float u_refractLod;  // rough glass: the level the light through reads (core/ggx.h
+                             // transmissionRoughness x roughLevels)
 
-// A rough mirror: its lobe read from the probe's prefiltered levels around `centre`, the
-// direction the search looked up along (so the distance correction moves the lobe's centre; its
-// width stays as seen from the probe centre). Between rough levels 0 and 1 the sharp reflection
-// the search found (`sharp`, level 0: the capture itself) blends with level 1; above, the
-// filtered cube's own trilinear filtering blends the two levels around u_roughLod (its mip i is
-// rough level i + 1). Both reads always run: no branch for a software rasteriser to pay twice.
-vec3 roughSeen(vec3 sharp, vec3 centre) {
+// A rough lobe read from the probe's prefiltered levels around `centre`, the direction the search
+// looked up along (so the distance correction moves the lobe's centre; its width stays as seen
+// from the probe centre), at rough level `lod`. Between rough levels 0 and 1 the sharp view the
+// search found (`sharp`, level 0: the capture itself) blends with level 1; above, the filtered
+// cube's own trilinear filtering blends the two levels around `lod` (its mip i is rough level
+// i + 1). Both reads always run: no branch for a software rasteriser to pay twice.
+vec3 roughSeen(vec3 sharp, vec3 centre, float lod) {
   vec3 first = textureLod(u_prefiltered, centre, 0.0).rgb;
-  vec3 above = textureLod(u_prefiltered, centre, max(u_roughLod - 1.0, 0.0)).rgb;
-  return u_roughLod < 1.0 ? mix(sharp, first, u_roughLod) : above;
+  vec3 above = textureLod(u_prefiltered, centre, max(lod - 1.0, 0.0)).rgb;
+  return lod < 1.0 ? mix(sharp, first, lod) : above;
 }
 #endif
 
@@ -107,7 +109,7 @@ vec3 roughSeen(vec3 sharp, vec3 centre) {
 vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
   vec3 seen = environmentAlong(origin, R, measured);
 #if ROUGH == 1
-  seen = roughSeen(seen, measured);
+  seen = roughSeen(seen, measured, u_roughLod);
 #endif
   return seen;
 }
@@ -115,10 +117,19 @@ vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
 // Glass at `origin` (view ray I, normal N, refracted ray T, `total` where T is zero): what the
 // reflected ray sees, and what the refracted one sees once out of the object (the reflected
 // one's at total internal reflection, where all the light is reflected: a zero vector is no
-// direction to look a cube map up along). `measured`: the direction of the last lookup.
+// direction to look a cube map up along). `measured`: the direction of the last lookup. Rough
+// (frosted) glass reads both from the prefiltered levels: the reflection as a rough mirror's, the
+// light through around the ray refracted by the smooth surface, at its own, narrower level.
 void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 reflected,
                       out vec3 refracted, out vec3 measured) {
-  reflected = environmentAlong(origin, reflect(I, N), measured);
+  vec3 R = reflect(I, N);
+#if ROUGH == 1
+  R = specularDominantDirection(N, R, u_roughAlpha);
+#endif
+  reflected = environmentAlong(origin, R, measured);
+#if ROUGH == 1
+  reflected = roughSeen(reflected, measured, u_roughLod);
+#endif
   refracted = reflected;
   if (total) return;
   vec3 exitPoint = origin;
@@ -128,5 +139,8 @@ void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 
   if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, T);
 #endif
   refracted = environmentAlong(exitPoint, T, measured);
+#if ROUGH == 1
+  refracted = roughSeen(refracted, measured, u_refractLod);
+#endif
 }
 #endif

@@ -254,6 +254,32 @@ vec3 seenOverLobe(vec3 origin, vec3 R, out vec3 measured) {
   if (weights <= 0.0) return exactReflected(origin, R, measured);
   return sum / weights;
 }
+
+#if EXACT_GENERAL == 1
+// Rough (frosted) glass's light through (core/ggx.h says what it is): the mean, over the
+// u_exactLobeRays microfacet normals h of the fixed set around n, of what the view ray I
+// refracted through h sees once out of the object (its far surface crossed as polished glass).
+// A normal the ray cannot enter through (total reflection, or a ray that does not point into the
+// object) is left out. Point 0's normal is n itself: its ray is the smooth surface's T, whose
+// truth `measured` keeps.
+vec3 transmittedOverLobe(vec3 origin, vec3 I, vec3 n, vec3 T, out vec3 measured) {
+  uint count = uint(max(u_exactLobeRays, 1));
+  vec3 sum = vec3(0.0);
+  float rays = 0.0;
+  measured = T;
+  for (uint k = 0u; k < count; ++k) {
+    vec3 h = ggxHalfVector(hammersley(k, count), u_exactAlpha, n);
+    vec3 t = refract(I, h, u_eta);
+    if (dot(t, t) == 0.0 || dot(t, n) >= 0.0) continue;
+    vec3 truth;
+    sum += exactRadiance(origin, normalize(t), u_exactSelf, true, truth);
+    rays += 1.0;
+    if (k == 0u) measured = truth;
+  }
+  if (rays == 0.0) return exactRadiance(origin, normalize(T), u_exactSelf, true, measured);
+  return sum / rays;
+}
+#endif
 #endif
 
 vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
@@ -268,6 +294,7 @@ vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
 // Glass, traced (environment_lookup.glsl's seenThroughGlass() with rays for lookups): the
 // refracted ray through the object, and the reflected one only where Fresnel weighs it in or the
 // refraction is total (each traced ray costs a walk). `measured`: the last traced ray's truth.
+// Rough glass traces a lobe of rays for each (seenOverLobe, transmittedOverLobe).
 void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 reflected,
                       out vec3 refracted, out vec3 measured) {
   reflected = vec3(0.0);
@@ -277,8 +304,13 @@ void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 
     bool wanted = ray == 0 ? (u_fresnel == 1 || total) : !total;
     if (!wanted) continue;
     vec3 truth;
+#if ROUGH == 1
+    vec3 c = ray == 0 ? seenOverLobe(origin, reflect(I, N), truth)
+                      : transmittedOverLobe(origin, I, N, normalize(T), truth);
+#else
     vec3 c = exactRadiance(origin, ray == 0 ? reflect(I, N) : normalize(T), u_exactSelf, ray == 1,
                            truth);
+#endif
     if (ray == 0) {
       reflected = c;
     } else {

@@ -102,4 +102,9 @@ float roughnessOfLevel(int level, int levels) {
   return levels > 0 ? static_cast<float>(level) / static_cast<float>(levels) : 0.0f;
 }
 
+float transmissionRoughness(float roughness, float ior) {
+  const float r = glm::clamp(roughness, 0.0f, 1.0f);
+  return std::min(r * kTransmissionLobeFit * std::sqrt(std::abs(ior - 1.0f) / 2.0f), 1.0f);
+}
+
 }  // namespace reflect

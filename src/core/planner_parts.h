@@ -36,6 +36,11 @@ int chooseLevel(const PlannedObject& o, const glm::vec3& centre, float pixelsPer
 void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
                    const CaptureContext& context);
 
+// The roughnesses of the lobes a reader reads from prefiltered levels: none for a perfect
+// surface, a rough mirror's own, rough glass's own (its reflection) and its transmission's
+// (transmissionRoughness, core/ggx.h).
+std::vector<float> lobeRoughnesses(const SceneObject::Look& look);
+
 // The prefiltered levels a probe's rough readers need (ProbePlan::roughLevels), and the faces to
 // filter this frame given the levels filtered before (`filtered`, updated).
 void decideFiltering(ProbePlan& probe, const std::vector<PlannedObject>& objects,

@@ -56,8 +56,9 @@ struct SceneObject {
   float base = 0.3f;
   float ior = 1.52f;     // glass (air to glass); also sets Fresnel's F0
   bool fresnel = false;  // Schlick weighting instead of the fixed mix
-  // Mirror: 0 a perfect mirror (the course), up to 1; the environment is averaged over a GGX lobe
-  // of alpha = roughness^2 (core/ggx.h, docs/rough.md). Glass ignores it (not built).
+  // Mirror and glass: 0 a perfect surface (the course), up to 1; what the surface shows is
+  // averaged over a GGX lobe of alpha = roughness^2 (core/ggx.h, docs/rough.md): a mirror's
+  // reflection, and glass's reflection and the light it lets through (frosted glass).
   float roughness = 0.0f;
   // Objects with the same probe group >= 0 share one live probe; -1 = a probe of its own.
   int probeGroup = -1;
@@ -75,8 +76,10 @@ struct SceneObject {
     bool fresnel;
     float roughness;
     bool operator==(const Look&) const = default;
-    // A mirror whose reflection is blurred by a lobe (and so reads a prefiltered probe).
-    bool rough() const { return material == Material::Mirror && roughness > 0.0f; }
+    // A mirror or glass whose view is blurred by a lobe (and so reads a prefiltered probe).
+    bool rough() const {
+      return (material == Material::Mirror || material == Material::Glass) && roughness > 0.0f;
+    }
   };
   Look look() const { return {material, environment, reflection, base, ior, fresnel, roughness}; }
   bool rough() const { return look().rough(); }

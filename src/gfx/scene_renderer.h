@@ -136,6 +136,7 @@ class SceneRenderer {
     Uniform<bool> twoSurfaces{*this, "u_twoSurfaces"};
     Uniform<glm::vec4> glassSphere{*this, "u_glassSphere"};
     Uniform<float> roughLod{*this, "u_roughLod"};
+    Uniform<float> refractLod{*this, "u_refractLod"};
     Uniform<float> roughAlpha{*this, "u_roughAlpha"};
     // environment.frag: the probe and its search
     Uniform<glm::vec3> probeCentre{*this, "u_probeCentre"};

@@ -179,8 +179,9 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
     auto filtered = probe ? prefiltered_.find(probe->reflector) : prefiltered_.end();
     bindTexture(kPrefilteredUnit, GL_TEXTURE_CUBE_MAP,
                 filtered != prefiltered_.end() ? filtered->second.texture() : 0);
-    u.roughLod.set(std::clamp(object.roughness, 0.0f, 1.0f) *
-                   static_cast<float>(usableRoughLevels(accuracy_.roughLevels, faceSize)));
+    const float levels = static_cast<float>(usableRoughLevels(accuracy_.roughLevels, faceSize));
+    u.roughLod.set(std::clamp(object.roughness, 0.0f, 1.0f) * levels);
+    u.refractLod.set(transmissionRoughness(object.roughness, object.ior) * levels);
     u.roughAlpha.set(ggxAlpha(object.roughness));
   }
   glActiveTexture(GL_TEXTURE0);

@@ -30,6 +30,11 @@ Crossing crossGlass(RTCScene only, const std::vector<WorldMesh>& meshes, int obj
   });
 }
 
+uint32_t Tracer::lobeRaysOn(Path path) const {
+  if (path.roughSurfaces == 0) return static_cast<uint32_t>(std::max(lobeSamples, 1));
+  return path.roughSurfaces == 1 ? kNestedLobeRays : 1u;
+}
+
 glm::vec3 Tracer::background(const glm::vec3& dir) const {
   return skybox ? glm::vec3(sampleCubeLinear(*skybox, dir)) : scene.clearColour;
 }
@@ -107,12 +112,10 @@ glm::vec3 Tracer::lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path pa
   const glm::vec3 n = glm::dot(hit.normal, toViewer) < 0.0f ? -hit.normal : hit.normal;
   const float nDotV = glm::dot(n, toViewer);
   const LobeSampler sampler(seed, hit.position, toViewer);
-  const bool first = path.roughMirrors == 0 && lobeSamples > 1;
-  const uint32_t count = first                    ? static_cast<uint32_t>(lobeSamples)
-                         : path.roughMirrors == 1 ? kNestedLobeRays
-                                                  : 1u;
+  const bool first = path.roughSurfaces == 0 && lobeSamples > 1;
+  const uint32_t count = lobeRaysOn(path);
   Path next = path.next();
-  ++next.roughMirrors;
+  ++next.roughSurfaces;
   glm::vec3 sum(0.0f);
   float weights = 0.0f;
   for (uint32_t k = 0; k < count; ++k) {
@@ -135,7 +138,9 @@ glm::vec3 Tracer::lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path pa
                   nullptr);
 }
 
-// shaders/environment.frag (glass), with the refracted ray followed through the object.
+// shaders/environment.frag (glass), with the refracted ray followed through the object. Rough
+// (frosted) glass averages both over its lobe: the reflection as a rough mirror's (lobeAverage),
+// the light through over the refracted rays of the lobe's microfacet normals (transmittedAverage).
 glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, Path path,
                         Directions* dirs) const {
   const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
@@ -144,8 +149,13 @@ glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, Path path,
   const glm::vec3 i = -toViewer;
   const glm::vec3 t = glm::refract(i, hit.normal, 1.0f / n);
   const bool total = glm::dot(t, t) == 0.0f;
+  // What the reflection shows (rough glass: its lobe); `met` (may be null) gets what the
+  // reflected ray itself meets, the lobe's centre.
   const auto reflectedRay = [&](Hit* met) {
-    return radiance(hit.object, hit.position, glm::reflect(i, hit.normal), path.next(), met);
+    const glm::vec3 r = glm::reflect(i, hit.normal);
+    if (!object.rough()) return radiance(hit.object, hit.position, r, path.next(), met);
+    if (met) radiance(hit.object, hit.position, r, path.next(), met);
+    return lobeAverage(hit, toViewer, path);
   };
   glm::vec3 reflected(0.0f);
   glm::vec3 refracted(0.0f);
@@ -161,11 +171,40 @@ glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, Path path,
     Hit met;
     refracted = radiance(hit.object, c.point, c.direction, path.next(), &met);
     if (dirs) *dirs = {glm::normalize(t), trueDirection(hit.object, met, c.direction)};
+    if (object.rough()) refracted = transmittedAverage(hit, toViewer, n, path, refracted);
     if (object.fresnel) reflected = reflectedRay(nullptr);
   }
   return blended(glassBlend(object.colour, reflected, total, object.reflection, object.base,
                             object.fresnel, schlick),
                  refracted);
+}
+
+// Rough glass's light through (core/ggx.h): the mean over microfacet normals h drawn as the
+// lobe's (ggxHalfVector, the points lobeAverage's sampler gives, counted as it counts them) of
+// what the view ray refracted through h sees once it has crossed the object, whose far surface
+// is polished. Normals the ray cannot enter through (total reflection, or a refracted ray that
+// does not point into the object) are left out; with none left, `smooth` (the polished
+// surface's view) stands.
+glm::vec3 Tracer::transmittedAverage(const Hit& hit, const glm::vec3& toViewer, float ior,
+                                     Path path, const glm::vec3& smooth) const {
+  const float alpha = ggxAlpha(scene.objects[static_cast<size_t>(hit.object)].roughness);
+  const glm::vec3 n = glm::dot(hit.normal, toViewer) < 0.0f ? -hit.normal : hit.normal;
+  const LobeSampler sampler(seed, hit.position, toViewer);
+  const uint32_t count = lobeRaysOn(path);
+  Path next = path.next();
+  ++next.roughSurfaces;
+  glm::vec3 sum(0.0f);
+  uint32_t rays = 0;
+  for (uint32_t k = 0; k < count; ++k) {
+    const glm::vec3 h = ggxHalfVector(sampler.point(k, count), alpha, n);
+    const glm::vec3 t = glm::refract(-toViewer, h, 1.0f / ior);
+    if (glm::dot(t, t) == 0.0f || glm::dot(t, n) >= 0.0f) continue;
+    const Crossing c =
+        crossGlass(world.only(hit.object), meshes, hit.object, ior, hit.position, glm::normalize(t));
+    sum += radiance(hit.object, c.point, c.direction, next, nullptr);
+    ++rays;
+  }
+  return rays > 0 ? sum / static_cast<float>(rays) : smooth;
 }
 
 // shaders/cube_textured.frag: the ray from the probe centre along the object-space position.

@@ -31,12 +31,12 @@ struct Directions {
 };
 
 // Where a ray is on its way from the eye: the reflective surfaces it has left (the bounce limit
-// counts them), and of those the rough mirrors, whose lobes already average it over many rays
-// (a rough mirror it meets then traces fewer: Tracer::lobeAverage).
+// counts them), and of those the rough ones (mirrors and glass), whose lobes already average it
+// over many rays (a rough surface it meets then traces fewer: Tracer::lobeAverage).
 struct Path {
   int depth = 0;
-  int roughMirrors = 0;
-  Path next() const { return {depth + 1, roughMirrors}; }
+  int roughSurfaces = 0;
+  Path next() const { return {depth + 1, roughSurfaces}; }
 };
 
 struct Tracer {
@@ -71,9 +71,14 @@ struct Tracer {
 
  private:
   glm::vec3 trueDirection(int object, const Hit& met, const glm::vec3& dir) const;
+  // The lobe rays a rough surface traces at this point of a path: lobeSamples for the first rough
+  // surface, kNestedLobeRays for one seen in its lobe, then one (lobeAverage() says why).
+  uint32_t lobeRaysOn(Path path) const;
   glm::vec3 mirror(const Hit& hit, const glm::vec3& toViewer, Path path, Directions* dirs) const;
   glm::vec3 lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path path) const;
   glm::vec3 glass(const Hit& hit, const glm::vec3& toViewer, Path path, Directions* dirs) const;
+  glm::vec3 transmittedAverage(const Hit& hit, const glm::vec3& toViewer, float ior, Path path,
+                               const glm::vec3& smooth) const;
   glm::vec3 cubeTextured(const Hit& hit, Path path, Directions* dirs) const;
 };
 

@@ -98,5 +98,16 @@ TEST(Ggx, MeanWeightIsTheDirectionalAlbedo) {
   EXPECT_GT(meanWeight(45.0, 0.25f, 4096), meanWeight(45.0, 1.0f, 4096));
 }
 
+// The light through frosted glass is read at a narrower level than its reflection (core/ggx.h
+// says why): roughness x 0.75 x sqrt(|n - 1| / 2), none at n = 1, held to 1.
+TEST(Ggx, TheLightThroughFrostedGlassReadsANarrowerLevel) {
+  EXPECT_FLOAT_EQ(transmissionRoughness(1.0f, 1.5f), 0.375f);
+  EXPECT_FLOAT_EQ(transmissionRoughness(0.4f, 1.5f), 0.15f);
+  EXPECT_FLOAT_EQ(transmissionRoughness(0.0f, 1.5f), 0.0f);
+  EXPECT_FLOAT_EQ(transmissionRoughness(1.0f, 1.0f), 0.0f);
+  EXPECT_FLOAT_EQ(transmissionRoughness(1.0f, 3.0f), 0.75f);
+  EXPECT_FLOAT_EQ(transmissionRoughness(2.0f, 4.0f), 0.75f * std::sqrt(1.5f));  // roughness held
+}
+
 }  // namespace
 }  // namespace reflect

@@ -1,4 +1,4 @@
-// Rough mirrors in the frame planner: which prefiltered levels a probe keeps, when they are
+// Rough mirrors and frosted glass in the frame planner: which prefiltered levels a probe keeps, when they are
 // filtered, and what the method costs count for them. Nothing is filtered where nothing is rough.
 #include <gtest/gtest.h>
 
@@ -61,6 +61,25 @@ TEST(RoughPlanning, EachProbeKeepsTheLevelsItsReadersNeed) {
   EXPECT_EQ(plan.probes[2].roughLevels, (std::vector<int>{4}));
   EXPECT_EQ(plan.probes[0].filterFaces, 0u);
   EXPECT_EQ(plan.probes[1].filterFaces, 0x3Fu);  // first frame: captured, so filtered
+}
+
+// Frosted glass reads two lobes: its reflection's (roughness 0.8 x 5 = level 4) and the light
+// through it's, narrower (transmissionRoughness: 0.8 x 0.75 x sqrt(0.5 / 2) = 0.3, x 5 = 1.5:
+// levels 1 and 2). Polished glass reads none.
+TEST(RoughPlanning, FrostedGlassKeepsTheLevelsOfItsReflectionAndOfTheLightThrough) {
+  PlannedObject frosted = mirrorAt({0, 0, 0}, 0.8f);
+  frosted.look.material = Material::Glass;
+  frosted.look.ior = 1.5f;
+  PlannedObject polished = mirrorAt({4, 0, 0}, 0.0f);
+  polished.look.material = Material::Glass;
+  EXPECT_FLOAT_EQ(transmissionRoughness(0.8f, 1.5f), 0.3f);
+  FramePlanner planner;
+  const FramePlan plan = planner.plan({frosted, polished, boxAt({0, 0, 5})}, capturing(5), {});
+  ASSERT_EQ(plan.probes.size(), 2u);
+  EXPECT_EQ(plan.probes[0].roughLevels, (std::vector<int>{1, 2, 4}));
+  EXPECT_EQ(plan.probes[0].filterFaces, 0x3Fu);
+  EXPECT_TRUE(plan.probes[1].roughLevels.empty());
+  EXPECT_EQ(plan.probes[1].filterFaces, 0u);
 }
 
 TEST(RoughPlanning, FiltersWhenAFaceIsRedrawnOrTheLevelsChange) {
