@@ -200,6 +200,7 @@ Result<PixelExplanation> explainPixel(Demo& demo, int x, int y, int width, int h
   if (e.object >= 0) {
     e.mesh = demo.scene().objects[static_cast<size_t>(e.object)].mesh;
     e.material = demo.scene().objects[static_cast<size_t>(e.object)].material;
+    e.lobe = explainLobe(demo, e.object);
   }
   if (!e.message.empty()) return e;
 

@@ -27,6 +27,7 @@
 #include <glm/glm.hpp>
 
 #include "app/demo.h"
+#include "app/pixel_lobe.h"
 #include "core/pixel_trace.h"
 
 namespace reflect {
@@ -42,7 +43,8 @@ struct PixelExplanation {
   int object = -1;  // what the view ray meets (-1: nothing)
   std::string mesh;
   Material material = Material::Phong;
-  std::string search;  // the lookup the renderer drew it with: plain, linear or hierarchical
+  std::string search;    // the lookup the renderer drew it with: plain, linear or hierarchical
+  LobeExplanation lobe;  // a rough mirror's lobe (pixel_lobe.h), also where message is set
   glm::vec3 eye{0.0f};
   glm::vec3 surfacePoint{0.0f};
   glm::vec3 normal{0.0f};     // the interpolated vertex normal, unit

@@ -57,6 +57,7 @@ std::vector<std::string> explanationLines(const PixelExplanation& e) {
       format("pixel %d,%d of %dx%d at t=%.3f s", e.x, e.y, e.width, e.height, e.seconds));
   if (!e.message.empty()) {
     lines.push_back("  " + e.message);
+    for (const std::string& line : lobeLines(e.lobe, false)) lines.push_back(line);
     return lines;
   }
   lines.push_back("  object " + std::to_string(e.object + 1) + " (" + e.mesh + "), " +
@@ -65,6 +66,7 @@ std::vector<std::string> explanationLines(const PixelExplanation& e) {
   lines.push_back("  view ray " + point(e.viewRay) + " meets the surface at " +
                   point(e.surfacePoint) + ", normal " + point(e.normal));
   lines.push_back("  reflected: direction " + point(e.reflected));
+  for (const std::string& line : lobeLines(e.lobe, true)) lines.push_back(line);
   if (e.material == Material::Glass) glassLines(e, lines);
   lines.push_back("  probe centre " + point(e.probeCentre));
   lines.push_back("  course lookup: direction " + point(e.courseDirection) +

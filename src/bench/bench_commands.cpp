@@ -226,6 +226,7 @@ std::string runSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory
     options.width = o.sweepSize->x;
     options.height = o.sweepSize->y;
   }
+  if (o.lobeSamples) options.reference.lobeSamples = *o.lobeSamples;
   // Times given: they are reported; the tuning times (where the constants were chosen, on the
   // default scene) are not measured.
   if (!o.times.empty()) {

@@ -34,6 +34,7 @@ struct BenchCommandOptions {
   std::string csv;                      // the sweep: CSV output ("" = none)
   std::string svg;                      // the sweep: SVG plot output ("" = none)
   double budgetMs = 0.0;                // --budget: the frame budget "auto" picks within
+  std::optional<int> lobeSamples;       // the sweep: the reference's lobe rays (unset: its own)
 };
 
 enum class BenchMode {

@@ -139,7 +139,7 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     const auto key = std::make_pair(t, demo.accuracySettings().captureAtOrigin);
     auto it = references.find(key);
     if (it == references.end()) {
-      Result<ReferenceFrame> frame = referenceFor(demo, t, o.width, o.height);
+      Result<ReferenceFrame> frame = referenceFor(demo, t, o.width, o.height, o.reference);
       if (!frame) return Result<const ReferenceFrame*>::failure(frame.error());
       it = references.emplace(key, frame.take()).first;
     }

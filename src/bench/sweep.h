@@ -13,6 +13,7 @@
 #include "app/demo.h"
 #include "core/accuracy_settings.h"
 #include "core/result.h"
+#include "reference/reference_renderer.h"
 
 namespace reflect {
 
@@ -53,6 +54,7 @@ struct SweepOptions {
   std::vector<double> tunedTimes = {0, 1, 2, 3, 4, 5, 6, 7};
   // ...and the table reports these.
   std::vector<double> heldOutTimes = {0.5, 1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 7.5};
+  ReferenceOptions reference;  // the references' Monte Carlo (rough mirrors' lobe samples)
 };
 
 using SweepDemoFactory = std::function<Result<std::unique_ptr<Demo>>()>;

@@ -177,5 +177,71 @@ TEST(PixelExplain, PixelsWithNothingToExplainSaySoPlainly) {
   EXPECT_NE(t.value().message.find("traced exactly"), std::string::npos) << t.value().message;
 }
 
+// rough-spheres at 400 x 400, t = 2 s: a pixel below the middle of the roughness-0.5 sphere
+// (object 6) and one of the perfect sphere (object 4) (reflect explain --scene rough-spheres
+// --size 400x400 --time 2 --pixel X,Y).
+constexpr glm::ivec2 kHalfRoughPixel{200, 225};
+constexpr glm::ivec2 kPerfectPixel{43, 225};
+
+std::string joinedLines(const PixelExplanation& e) {
+  std::string text;
+  for (const std::string& line : explanationLines(e)) text += line + "\n";
+  return text;
+}
+
+Scene roughSpheres() {
+  Result<Scene> scene = loadNamedScene("rough-spheres");
+  EXPECT_TRUE(scene) << scene.error();
+  return scene ? scene.take() : Scene{};
+}
+
+// Captured (search: hierarchical): roughness 0.5 reads level 0.5 x 5 = 2.5 of the 128-texel
+// probe, between level 2 (32 texels) and 3 (16); the rays explained are the lobe's centre.
+TEST(PixelExplain, ARoughMirrorNamesItsLobeAndTheLevelsRead) {
+  auto demo = testing::makeCapturingDemo(roughSpheres());
+  Result<PixelExplanation> e = explainAt(*demo, 2.0, kHalfRoughPixel);
+  ASSERT_TRUE(e) << e.error();
+  ASSERT_EQ(e.value().message, "");
+  EXPECT_EQ(e.value().object, 5);
+  const LobeExplanation& lobe = e.value().lobe;
+  EXPECT_EQ(lobe.source, LobeExplanation::Source::Prefiltered);
+  EXPECT_EQ(lobe.roughness, 0.5f);
+  EXPECT_EQ(lobe.alpha, 0.25f);
+  EXPECT_EQ(lobe.levels.lower, 2);
+  EXPECT_EQ(lobe.levels.upper, 3);
+  const std::string text = joinedLines(e.value());
+  EXPECT_NE(text.find("roughness 0.50, GGX alpha 0.2500"), std::string::npos) << text;
+  EXPECT_NE(text.find("roughness 0.50 x 5 levels = level 2.50, blended trilinearly between "
+                      "level 2 (32x32 faces) and level 3 (16x16 faces)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("are the lobe's centre"), std::string::npos) << text;
+
+  Result<PixelExplanation> perfect = explainAt(*demo, 2.0, kPerfectPixel);
+  ASSERT_TRUE(perfect) << perfect.error();
+  ASSERT_EQ(perfect.value().message, "");
+  EXPECT_EQ(perfect.value().object, 3);
+  EXPECT_EQ(perfect.value().lobe.source, LobeExplanation::Source::None);
+  const std::string sharp = joinedLines(perfect.value());
+  EXPECT_EQ(sharp.find("lobe"), std::string::npos) << sharp;
+  EXPECT_EQ(sharp.find("rough"), std::string::npos) << sharp;
+}
+
+// search: exact traces the rough sphere: its lobe rays are named, with nothing drawn.
+TEST(PixelExplain, ATracedRoughMirrorNamesItsLobeRays) {
+  auto demo = testing::makeDemo(roughSpheres());
+  AccuracySettings exact;
+  exact.search = Search::Exact;
+  ASSERT_EQ(demo->setAccuracySettings(exact), "");
+  Result<PixelExplanation> e = explainAt(*demo, 2.0, kHalfRoughPixel);
+  ASSERT_TRUE(e) << e.error();
+  EXPECT_NE(e.value().message.find("traced exactly"), std::string::npos) << e.value().message;
+  EXPECT_EQ(e.value().lobe.source, LobeExplanation::Source::Traced);
+  const std::string text = joinedLines(e.value());
+  EXPECT_NE(text.find("roughness 0.50, GGX alpha 0.2500"), std::string::npos) << text;
+  EXPECT_NE(text.find("traced with 16 lobe rays"), std::string::npos) << text;
+  EXPECT_EQ(text.find("lobe's centre"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace reflect

@@ -4,6 +4,7 @@
 // roughness 0 changes nothing, in either, against frames the code before rough mirrors made.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "app/headless_frames.h"
@@ -141,6 +142,33 @@ TEST(RoughReference, RoughnessZeroIsThePerfectMirrorOfBefore) {
   const ReferenceFrame reference = referenceWithSeed(*demo, 1);
   EXPECT_EQ(reference.image.pixels, referenceWithSeed(*demo, 7, 1).image.pixels);
   EXPECT_EQ(reference.image.pixels, golden("reference").pixels);
+}
+
+// ReferenceOptions::lobeSamples (reflect's --lobe-samples) reaches the tracer: 16 lobe rays
+// instead of 512 change the rough spheres' pixels and nothing that is not a reflector.
+TEST(RoughReference, LobeSamplesReachTheTracer) {
+  const Scene scene = roughSpheres();
+  auto demo = exactDemo(scene);
+  const ReferenceFrame many = referenceWithSeed(*demo, 1);
+  const ReferenceFrame few = referenceWithSeed(*demo, 1, 16);
+  EXPECT_EQ(few.options.lobeSamples, 16);
+  int roughPixels = 0, roughChanged = 0, plainChanged = 0;
+  for (size_t p = 0; p < many.objectIds.size(); ++p) {
+    const int id = many.objectIds[p];
+    const bool changed =
+        !std::equal(many.image.pixels.begin() + 4 * p, many.image.pixels.begin() + 4 * p + 4,
+                    few.image.pixels.begin() + 4 * p);
+    if (!many.reflectorMask[p]) {
+      plainChanged += changed ? 1 : 0;
+    } else if (id >= 0 && scene.objects[static_cast<size_t>(id)].roughness > 0.0f) {
+      ++roughPixels;
+      roughChanged += changed ? 1 : 0;
+    }
+  }
+  std::printf("rough pixels %d, changed by 16 lobe samples %d\n", roughPixels, roughChanged);
+  EXPECT_GT(roughPixels, 500);
+  EXPECT_GT(roughChanged, roughPixels / 2);
+  EXPECT_EQ(plainChanged, 0);
 }
 
 TEST(RoughExactMode, RoughnessZeroIsThePerfectMirrorOfBefore) {

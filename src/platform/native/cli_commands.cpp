@@ -26,6 +26,14 @@ CLI::Option* addWholeNumber(CLI::App& app, CliWording& wording, const SettingInf
   return option;
 }
 
+// --lobe-samples: the reference's lobe rays a rough pixel (ReferenceOptions::lobeSamples).
+CLI::Option* addLobeSamples(CLI::App& c, CliOptions& o, CliWording& w, const std::string& when) {
+  return addWholeNumber(c, w, wholeNumberInfo("lobeSamples", 1, 4096),
+                        "lobe rays the reference traces a rough mirror's pixel " + when +
+                            " (1..4096; default 512; its noise falls as 1/sqrt(N))",
+                        [&o](int n) { o.lobeSamples = n; });
+}
+
 void defineView(CLI::App& c, CliOptions& o, CliWording& w) {
   const SettingInfo cube = wholeNumberInfo("cube", 1, Demo::kMaxCubeFaceSize);
   addWholeNumber(c, w, cube,
@@ -184,6 +192,7 @@ void defineSweepOptions(CLI::App& c, CliOptions& o, CliWording& w) {
                    "with --sweep: write a plot of error against time with the Pareto front"),
       w, "FILE", "a file name")
       ->needs(sweep);
+  addLobeSamples(c, o, w, "in the sweep's references")->needs(sweep);
 }
 
 }  // namespace
@@ -201,6 +210,7 @@ void defineRender(CLI::App& c, CliOptions& o, CliWording& w) {
   pngFile("--reference", o.referenceOut,
           "also write the exact (ray-traced, Embree) frame and print the reflector's error "
           "against it");
+  addLobeSamples(c, o, w, "with --reference")->needs(c.get_option("--reference"));
   pngFile("--error-view", o.errorViewOut,
           "also write the error view of the frame (a heat map of each mirror and glass pixel's "
           "difference from the exact mode) and print the reflector PSNR and the pixels off by "

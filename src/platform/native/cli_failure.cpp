@@ -73,6 +73,11 @@ std::string cliFailureMessage(const CliWording& wording, const CLI::App& app,
     }
   }
   if (kind == "RequiredError" && command->get_name() == "bench") return modesMessage(*command);
+  if (kind == "RequiresError" && optionNamed(error, ' ') == "--lobe-samples") {
+    const bool bench = command->get_name() == "bench";
+    return command->get_name() + ": --lobe-samples sets the reference's lobe rays; add " +
+           (bench ? "--sweep" : "--reference FILE");
+  }
   if (kind == "RequiresError") {  // --csv and --svg need --sweep
     return "bench: " + optionNamed(error, ' ') + " is the sweep's output; add --sweep";
   }

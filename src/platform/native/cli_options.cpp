@@ -88,6 +88,7 @@ BenchCommandOptions CliOptions::benchOptions() const {
   b.csv = csv;
   b.svg = svg;
   b.budgetMs = view.budget;
+  b.lobeSamples = lobeSamples;
   return b;
 }
 

@@ -60,6 +60,10 @@ struct CliOptions {
   ViewSettings view;              // bench: the budget (--budget); render: --faces-channel
   bool budgetSet = false;         // bench: pick the most accurate search within view.budget ms
 
+  // render --reference, bench --sweep: the reference's lobe rays a rough pixel (unset: its own
+  // default, ReferenceOptions::lobeSamples).
+  std::optional<int> lobeSamples;
+
   // bench: which mode the options select, and the options it takes.
   BenchMode benchMode() const;
   BenchCommandOptions benchOptions() const;

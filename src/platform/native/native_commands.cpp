@@ -128,7 +128,9 @@ std::string printReferenceNoise(const Demo& demo, const CliOptions& o,
 
 // The reference of the frame (--reference), and its error.
 std::string writeReference(Demo& demo, const CliOptions& o) {
-  auto reference = referenceFor(demo, o.time, o.width, o.height);
+  ReferenceOptions options;
+  if (o.lobeSamples) options.lobeSamples = *o.lobeSamples;
+  auto reference = referenceFor(demo, o.time, o.width, o.height, options);
   if (!reference) return reference.error();
   auto report = measureAccuracy(demo, o.time, o.width, o.height, &reference.value());
   if (!report) return report.error();

@@ -1,0 +1,119 @@
+#include "app/pixel_lobe.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace reflect {
+namespace {
+
+std::string format(const char* pattern, auto... values) {
+  char line[256];
+  std::snprintf(line, sizeof line, pattern, values...);
+  return line;
+}
+
+bool has(const std::vector<int>& levels, int level) {
+  return level == 0 || std::find(levels.begin(), levels.end(), level) != levels.end();
+}
+
+// Where the probe's levels come from: its capture's face size, as the renderer binds it.
+void readPrefiltered(const Demo& demo, const ProbePlan& probe, LobeExplanation& lobe) {
+  const CubeCaptureTarget* target =
+      demo.renderer() ? demo.renderer()->probeTarget(probe.reflector) : nullptr;
+  const int faceSize = target ? target->faceSize() : 0;
+  lobe.usableLevels = usableRoughLevels(demo.accuracySettings().roughLevels, faceSize);
+  lobe.level = std::clamp(lobe.roughness, 0.0f, 1.0f) * static_cast<float>(lobe.usableLevels);
+  lobe.levels = roughLevelsFor(lobe.roughness, lobe.usableLevels);
+  lobe.lowerFaceSize = std::max(faceSize >> lobe.levels.lower, 1);
+  lobe.upperFaceSize = std::max(faceSize >> lobe.levels.upper, 1);
+  const bool filtered = target != nullptr && has(probe.roughLevels, lobe.levels.lower) &&
+                        has(probe.roughLevels, lobe.levels.upper);
+  lobe.source =
+      filtered ? LobeExplanation::Source::Prefiltered : LobeExplanation::Source::NotFiltered;
+}
+
+std::string levelName(int level, int faceSize) {
+  return format("level %d (%dx%d faces)", level, faceSize, faceSize);
+}
+
+// Which levels the lookup blends: the sharp reflection and level 1 below level 1 (the
+// renderer's own mix), a single level at the top, otherwise the two around it (trilinear).
+std::string levelsRead(const LobeExplanation& lobe) {
+  const std::string upper = levelName(lobe.levels.upper, lobe.upperFaceSize);
+  if (lobe.levels.lower == 0) {
+    return format(
+               ", between the sharp reflection its search found (level 0, the capture itself, "
+               "%dx%d faces) and ",
+               lobe.lowerFaceSize, lobe.lowerFaceSize) +
+           upper;
+  }
+  if (lobe.levels.lower == lobe.levels.upper) return ", " + upper + " alone";
+  return ", blended trilinearly between " + levelName(lobe.levels.lower, lobe.lowerFaceSize) +
+         " and " + upper;
+}
+
+std::string howRead(const LobeExplanation& lobe) {
+  using Source = LobeExplanation::Source;
+  switch (lobe.source) {
+    case Source::Traced:
+      return format(
+          "  lobe: traced with %d lobe rays (lobeRays) around the reflected ray, each weighed "
+          "by the GGX reflectance (search: exact, or planned found tracing cheaper)",
+          lobe.lobeRays);
+    case Source::SharpSky:
+      return "  lobe: not applied: the static skybox is read sharp (only live probes are "
+             "prefiltered)";
+    case Source::NotFiltered:
+      return format(
+          "  lobe: level %.2f (roughness x %d levels) was not prefiltered for this probe this "
+          "frame",
+          lobe.level, lobe.usableLevels);
+    default:
+      break;
+  }
+  return format(
+             "  lobe: read from the probe's prefiltered levels: roughness %.2f x %d levels = "
+             "level %.2f",
+             lobe.roughness, lobe.usableLevels, lobe.level) +
+         levelsRead(lobe);
+}
+
+}  // namespace
+
+LobeExplanation explainLobe(const Demo& demo, int object) {
+  LobeExplanation lobe;
+  if (object < 0 || object >= static_cast<int>(demo.scene().objects.size())) return lobe;
+  const SceneObject& o = demo.scene().objects[static_cast<size_t>(object)];
+  if (o.material != Material::Mirror || o.roughness <= 0.0f) return lobe;
+  lobe.roughness = o.roughness;
+  lobe.alpha = ggxAlpha(o.roughness);
+  lobe.lobeRays = demo.accuracySettings().lobeRays;
+  if (o.environment == Environment::Skybox) {
+    lobe.source = LobeExplanation::Source::SharpSky;
+  } else if (demo.lastPlan().traces(object)) {
+    lobe.source = LobeExplanation::Source::Traced;
+  } else if (const ProbePlan* probe = demo.lastPlan().probeOf(object)) {
+    readPrefiltered(demo, *probe, lobe);
+  } else {
+    lobe.source = LobeExplanation::Source::NotFiltered;
+  }
+  return lobe;
+}
+
+std::vector<std::string> lobeLines(const LobeExplanation& lobe, bool raysShown) {
+  if (lobe.source == LobeExplanation::Source::None) return {};
+  std::vector<std::string> lines;
+  lines.push_back(
+      format("  rough mirror: roughness %.2f, GGX alpha %.4f (roughness squared): it sees the "
+             "environment averaged over the GGX lobe around the reflected ray",
+             lobe.roughness, lobe.alpha));
+  lines.push_back(howRead(lobe));
+  if (raysShown) {
+    lines.push_back(
+        "  the rays and lookups below (and the lines the page draws) are the lobe's centre: "
+        "the reflected ray, and where its search lands");
+  }
+  return lines;
+}
+
+}  // namespace reflect

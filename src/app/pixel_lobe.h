@@ -1,0 +1,44 @@
+// Pick a pixel on a rough mirror (docs/rough.md): which GGX lobe the pixel averages and how the
+// frame drew it: read from the probe's prefiltered levels (which two, at what face sizes) or
+// traced with lobe rays; or the static sky, read sharp. The explanation's rays and lookups follow
+// the lobe's centre (the reflected ray); these lines say what lies around it. The facts are the
+// renderer's own: the accuracy settings, the frame plan and the probe's cube as captured.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/demo.h"
+#include "core/ggx.h"
+
+namespace reflect {
+
+struct LobeExplanation {
+  enum class Source {
+    None,         // a perfect mirror (roughness 0), glass or not a mirror: no lobe
+    Prefiltered,  // read from the probe's prefiltered levels
+    Traced,       // traced with lobeRays rays (search: exact, or planned found tracing cheaper)
+    SharpSky,     // the static skybox, read sharp: only live probes are prefiltered
+    NotFiltered,  // a probe without the levels this roughness reads (none captured this frame)
+  };
+  Source source = Source::None;
+  float roughness = 0.0f;
+  float alpha = 0.0f;  // ggxAlpha(roughness)
+  // Prefiltered: the level read, roughness x usableLevels (as the renderer's u_roughLod), the two
+  // levels around it (0: the capture itself) and their face sizes.
+  int usableLevels = 0;
+  float level = 0.0f;
+  RoughLevels levels;
+  int lowerFaceSize = 0;
+  int upperFaceSize = 0;
+  int lobeRays = 0;  // traced: AccuracySettings::lobeRays
+};
+
+// The lobe of `object` in the frame the demo drew last (Source::None where it has none).
+LobeExplanation explainLobe(const Demo& demo, int object);
+
+// The lines `reflect explain` prints (and the page's pick panel shows) for the lobe: none where
+// there is no lobe. `raysShown`: the explanation draws and lists the lobe centre's rays.
+std::vector<std::string> lobeLines(const LobeExplanation& lobe, bool raysShown);
+
+}  // namespace reflect
