@@ -199,8 +199,8 @@ glm::vec3 Tracer::transmittedAverage(const Hit& hit, const glm::vec3& toViewer, 
     const glm::vec3 h = ggxHalfVector(sampler.point(k, count), alpha, n);
     const glm::vec3 t = glm::refract(-toViewer, h, 1.0f / ior);
     if (glm::dot(t, t) == 0.0f || glm::dot(t, n) >= 0.0f) continue;
-    const Crossing c =
-        crossGlass(world.only(hit.object), meshes, hit.object, ior, hit.position, glm::normalize(t));
+    const Crossing c = crossGlass(world.only(hit.object), meshes, hit.object, ior, hit.position,
+                                  glm::normalize(t));
     sum += radiance(hit.object, c.point, c.direction, next, nullptr);
     ++rays;
   }
