@@ -344,10 +344,11 @@ const std::vector<SettingField<SceneObject>>& materialFields() {
       {flag("fresnel", "Fresnel", "Schlick's Fresnel weighting instead of the fixed mix"),
        [](const O& o) { return json(o.fresnel); },
        [](O& o, const json& v) { o.fresnel = v.get<bool>(); }},
-      {number("roughness", "roughness",
-              "mirror and glass: 0 a perfect surface, up to 1; what it reflects (and glass lets "
-              "through) is averaged over a GGX lobe (a prefiltered probe, or lobe rays when traced)",
-              0, 1),
+      {number(
+           "roughness", "roughness",
+           "mirror and glass: 0 a perfect surface, up to 1; what it reflects (and glass lets "
+           "through) is averaged over a GGX lobe (a prefiltered probe, or lobe rays when traced)",
+           0, 1),
        [](const O& o) { return json(o.roughness); },
        [](O& o, const json& v) { o.roughness = v.get<float>(); }},
       {choice("environment", "environment",
