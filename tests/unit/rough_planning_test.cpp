@@ -1,5 +1,6 @@
-// Rough mirrors and frosted glass in the frame planner: which prefiltered levels a probe keeps, when they are
-// filtered, and what the method costs count for them. Nothing is filtered where nothing is rough.
+// Rough mirrors and frosted glass in the frame planner: which prefiltered levels a probe keeps,
+// when they are filtered, and what the method costs count for them. Nothing is filtered where
+// nothing is rough.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
