@@ -58,8 +58,8 @@ const ReferenceFrame& reference() {
 
 // What the same spheres look like with roughness ignored, against the frosted reference.
 AccuracyReport roughnessIgnored(bool capturing) {
-  auto demo = capturing ? testing::makeCapturingDemo(frostedGlass(true))
-                        : exactDemo(frostedGlass(true));
+  auto demo =
+      capturing ? testing::makeCapturingDemo(frostedGlass(true)) : exactDemo(frostedGlass(true));
   auto image = renderFrameAt(*demo, kTime, kWidth, kHeight);
   EXPECT_TRUE(image) << image.error();
   auto report = compareWithReference(image ? image.take() : RgbaImage{}, reference());
