@@ -23,6 +23,7 @@ void readPrefiltered(const Demo& demo, const ProbePlan& probe, LobeExplanation& 
   const int faceSize = target ? target->faceSize() : 0;
   lobe.usableLevels = usableRoughLevels(demo.accuracySettings().roughLevels, faceSize);
   lobe.level = std::clamp(lobe.roughness, 0.0f, 1.0f) * static_cast<float>(lobe.usableLevels);
+  lobe.throughLevel = lobe.throughRoughness * static_cast<float>(lobe.usableLevels);
   lobe.levels = roughLevelsFor(lobe.roughness, lobe.usableLevels);
   lobe.lowerFaceSize = std::max(faceSize >> lobe.levels.lower, 1);
   lobe.upperFaceSize = std::max(faceSize >> lobe.levels.upper, 1);
@@ -84,8 +85,10 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
   LobeExplanation lobe;
   if (object < 0 || object >= static_cast<int>(demo.scene().objects.size())) return lobe;
   const SceneObject& o = demo.scene().objects[static_cast<size_t>(object)];
-  if (o.material != Material::Mirror || o.roughness <= 0.0f) return lobe;
+  if (!o.rough()) return lobe;
   lobe.roughness = o.roughness;
+  lobe.glass = o.material == Material::Glass;
+  lobe.throughRoughness = lobe.glass ? transmissionRoughness(o.roughness, o.ior) : 0.0f;
   lobe.alpha = ggxAlpha(o.roughness);
   lobe.lobeRays = demo.accuracySettings().lobeRays;
   if (o.environment == Environment::Skybox) {
@@ -103,11 +106,30 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
 std::vector<std::string> lobeLines(const LobeExplanation& lobe, bool raysShown) {
   if (lobe.source == LobeExplanation::Source::None) return {};
   std::vector<std::string> lines;
-  lines.push_back(
-      format("  rough mirror: roughness %.2f, GGX alpha %.4f (roughness squared): it sees the "
-             "environment averaged over the GGX lobe around the reflected ray",
-             lobe.roughness, lobe.alpha));
+  if (lobe.glass) {
+    lines.push_back(
+        format("  frosted glass: roughness %.2f, GGX alpha %.4f (roughness squared): its "
+               "reflection is averaged over the GGX lobe around the reflected ray, the light "
+               "through it over the view ray refracted through the lobe's microfacet normals",
+               lobe.roughness, lobe.alpha));
+  } else {
+    lines.push_back(
+        format("  rough mirror: roughness %.2f, GGX alpha %.4f (roughness squared): it sees the "
+               "environment averaged over the GGX lobe around the reflected ray",
+               lobe.roughness, lobe.alpha));
+  }
   lines.push_back(howRead(lobe));
+  if (lobe.glass && lobe.source == LobeExplanation::Source::Prefiltered) {
+    lines.push_back(format(
+        "  light through: read around the refracted ray at level %.2f (transmission roughness "
+        "%.2f x %d levels: core/ggx.h transmissionRoughness)",
+        lobe.throughLevel, lobe.throughRoughness, lobe.usableLevels));
+  }
+  if (lobe.glass && lobe.source == LobeExplanation::Source::Traced) {
+    lines.push_back(format(
+        "  light through: traced with %d rays refracted through the lobe's microfacet normals",
+        lobe.lobeRays));
+  }
   if (raysShown) {
     lines.push_back(
         "  the rays and lookups below (and the lines the page draws) are the lobe's centre: "

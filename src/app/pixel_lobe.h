@@ -1,8 +1,9 @@
-// Pick a pixel on a rough mirror (docs/rough.md): which GGX lobe the pixel averages and how the
-// frame drew it: read from the probe's prefiltered levels (which two, at what face sizes) or
-// traced with lobe rays; or the static sky, read sharp. The explanation's rays and lookups follow
-// the lobe's centre (the reflected ray); these lines say what lies around it. The facts are the
-// renderer's own: the accuracy settings, the frame plan and the probe's cube as captured.
+// Pick a pixel on a rough mirror or frosted glass (docs/rough.md): which GGX lobe the pixel
+// averages and how the frame drew it: read from the probe's prefiltered levels (which two, at what
+// face sizes) or traced with lobe rays; or the static sky, read sharp. The explanation's rays and
+// lookups follow the lobe's centre (the reflected ray); these lines say what lies around it. The
+// facts are the renderer's own: the accuracy settings, the frame plan and the probe's cube as
+// captured.
 #pragma once
 
 #include <string>
@@ -15,7 +16,7 @@ namespace reflect {
 
 struct LobeExplanation {
   enum class Source {
-    None,         // a perfect mirror (roughness 0), glass or not a mirror: no lobe
+    None,         // a perfect mirror or polished glass (roughness 0), or neither: no lobe
     Prefiltered,  // read from the probe's prefiltered levels
     Traced,       // traced with lobeRays rays (search: exact, or planned found tracing cheaper)
     SharpSky,     // the static skybox, read sharp: only live probes are prefiltered
@@ -32,6 +33,11 @@ struct LobeExplanation {
   int lowerFaceSize = 0;
   int upperFaceSize = 0;
   int lobeRays = 0;  // traced: AccuracySettings::lobeRays
+  // Frosted glass: the light through it is a lobe too, read prefiltered at its own level
+  // (transmissionRoughness x usableLevels, as the renderer's u_refractLod).
+  bool glass = false;
+  float throughRoughness = 0.0f;
+  float throughLevel = 0.0f;
 };
 
 // The lobe of `object` in the frame the demo drew last (Source::None where it has none).

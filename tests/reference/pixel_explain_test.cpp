@@ -243,5 +243,29 @@ TEST(PixelExplain, ATracedRoughMirrorNamesItsLobeRays) {
   EXPECT_EQ(text.find("lobe's centre"), std::string::npos) << text;
 }
 
+// frosted-glass at 400 x 400, t = 2 s, hierarchical search: a pixel left of the middle of the
+// roughness-0.5 glass sphere (object 6 in reflect explain's count from 1). Its reflection reads
+// levels 2 and 3 as the mirror's; the light through it level 0.5 x 0.75 x sqrt(0.5 / 2) x 5.
+TEST(PixelExplain, FrostedGlassNamesTheLevelOfTheLightThrough) {
+  Result<Scene> scene = loadNamedScene("frosted-glass");
+  ASSERT_TRUE(scene) << scene.error();
+  auto demo = testing::makeCapturingDemo(scene.take());
+  Result<PixelExplanation> e = explainAt(*demo, 2.0, {185, 230});
+  ASSERT_TRUE(e) << e.error();
+  ASSERT_EQ(e.value().message, "");
+  EXPECT_EQ(e.value().object, 5);
+  const LobeExplanation& lobe = e.value().lobe;
+  EXPECT_TRUE(lobe.glass);
+  EXPECT_EQ(lobe.source, LobeExplanation::Source::Prefiltered);
+  EXPECT_FLOAT_EQ(lobe.throughRoughness, 0.1875f);
+  EXPECT_FLOAT_EQ(lobe.throughLevel, 0.9375f);
+  const std::string text = joinedLines(e.value());
+  EXPECT_NE(text.find("frosted glass: roughness 0.50, GGX alpha 0.2500"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("light through: read around the refracted ray at level 0.94"),
+            std::string::npos)
+      << text;
+}
+
 }  // namespace
 }  // namespace reflect
