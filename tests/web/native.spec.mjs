@@ -26,7 +26,9 @@ const REFLECTORS = { fractionOver: 0.005, mean: 1.0 };
 // are the implementation's, so SwiftShader and llvmpipe part by a few levels over whole spheres
 // (measured at 800x600, t = 2: frame 0.34% over 16 levels, mean 0.20; reflectors 3.78%, mean 2.13).
 // Looser limits here, above those by about a third; a page drawing the rough spheres sharp
-// (roughness ignored) is far past them.
+// (roughness ignored) is far past them. frosted-glass reads prefiltered levels the same way and
+// takes the same limits (measured at 800x600, t = 2: frame 0.051%, mean 0.063; reflectors 0.656%,
+// mean 0.78: past the 0.5% of the sharp scenes, well inside these).
 const ROUGH = { frame: { fractionOver: 0.005, mean: 0.5 }, reflectors: { fractionOver: 0.05, mean: 3.0 } };
 
 // Max channel difference per pixel of two RGBA images of one size.
@@ -83,7 +85,8 @@ for (const scene of SCENES) {
                 `${(100 * frame.fractionOver).toFixed(3)}%; reflectors (${inside.count} px) mean ` +
                 `${inside.mean.toFixed(3)}, over ${(100 * inside.fractionOver).toFixed(3)}%`);
     expect(inside.count, 'reflector pixels found').toBeGreaterThan(500);
-    const limits = scene === 'rough-spheres' ? ROUGH : { frame: FRAME, reflectors: REFLECTORS };
+    const rough = scene === 'rough-spheres' || scene === 'frosted-glass';
+    const limits = rough ? ROUGH : { frame: FRAME, reflectors: REFLECTORS };
     expect(frame.fractionOver).toBeLessThanOrEqual(limits.frame.fractionOver);
     expect(frame.mean).toBeLessThanOrEqual(limits.frame.mean);
     expect(inside.fractionOver).toBeLessThanOrEqual(limits.reflectors.fractionOver);
