@@ -2,31 +2,26 @@
 #include <cstdio>
 
 #include "app/pixel_explain.h"
+#include "app/text_line.h"
 #include "core/settings_schema.h"
 
 namespace reflect {
 namespace {
 
-std::string format(const char* pattern, auto... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, pattern, values...);
-  return line;
-}
-
 std::string point(const glm::vec3& p) {
-  return format("(%.4f, %.4f, %.4f)", p.x, p.y, p.z);
+  return formatLine("(%.4f, %.4f, %.4f)", p.x, p.y, p.z);
 }
 
 std::string rgb(const glm::vec3& colour) {
   const glm::ivec3 c = colourBytes(colour);
-  return format("rgb(%d, %d, %d)", c.r, c.g, c.b);
+  return formatLine("rgb(%d, %d, %d)", c.r, c.g, c.b);
 }
 
 // A colour and its difference from `exact`, channel by channel in 0-255 levels.
 std::string against(const glm::vec3& colour, const glm::vec3& exact, bool exactKnown) {
   if (!exactKnown) return rgb(colour);
   const glm::ivec3 d = colourBytes(colour) - colourBytes(exact);
-  return rgb(colour) + format(", off the exact by (%+d, %+d, %+d)", d.r, d.g, d.b);
+  return rgb(colour) + formatLine(", off the exact by (%+d, %+d, %+d)", d.r, d.g, d.b);
 }
 
 void glassLines(const PixelExplanation& e, std::vector<std::string>& lines) {
@@ -40,7 +35,7 @@ void glassLines(const PixelExplanation& e, std::vector<std::string>& lines) {
   if (e.glass.exited) {
     lines.push_back("  refracted leaving: from " + point(e.glass.exitPoint) + " along " +
                     point(e.glass.leaving) +
-                    format(" (%d internal reflections)", e.glass.internalReflections));
+                    formatLine(" (%d internal reflections)", e.glass.internalReflections));
   } else {
     lines.push_back(
         "  refracted leaving: it does not leave (one surface, or no far side met); "
@@ -54,7 +49,7 @@ void glassLines(const PixelExplanation& e, std::vector<std::string>& lines) {
 std::vector<std::string> explanationLines(const PixelExplanation& e) {
   std::vector<std::string> lines;
   lines.push_back(
-      format("pixel %d,%d of %dx%d at t=%.3f s", e.x, e.y, e.width, e.height, e.seconds));
+      formatLine("pixel %d,%d of %dx%d at t=%.3f s", e.x, e.y, e.width, e.height, e.seconds));
   if (!e.message.empty()) {
     lines.push_back("  " + e.message);
     for (const std::string& line : lobeLines(e.lobe, false)) lines.push_back(line);
@@ -70,15 +65,15 @@ std::vector<std::string> explanationLines(const PixelExplanation& e) {
   if (e.material == Material::Glass) glassLines(e, lines);
   lines.push_back("  probe centre " + point(e.probeCentre));
   lines.push_back("  course lookup: direction " + point(e.courseDirection) +
-                  " from the probe centre" + format(", angular error %.3f deg", e.courseErrorDeg));
+                  " from the probe centre" + formatLine(", angular error %.3f deg", e.courseErrorDeg));
   if (e.searchAtInfinity) {
     lines.push_back("  search (" + e.search + "): at infinity, direction " +
                     point(e.searchDirection) +
-                    format(", angular error %.3f deg", e.searchErrorDeg));
+                    formatLine(", angular error %.3f deg", e.searchErrorDeg));
   } else {
     lines.push_back("  search (" + e.search + "): lands at " + point(e.searchPoint) +
                     ", direction " + point(e.searchDirection) +
-                    format(", angular error %.3f deg", e.searchErrorDeg));
+                    formatLine(", angular error %.3f deg", e.searchErrorDeg));
   }
   if (e.exactObject < 0) {
     lines.push_back("  exact: meets nothing (the sky), direction " + point(e.exactDirection));

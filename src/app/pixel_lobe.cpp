@@ -3,14 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/text_line.h"
+
 namespace reflect {
 namespace {
-
-std::string format(const char* pattern, auto... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, pattern, values...);
-  return line;
-}
 
 bool has(const std::vector<int>& levels, int level) {
   return level == 0 || std::find(levels.begin(), levels.end(), level) != levels.end();
@@ -34,7 +30,7 @@ void readPrefiltered(const Demo& demo, const ProbePlan& probe, LobeExplanation& 
 }
 
 std::string levelName(int level, int faceSize) {
-  return format("level %d (%dx%d faces)", level, faceSize, faceSize);
+  return formatLine("level %d (%dx%d faces)", level, faceSize, faceSize);
 }
 
 // Which levels the lookup blends: the sharp reflection and level 1 below level 1 (the
@@ -42,7 +38,7 @@ std::string levelName(int level, int faceSize) {
 std::string levelsRead(const LobeExplanation& lobe) {
   const std::string upper = levelName(lobe.levels.upper, lobe.upperFaceSize);
   if (lobe.levels.lower == 0) {
-    return format(
+    return formatLine(
                ", between the sharp reflection its search found (level 0, the capture itself, "
                "%dx%d faces) and ",
                lobe.lowerFaceSize, lobe.lowerFaceSize) +
@@ -57,7 +53,7 @@ std::string howRead(const LobeExplanation& lobe) {
   using Source = LobeExplanation::Source;
   switch (lobe.source) {
     case Source::Traced:
-      return format(
+      return formatLine(
           "  lobe: traced with %d lobe rays (lobeRays) around the reflected ray, each weighed "
           "by the GGX reflectance (search: exact, or planned found tracing cheaper)",
           lobe.lobeRays);
@@ -65,14 +61,14 @@ std::string howRead(const LobeExplanation& lobe) {
       return "  lobe: not applied: the static skybox is read sharp (only live probes are "
              "prefiltered)";
     case Source::NotFiltered:
-      return format(
+      return formatLine(
           "  lobe: level %.2f (roughness x %d levels) was not prefiltered for this probe this "
           "frame",
           lobe.level, lobe.usableLevels);
     default:
       break;
   }
-  return format(
+  return formatLine(
              "  lobe: read from the probe's prefiltered levels: roughness %.2f x %d levels = "
              "level %.2f",
              lobe.roughness, lobe.usableLevels, lobe.level) +
@@ -108,25 +104,25 @@ std::vector<std::string> lobeLines(const LobeExplanation& lobe, bool raysShown) 
   std::vector<std::string> lines;
   if (lobe.glass) {
     lines.push_back(
-        format("  frosted glass: roughness %.2f, GGX alpha %.4f (roughness squared): its "
+        formatLine("  frosted glass: roughness %.2f, GGX alpha %.4f (roughness squared): its "
                "reflection is averaged over the GGX lobe around the reflected ray, the light "
                "through it over the view ray refracted through the lobe's microfacet normals",
                lobe.roughness, lobe.alpha));
   } else {
     lines.push_back(
-        format("  rough mirror: roughness %.2f, GGX alpha %.4f (roughness squared): it sees the "
+        formatLine("  rough mirror: roughness %.2f, GGX alpha %.4f (roughness squared): it sees the "
                "environment averaged over the GGX lobe around the reflected ray",
                lobe.roughness, lobe.alpha));
   }
   lines.push_back(howRead(lobe));
   if (lobe.glass && lobe.source == LobeExplanation::Source::Prefiltered) {
-    lines.push_back(format(
+    lines.push_back(formatLine(
         "  light through: read around the refracted ray at level %.2f (transmission roughness "
         "%.2f x %d levels: core/ggx.h transmissionRoughness)",
         lobe.throughLevel, lobe.throughRoughness, lobe.usableLevels));
   }
   if (lobe.glass && lobe.source == LobeExplanation::Source::Traced) {
-    lines.push_back(format(
+    lines.push_back(formatLine(
         "  light through: traced with %d rays refracted through the lobe's microfacet normals",
         lobe.lobeRays));
   }

@@ -23,7 +23,9 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<Plann
       const float pixels = screenPixels(worldCentreOf(o), worldRadiusOf(o), view);
       c.trace.pixels += pixels;
       if (o.look.rough()) {
-        c.trace.lobePixels += pixels;
+        // Frosted glass traces two lobes a pixel (its reflection's and the light through it),
+        // each crossing the object: about twice a rough mirror's rays.
+        c.trace.lobePixels += o.look.material == Material::Glass ? 2.0f * pixels : pixels;
       }
     } else {
       c.trace.general |= o.look.material != Material::Phong;

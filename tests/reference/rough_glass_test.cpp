@@ -7,11 +7,8 @@
 
 #include <cstdio>
 
-#include "app/headless_frames.h"
-#include "bench/accuracy.h"
-#include "gl_fixture.h"
-#include "platform/native/model_paths.h"
 #include "reference/reference_noise.h"
+#include "rough_scenes.h"
 
 namespace reflect {
 namespace {
@@ -21,30 +18,14 @@ constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 constexpr double kTime = 2.0;
 
-Scene frostedGlass(bool roughnessZero = false) {
-  Result<Scene> scene = loadNamedScene("frosted-glass");
-  EXPECT_TRUE(scene) << scene.error();
-  Scene s = scene ? scene.take() : Scene{};
-  if (roughnessZero) {
-    for (SceneObject& object : s.objects) object.roughness = 0.0f;
-  }
-  return s;
-}
+using testing::exactDemo;
 
-std::unique_ptr<Demo> exactDemo(const Scene& scene) {
-  auto demo = testing::makeDemo(scene);
-  AccuracySettings exact;
-  exact.search = Search::Exact;
-  EXPECT_EQ(demo->setAccuracySettings(exact), "");
-  return demo;
+Scene frostedGlass(bool roughnessZero = false) {
+  return testing::shippedScene("frosted-glass", roughnessZero);
 }
 
 ReferenceFrame referenceWithSeed(const Demo& demo, uint32_t seed) {
-  ReferenceOptions options;
-  options.seed = seed;
-  auto frame = referenceFor(demo, kTime, kWidth, kHeight, options);
-  EXPECT_TRUE(frame) << frame.error();
-  return frame ? frame.take() : ReferenceFrame{};
+  return testing::referenceWithSeed(demo, {kTime, kWidth, kHeight}, seed);
 }
 
 // The reference of seed 1, made once for the tests below (each is a few seconds of tracing).

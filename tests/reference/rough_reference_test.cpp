@@ -7,11 +7,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "app/headless_frames.h"
-#include "bench/accuracy.h"
-#include "gl_fixture.h"
-#include "platform/native/model_paths.h"
 #include "reference/reference_noise.h"
+#include "rough_scenes.h"
 
 namespace reflect {
 namespace {
@@ -28,32 +25,15 @@ constexpr double kExactMinPsnr = 34.5;
 constexpr double kPrefilteredMinPsnr = 24.0;
 constexpr double kPrefilterGain = 0.5;
 
-Scene roughSpheres(bool roughnessZero = false) {
-  Result<Scene> scene = loadNamedScene("rough-spheres");
-  EXPECT_TRUE(scene) << scene.error();
-  Scene s = scene ? scene.take() : Scene{};
-  if (roughnessZero) {
-    for (SceneObject& object : s.objects) object.roughness = 0.0f;
-  }
-  return s;
-}
+using testing::exactDemo;
 
-std::unique_ptr<Demo> exactDemo(const Scene& scene) {
-  auto demo = testing::makeDemo(scene);
-  AccuracySettings exact;
-  exact.search = Search::Exact;
-  EXPECT_EQ(demo->setAccuracySettings(exact), "");
-  return demo;
+Scene roughSpheres(bool roughnessZero = false) {
+  return testing::shippedScene("rough-spheres", roughnessZero);
 }
 
 ReferenceFrame referenceWithSeed(const Demo& demo, uint32_t seed,
                                  int lobeSamples = ReferenceOptions{}.lobeSamples) {
-  ReferenceOptions options;
-  options.seed = seed;
-  options.lobeSamples = lobeSamples;
-  auto frame = referenceFor(demo, kTime, kWidth, kHeight, options);
-  EXPECT_TRUE(frame) << frame.error();
-  return frame ? frame.take() : ReferenceFrame{};
+  return testing::referenceWithSeed(demo, {kTime, kWidth, kHeight}, seed, lobeSamples);
 }
 
 double reflectorPsnr(const RgbaImage& image, const ReferenceFrame& reference) {
