@@ -29,7 +29,8 @@ CaptureContext Demo::captureContext() const {
                         scene_.clearColour,
                         skyboxContent_,
                         accuracy_,
-                        plannerSettings_.captureLod};
+                        plannerSettings_.captureLod,
+                        skybox_ ? (*skybox_)[0].width : 0};
 }
 
 std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {

@@ -29,6 +29,23 @@ void readPrefiltered(const Demo& demo, const ProbePlan& probe, LobeExplanation& 
       filtered ? LobeExplanation::Source::Prefiltered : LobeExplanation::Source::NotFiltered;
 }
 
+// A reader of the static skybox: the sky's levels, filtered from its own faces.
+void readPrefilteredSky(const Demo& demo, LobeExplanation& lobe) {
+  const CubeFaces* sky = demo.skyboxFaces();
+  const int faceSize = sky ? (*sky)[0].width : 0;
+  lobe.usableLevels = usableRoughLevels(demo.accuracySettings().roughLevels, faceSize);
+  lobe.level = std::clamp(lobe.roughness, 0.0f, 1.0f) * static_cast<float>(lobe.usableLevels);
+  lobe.throughLevel = lobe.throughRoughness * static_cast<float>(lobe.usableLevels);
+  lobe.levels = roughLevelsFor(lobe.roughness, lobe.usableLevels);
+  lobe.lowerFaceSize = std::max(faceSize >> lobe.levels.lower, 1);
+  lobe.upperFaceSize = std::max(faceSize >> lobe.levels.upper, 1);
+  const std::vector<int>& kept = demo.lastPlan().skyRoughLevels;
+  const bool filtered =
+      sky != nullptr && has(kept, lobe.levels.lower) && has(kept, lobe.levels.upper);
+  lobe.source =
+      filtered ? LobeExplanation::Source::PrefilteredSky : LobeExplanation::Source::NotFiltered;
+}
+
 std::string levelName(int level, int faceSize) {
   return formatLine("level %d (%dx%d faces)", level, faceSize, faceSize);
 }
@@ -37,6 +54,11 @@ std::string levelName(int level, int faceSize) {
 // renderer's own mix), a single level at the top, otherwise the two around it (trilinear).
 std::string levelsRead(const LobeExplanation& lobe) {
   const std::string upper = levelName(lobe.levels.upper, lobe.upperFaceSize);
+  if (lobe.levels.lower == 0 && lobe.source == LobeExplanation::Source::PrefilteredSky) {
+    return formatLine(", between the sharp sky (level 0, the skybox itself, %dx%d faces) and ",
+                      lobe.lowerFaceSize, lobe.lowerFaceSize) +
+           upper;
+  }
   if (lobe.levels.lower == 0) {
     return formatLine(
                ", between the sharp reflection its search found (level 0, the capture itself, "
@@ -57,13 +79,16 @@ std::string howRead(const LobeExplanation& lobe) {
           "  lobe: traced with %d lobe rays (lobeRays) around the reflected ray, each weighed "
           "by the GGX reflectance (search: exact, or planned found tracing cheaper)",
           lobe.lobeRays);
-    case Source::SharpSky:
-      return "  lobe: not applied: the static skybox is read sharp (only live probes are "
-             "prefiltered)";
+    case Source::PrefilteredSky:
+      return formatLine(
+                 "  lobe: read from the static skybox's prefiltered levels (filtered once): "
+                 "roughness %.2f x %d levels = level %.2f",
+                 lobe.roughness, lobe.usableLevels, lobe.level) +
+             levelsRead(lobe);
     case Source::NotFiltered:
       return formatLine(
-          "  lobe: level %.2f (roughness x %d levels) was not prefiltered for this probe this "
-          "frame",
+          "  lobe: level %.2f (roughness x %d levels) was not prefiltered for this probe (or "
+          "sky) this frame",
           lobe.level, lobe.usableLevels);
     default:
       break;
@@ -87,10 +112,10 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
   lobe.throughRoughness = lobe.glass ? transmissionRoughness(o.roughness, o.ior) : 0.0f;
   lobe.alpha = ggxAlpha(o.roughness);
   lobe.lobeRays = demo.accuracySettings().lobeRays;
-  if (o.environment == Environment::Skybox) {
-    lobe.source = LobeExplanation::Source::SharpSky;
-  } else if (demo.lastPlan().traces(object)) {
+  if (demo.lastPlan().traces(object)) {
     lobe.source = LobeExplanation::Source::Traced;
+  } else if (o.environment == Environment::Skybox) {
+    readPrefilteredSky(demo, lobe);
   } else if (const ProbePlan* probe = demo.lastPlan().probeOf(object)) {
     readPrefiltered(demo, *probe, lobe);
   } else {
@@ -105,17 +130,18 @@ std::vector<std::string> lobeLines(const LobeExplanation& lobe, bool raysShown) 
   if (lobe.glass) {
     lines.push_back(
         formatLine("  frosted glass: roughness %.2f, GGX alpha %.4f (roughness squared): its "
-               "reflection is averaged over the GGX lobe around the reflected ray, the light "
-               "through it over the view ray refracted through the lobe's microfacet normals",
-               lobe.roughness, lobe.alpha));
+                   "reflection is averaged over the GGX lobe around the reflected ray, the light "
+                   "through it over the view ray refracted through the lobe's microfacet normals",
+                   lobe.roughness, lobe.alpha));
   } else {
-    lines.push_back(
-        formatLine("  rough mirror: roughness %.2f, GGX alpha %.4f (roughness squared): it sees the "
-               "environment averaged over the GGX lobe around the reflected ray",
-               lobe.roughness, lobe.alpha));
+    lines.push_back(formatLine(
+        "  rough mirror: roughness %.2f, GGX alpha %.4f (roughness squared): it sees the "
+        "environment averaged over the GGX lobe around the reflected ray",
+        lobe.roughness, lobe.alpha));
   }
   lines.push_back(howRead(lobe));
-  if (lobe.glass && lobe.source == LobeExplanation::Source::Prefiltered) {
+  if (lobe.glass && (lobe.source == LobeExplanation::Source::Prefiltered ||
+                     lobe.source == LobeExplanation::Source::PrefilteredSky)) {
     lines.push_back(formatLine(
         "  light through: read around the refracted ray at level %.2f (transmission roughness "
         "%.2f x %d levels: core/ggx.h transmissionRoughness)",

@@ -1,6 +1,7 @@
 // Pick a pixel on a rough mirror or frosted glass (docs/rough.md): which GGX lobe the pixel
 // averages and how the frame drew it: read from the probe's prefiltered levels (which two, at what
-// face sizes) or traced with lobe rays; or the static sky, read sharp. The explanation's rays and
+// face sizes) or traced with lobe rays; a reader of the static skybox from the sky's own
+// prefiltered levels. The explanation's rays and
 // lookups follow the lobe's centre (the reflected ray); these lines say what lies around it. The
 // facts are the renderer's own: the accuracy settings, the frame plan and the probe's cube as
 // captured.
@@ -16,11 +17,11 @@ namespace reflect {
 
 struct LobeExplanation {
   enum class Source {
-    None,         // a perfect mirror or polished glass (roughness 0), or neither: no lobe
-    Prefiltered,  // read from the probe's prefiltered levels
-    Traced,       // traced with lobeRays rays (search: exact, or planned found tracing cheaper)
-    SharpSky,     // the static skybox, read sharp: only live probes are prefiltered
-    NotFiltered,  // a probe without the levels this roughness reads (none captured this frame)
+    None,            // a perfect mirror or polished glass (roughness 0), or neither: no lobe
+    Prefiltered,     // read from the probe's prefiltered levels
+    Traced,          // traced with lobeRays rays (search: exact, or planned found tracing cheaper)
+    NotFiltered,     // a probe without the levels this roughness reads (none captured this frame)
+    PrefilteredSky,  // read from the static skybox's prefiltered levels (environment: skybox)
   };
   Source source = Source::None;
   float roughness = 0.0f;

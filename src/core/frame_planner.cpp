@@ -43,6 +43,11 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
     planner::decideFiltering(plan.probes.back(), objects, context, levels);
     plan.probes.back().filterFaces = 0;
   }
+  std::vector<int> skyLevels;  // which levels there are; nothing is filtered here
+  uint64_t skyContent = 0;
+  planner::decideSkyFiltering(plan, objects, context, skyLevels, skyContent);
+  plan.filterSky = false;
+  plan.skyFilterSamples = 0.0;
   return plan;
 }
 
@@ -210,6 +215,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
           ProbeLayout{static_cast<int>(i), {static_cast<int>(i)}, planner::worldCentreOf(o)});
     }
   }
+  planner::decideSkyFiltering(plan, objects, context, skyFilteredLevels_, skyFilteredContent_);
   // Mirrors whose cube changed look different from the next frame on.
   for (int r : recapturedForRealChange) ++contentVersions_[static_cast<size_t>(r)];
   ++frameIndex_;

@@ -81,6 +81,7 @@ struct CaptureContext {
   uint64_t skyboxContent = 0;  // a hash of the skybox's pixels (0: none)
   AccuracySettings accuracy;
   float captureLod = 0.0f;
+  int skyFaceSize = 0;  // the skybox's face size, for its prefiltered levels (0: none)
   bool operator==(const CaptureContext&) const = default;
 };
 
@@ -161,6 +162,15 @@ struct FramePlan {
   // Reflectors whose rays are traced this frame (search: exact, or planned where tracing is the
   // cheaper): who they are and the centre their error is measured from. No probe, no face.
   std::vector<ProbeLayout> traced;
+  // The static skybox read by rough mirrors or frosted glass (environment: skybox): the
+  // prefiltered levels they need (as ProbePlan::roughLevels, for the sky's face size; empty when
+  // no skybox reader is rough: then the sky has no filtered cube), and whether the sky is
+  // filtered this frame (the levels or the skybox changed: the sky is static, so once).
+  // `skyFilterSamples`: what that filter takes this frame (texels x samples), 0 in the frames it is
+  // not filtered.
+  std::vector<int> skyRoughLevels{};
+  bool filterSky = false;
+  double skyFilterSamples = 0.0;
   int facesCaptured() const;
   // The probe object `object` samples, or null (none, or its rays are traced).
   const ProbePlan* probeOf(int object) const;
@@ -210,7 +220,11 @@ class FramePlanner {
   // cubes a plan() already captured.
   static FramePlan layout(const std::vector<PlannedObject>& objects, const CaptureContext& context);
   // Forget every capture (the GL context was lost, or the caller wants a clean start).
-  void invalidate() { probes_.clear(); }
+  void invalidate() {
+    probes_.clear();
+    skyFilteredLevels_.clear();
+    skyFilteredContent_ = 0;
+  }
 
  private:
   // What a face showed when it was last drawn: which objects, and each object's versions then.
@@ -271,7 +285,9 @@ class FramePlanner {
   // show this mirror redraw once (one bounce), without two mirrors re-triggering each other.
   std::vector<uint32_t> contentVersions_;
   std::vector<ProbeMemory> probes_;
-  std::vector<bool> movedNow_;  // per object: its state changed this frame
+  std::vector<int> skyFilteredLevels_;  // the sky's prefiltered levels as last filtered
+  uint64_t skyFilteredContent_ = 0;     // and the skybox they were filtered from
+  std::vector<bool> movedNow_;          // per object: its state changed this frame
   uint64_t frameIndex_ = 0;
   MethodCosts costs_ = MethodCosts::softwareRenderer();
   std::vector<MethodChoice> choices_;

@@ -46,6 +46,14 @@ std::vector<float> lobeRoughnesses(const SceneObject::Look& look);
 void decideFiltering(ProbePlan& probe, const std::vector<PlannedObject>& objects,
                      const CaptureContext& context, std::vector<int>& filtered);
 
+// The static sky's prefiltered levels, those its rough readers (environment: skybox, not traced
+// this frame) need at context.skyFaceSize, into plan.skyRoughLevels; plan.filterSky when they
+// or the skybox changed since they were last filtered (`filtered` from `filteredContent`, both
+// updated), with the samples that takes.
+void decideSkyFiltering(FramePlan& plan, const std::vector<PlannedObject>& objects,
+                        const CaptureContext& context, std::vector<int>& filtered,
+                        uint64_t& filteredContent);
+
 // What the prefilter pass does a frame for `levels` of a probe of faceSize: texels filtered times
 // samples each, every face of every level (ProbePlan::filterFaces is all six or none).
 double filterSamplesFor(const std::vector<int>& levels, int faceSize, int samples);

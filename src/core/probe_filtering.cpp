@@ -1,6 +1,7 @@
 // Which prefiltered levels a captured probe keeps for its rough readers, and when they are
 // filtered: the planner owns this decision as it owns the capture's. A probe read only by perfect
 // mirrors (or polished glass, or a cube-textured object) keeps no level and is never filtered.
+// The static skybox's rough readers get the sky's levels the same way, filtered once.
 #include <algorithm>
 
 #include "core/frame_planner.h"
@@ -17,24 +18,57 @@ std::vector<float> lobeRoughnesses(const SceneObject::Look& look) {
   return {look.roughness};
 }
 
+namespace {
+
+// Adds the levels a reader of `look` needs, of a cube of faceSize, to `levels` (each once).
+void addLevelsOf(const SceneObject::Look& look, int roughLevels, int faceSize,
+                 std::vector<int>& levels) {
+  for (float roughness : lobeRoughnesses(look)) {
+    const RoughLevels needed = roughLevelsFor(roughness, usableRoughLevels(roughLevels, faceSize));
+    for (int level : {needed.lower, needed.upper}) {
+      if (level > 0 && !contains(levels, level)) levels.push_back(level);
+    }
+  }
+}
+
+}  // namespace
+
 void decideFiltering(ProbePlan& probe, const std::vector<PlannedObject>& objects,
                      const CaptureContext& context, std::vector<int>& filtered) {
   std::vector<int> levels;
   for (int m : probe.members) {
-    const SceneObject::Look& look = objects[static_cast<size_t>(m)].look;
-    for (float roughness : lobeRoughnesses(look)) {
-      const RoughLevels needed = roughLevelsFor(
-          roughness, usableRoughLevels(context.accuracy.roughLevels, context.faceSize));
-      for (int level : {needed.lower, needed.upper}) {
-        if (level > 0 && !contains(levels, level)) levels.push_back(level);
-      }
-    }
+    addLevelsOf(objects[static_cast<size_t>(m)].look, context.accuracy.roughLevels,
+                context.faceSize, levels);
   }
   std::sort(levels.begin(), levels.end());
   probe.roughLevels = levels;
   const bool changed = levels != filtered;
   probe.filterFaces = !levels.empty() && (!probe.faces.empty() || changed) ? 0x3Fu : 0u;
   filtered = std::move(levels);
+}
+
+void decideSkyFiltering(FramePlan& plan, const std::vector<PlannedObject>& objects,
+                        const CaptureContext& context, std::vector<int>& filtered,
+                        uint64_t& filteredContent) {
+  std::vector<int> levels;
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const SceneObject::Look& look = objects[i].look;
+    // A traced reader (search: exact) follows its lobe's rays to the sky itself.
+    if (context.skyFaceSize <= 0 || look.environment != Environment::Skybox ||
+        plan.traces(static_cast<int>(i))) {
+      continue;
+    }
+    addLevelsOf(look, context.accuracy.roughLevels, context.skyFaceSize, levels);
+  }
+  std::sort(levels.begin(), levels.end());
+  plan.skyRoughLevels = levels;
+  plan.filterSky =
+      !levels.empty() && (levels != filtered || context.skyboxContent != filteredContent);
+  plan.skyFilterSamples =
+      plan.filterSky ? filterSamplesFor(levels, context.skyFaceSize, context.accuracy.filterSamples)
+                     : 0.0;
+  filtered = std::move(levels);
+  filteredContent = context.skyboxContent;
 }
 
 double filterSamplesFor(const std::vector<int>& levels, int faceSize, int samples) {

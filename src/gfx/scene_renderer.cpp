@@ -68,6 +68,7 @@ std::string SceneRenderer::setSkybox(const CubeFaces& faces) {
   Result<SkyboxPass> pass = SkyboxPass::create(faces);
   if (!pass) return pass.error();
   skybox_ = std::make_unique<SkyboxPass>(pass.take());
+  skyPrefiltered_.reset();  // the old sky's levels: the next capture filters the new one
   return {};
 }
 

@@ -63,7 +63,10 @@ class SceneRenderer {
   void setMeshes(const MeshBuffers* meshes) { meshes_ = meshes; }
   // The static cube map behind the scene (and the environment of Skybox-lit objects).
   std::string setSkybox(const CubeFaces& faces);
-  void clearSkybox() { skybox_.reset(); }
+  void clearSkybox() {
+    skybox_.reset();
+    skyPrefiltered_.reset();
+  }
 
   // Renders the plan's faces (scene_renderer_capture.cpp). `lightingEye` is the main camera's
   // eye: the course lights captures as seen from it. Probe targets are created (or resized) on
@@ -93,6 +96,8 @@ class SceneRenderer {
   // Prefiltered cubes made so far (one per probe with a rough reader), and the GGX samples the
   // last capture's prefilter passes took (texels x samples): for tests and the frame's stats.
   size_t prefilteredCubes() const { return prefiltered_.size(); }
+  // The static sky's prefiltered cube (0 when no rough reader reads the sky), for tests.
+  GLuint skyPrefilteredTexture() const { return skyPrefiltered_ ? skyPrefiltered_->texture() : 0; }
   double lastFilterSamples() const { return lastFilterSamples_; }
   // With `wait`, the prefilter pass waits for the GPU before and after it, so that
   // lastFilterMs() is its own time (benches; the page does not wait).
@@ -199,6 +204,11 @@ class SceneRenderer {
   bool searchesFor(const Scene& scene, const FramePlan& plan, int index) const;
   // After the faces are drawn: each probe's rough levels the plan filters this frame.
   Result<double> prefilterProbes(const FramePlan& plan);
+  // The static sky's levels for its rough readers (FramePlan::skyRoughLevels): filtered when the
+  // plan says so or when its cube does not exist yet; freed when no rough reader reads the sky.
+  Result<double> prefilterSky(const FramePlan& plan);
+  // The prefilter pass, built the first time something is filtered.
+  Result<ProbePrefilter*> prefilterPass();
   // Makes the interior maps of the scene's glass meshes that are not spheres the first time they
   // are needed (glassSurfaces 2).
   void prepareGlassExits(const Scene& scene, double seconds);
@@ -221,9 +231,10 @@ class SceneRenderer {
   TextureHandle emptyDepths_;
   TextureHandle emptyPyramid_;
   VertexArrayHandle emptyVertexArray_;  // the reduction's fullscreen triangle has no attributes
-  std::map<int, CubeCaptureTarget> probes_;     // by owning object's index
-  std::map<int, PrefilteredCube> prefiltered_;  // by owning object's index: rough readers only
-  std::unique_ptr<ProbePrefilter> prefilter_;   // built the first time a probe is filtered
+  std::map<int, CubeCaptureTarget> probes_;          // by owning object's index
+  std::map<int, PrefilteredCube> prefiltered_;       // by owning object's index: rough readers only
+  std::unique_ptr<ProbePrefilter> prefilter_;        // built the first time a probe is filtered
+  std::unique_ptr<PrefilteredCube> skyPrefiltered_;  // the sky's rough levels: rough readers only
   double lastFilterSamples_ = 0.0;
   double lastFilterMs_ = 0.0;
   bool timePrefilter_ = false;

@@ -206,11 +206,8 @@ Result<double> SceneRenderer::prefilterProbes(const FramePlan& plan) {
     if (probe.filterFaces == 0 || probe.roughLevels.empty()) continue;
     auto captured = probes_.find(probe.reflector);
     if (captured == probes_.end()) continue;  // nothing captured yet to filter
-    if (!prefilter_) {
-      Result<ProbePrefilter> made = ProbePrefilter::create();
-      if (!made) return Result<double>::failure(made.error());
-      prefilter_ = std::make_unique<ProbePrefilter>(made.take());
-    }
+    Result<ProbePrefilter*> pass = prefilterPass();
+    if (!pass) return Result<double>::failure(pass.error());
     const CubeCaptureTarget& t = captured->second;
     glBindVertexArray(emptyVertexArray_.id());
     const PrefilterJob job{t.texture(0),
@@ -220,11 +217,47 @@ Result<double> SceneRenderer::prefilterProbes(const FramePlan& plan) {
                            usableRoughLevels(accuracy_.roughLevels, t.faceSize()),
                            accuracy_.filterSamples,
                            probe.filterFaces};
-    Result<double> taken = prefilter_->filter(job, prefiltered_[probe.reflector]);
+    Result<double> taken = pass.value()->filter(job, prefiltered_[probe.reflector]);
     if (!taken) return taken;
     lastFilterSamples_ += taken.value();
   }
+  Result<double> sky = prefilterSky(plan);
+  if (!sky) return sky;
+  lastFilterSamples_ += sky.value();
   return lastFilterSamples_;
+}
+
+Result<ProbePrefilter*> SceneRenderer::prefilterPass() {
+  if (!prefilter_) {
+    Result<ProbePrefilter> made = ProbePrefilter::create();
+    if (!made) return Result<ProbePrefilter*>::failure(made.error());
+    prefilter_ = std::make_unique<ProbePrefilter>(made.take());
+  }
+  return prefilter_.get();
+}
+
+Result<double> SceneRenderer::prefilterSky(const FramePlan& plan) {
+  if (!skybox_ || plan.skyRoughLevels.empty()) {
+    skyPrefiltered_.reset();  // no rough reader reads the sky
+    return 0.0;
+  }
+  // The plan filters the static sky once, when its readers' levels change. A renderer that has
+  // no filtered sky yet (made after the plan's first frame, e.g. after a lost context, or given a
+  // new skybox) filters it now all the same: a rough reader must never read an empty cube.
+  if (!plan.filterSky && skyPrefiltered_) return 0.0;
+  Result<ProbePrefilter*> pass = prefilterPass();
+  if (!pass) return Result<double>::failure(pass.error());
+  if (!skyPrefiltered_) skyPrefiltered_ = std::make_unique<PrefilteredCube>();
+  glBindVertexArray(emptyVertexArray_.id());
+  const int faceSize = skybox_->faceSize();
+  const PrefilterJob job{skybox_->texture(),
+                         faceSize,
+                         false,  // the sky is RGBA8
+                         plan.skyRoughLevels,
+                         usableRoughLevels(accuracy_.roughLevels, faceSize),
+                         accuracy_.filterSamples,
+                         0x3Fu};
+  return pass.value()->filter(job, *skyPrefiltered_);
 }
 
 }  // namespace reflect

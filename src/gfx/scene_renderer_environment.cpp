@@ -95,7 +95,7 @@ ProgramKey SceneRenderer::keyFor(const Scene& scene, const FramePlan& plan, cons
   }
   key.look = Look::Environment;
   key.refracts = object.material == Material::Glass;
-  key.rough = object.rough() && object.environment == Environment::LiveProbe;
+  key.rough = object.rough();
   if (plan.traces(item.object)) {
     key.search = Search::Exact;
     // Rays that can meet another mirror, glass or cube-textured object (or glass's own far
@@ -151,10 +151,14 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   GLuint colour = 0, colour2 = 0;
   GLuint pyramid = emptyPyramid_.id();
   int layers = 1, faceSize = 1, topLevel = 0;
+  GLuint prefiltered = 0;
+  int filteredFaceSize = 1;  // the face size of the cube the rough levels were filtered from
   glm::vec3 centre(0.0f);
   if (const ProbeLayout* layout = plan.layoutOf(index)) centre = layout->centre;
   if (object.environment == Environment::Skybox) {
     colour = skybox_ ? skybox_->texture() : 0;
+    prefiltered = skyPrefilteredTexture();
+    filteredFaceSize = skybox_ ? skybox_->faceSize() : 1;
   } else if (const ProbePlan* probe = plan.probeOf(index)) {
     auto it = probes_.find(probe->reflector);
     if (it != probes_.end()) {
@@ -166,8 +170,11 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
         pyramid = t.pyramid();
       }
       faceSize = t.faceSize();
+      filteredFaceSize = faceSize;
       topLevel = t.topLevel();
     }
+    auto filtered = prefiltered_.find(probe->reflector);
+    if (filtered != prefiltered_.end()) prefiltered = filtered->second.texture();
   }
   bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, colour);
   if (current_->key.look == Look::CubeTextured) return;
@@ -175,11 +182,9 @@ void SceneRenderer::bindEnvironment(const Scene& scene, const FramePlan& plan, i
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, pyramid);
   const ProgramUniforms& u = current_->program.u();
   if (current_->key.rough) {
-    const ProbePlan* probe = plan.probeOf(index);
-    auto filtered = probe ? prefiltered_.find(probe->reflector) : prefiltered_.end();
-    bindTexture(kPrefilteredUnit, GL_TEXTURE_CUBE_MAP,
-                filtered != prefiltered_.end() ? filtered->second.texture() : 0);
-    const float levels = static_cast<float>(usableRoughLevels(accuracy_.roughLevels, faceSize));
+    bindTexture(kPrefilteredUnit, GL_TEXTURE_CUBE_MAP, prefiltered);
+    const float levels =
+        static_cast<float>(usableRoughLevels(accuracy_.roughLevels, filteredFaceSize));
     u.roughLod.set(std::clamp(object.roughness, 0.0f, 1.0f) * levels);
     u.refractLod.set(transmissionRoughness(object.roughness, object.ior) * levels);
     u.roughAlpha.set(ggxAlpha(object.roughness));

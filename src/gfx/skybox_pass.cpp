@@ -38,6 +38,7 @@ Result<SkyboxPass> SkyboxPass::create(const CubeFaces& faces) {
   pass.main_ = main.take();
   pass.capture_ = capture.take();
 
+  pass.faceSize_ = faces[0].width;
   pass.texture_ = TextureHandle(genTexture());
   glBindTexture(GL_TEXTURE_CUBE_MAP, pass.texture_.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

@@ -24,6 +24,7 @@ class SkyboxPass {
   // stored infinitely far. `view` may contain a translation: only its rotation is used.
   void draw(const glm::mat4& projection, const glm::mat4& view, const CaptureState& pass) const;
   GLuint texture() const { return texture_.id(); }
+  int faceSize() const { return faceSize_; }  // its faces' width (and height)
   // Active uniforms of its two programs that their tables do not set (for tests).
   std::vector<std::string> unlisted() const;
 
@@ -41,6 +42,7 @@ class SkyboxPass {
   TextureHandle texture_;
   VertexArrayHandle vao_;
   BufferHandle vertices_;
+  int faceSize_ = 0;
 };
 
 }  // namespace reflect

@@ -267,5 +267,34 @@ TEST(PixelExplain, FrostedGlassNamesTheLevelOfTheLightThrough) {
       << text;
 }
 
+// The skybox scene at 400 x 400, t = 2 s, its skybox mirror (object 2, the left sphere) given
+// roughness 0.5: it reads the static sky's prefiltered levels, 0.5 x 5 = 2.5 of the 256-texel
+// sky, between level 2 (64 texels) and 3 (32).
+TEST(PixelExplain, ARoughSkyboxMirrorNamesTheSkysLevels) {
+  Result<Scene> scene = loadNamedScene("skybox");
+  ASSERT_TRUE(scene) << scene.error();
+  Scene s = scene.take();
+  ASSERT_GT(s.objects.size(), 2u);
+  s.objects[2].roughness = 0.5f;
+  auto demo = testing::makeCapturingDemo(std::move(s));
+  Result<PixelExplanation> e = explainAt(*demo, 2.0, {55, 240});
+  ASSERT_TRUE(e) << e.error();
+  // No probe to explain: the lobe's lines follow the message.
+  EXPECT_NE(e.value().message.find("reflects the static skybox"), std::string::npos)
+      << e.value().message;
+  EXPECT_EQ(e.value().object, 2);
+  const LobeExplanation& lobe = e.value().lobe;
+  EXPECT_EQ(lobe.source, LobeExplanation::Source::PrefilteredSky);
+  EXPECT_EQ(lobe.levels.lower, 2);
+  EXPECT_EQ(lobe.levels.upper, 3);
+  const std::string text = joinedLines(e.value());
+  EXPECT_NE(text.find("read from the static skybox's prefiltered levels (filtered once): "
+                      "roughness 0.50 x 5 levels = level 2.50, blended trilinearly between "
+                      "level 2 (64x64 faces) and level 3 (32x32 faces)"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("sharp"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace reflect
