@@ -65,7 +65,8 @@ std::vector<std::string> explanationLines(const PixelExplanation& e) {
   if (e.material == Material::Glass) glassLines(e, lines);
   lines.push_back("  probe centre " + point(e.probeCentre));
   lines.push_back("  course lookup: direction " + point(e.courseDirection) +
-                  " from the probe centre" + formatLine(", angular error %.3f deg", e.courseErrorDeg));
+                  " from the probe centre" +
+                  formatLine(", angular error %.3f deg", e.courseErrorDeg));
   if (e.searchAtInfinity) {
     lines.push_back("  search (" + e.search + "): at infinity, direction " +
                     point(e.searchDirection) +

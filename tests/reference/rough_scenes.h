@@ -38,8 +38,7 @@ struct ReferenceShot {
   int height = 0;
 };
 
-inline ReferenceFrame referenceWithSeed(const Demo& demo, const ReferenceShot& shot,
-                                        uint32_t seed,
+inline ReferenceFrame referenceWithSeed(const Demo& demo, const ReferenceShot& shot, uint32_t seed,
                                         int lobeSamples = ReferenceOptions{}.lobeSamples) {
   ReferenceOptions options;
   options.seed = seed;
