@@ -57,12 +57,23 @@ TEST(UniformTable, EveryVariantOfEveryShippedSceneSetsEachUniformItReads) {
   settings[3].search = Search::Plain;
   settings[3].captureAtOrigin = true;
   settings[4].search = Search::Exact;
-  std::vector<std::string> scenes = shippedSceneNames();
-  scenes.push_back(std::string(TEST_DATA_DIR) + "/glass-cube.json");  // glass leaving by its map
-  for (const std::string& name : scenes) {
+  // Each with its roughness as shipped, and two made rough (every mirror and glass 0.5): the
+  // skybox's readers of the static sky and the glass cube leaving by its map, which no shipped
+  // scene has rough.
+  const std::string glassCube = std::string(TEST_DATA_DIR) + "/glass-cube.json";
+  std::vector<std::pair<std::string, bool>> scenes;
+  for (const std::string& name : shippedSceneNames()) scenes.emplace_back(name, false);
+  scenes.emplace_back(glassCube, false);  // glass leaving by its map
+  scenes.emplace_back("skybox", true);
+  scenes.emplace_back(glassCube, true);
+  for (const auto& [name, roughened] : scenes) {
     Result<Scene> scene = loadNamedScene(name);
     ASSERT_TRUE(scene) << scene.error();
-    auto demo = testing::makeDemo(scene.take());
+    Scene loaded = scene.take();
+    if (roughened) {
+      for (SceneObject& o : loaded.objects) o.roughness = 0.5f;
+    }
+    auto demo = testing::makeDemo(std::move(loaded));
     for (const AccuracySettings& s : settings) {
       ASSERT_EQ(demo->setAccuracySettings(s), "");
       ASSERT_TRUE(renderFrameAt(*demo, 1.0, 48, 48)) << name;
