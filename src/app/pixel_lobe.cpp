@@ -12,38 +12,33 @@ bool has(const std::vector<int>& levels, int level) {
   return level == 0 || std::find(levels.begin(), levels.end(), level) != levels.end();
 }
 
-// Where the probe's levels come from: its capture's face size, as the renderer binds it.
-void readPrefiltered(const Demo& demo, const ProbePlan& probe, LobeExplanation& lobe) {
-  const CubeCaptureTarget* target =
-      demo.renderer() ? demo.renderer()->probeTarget(probe.reflector) : nullptr;
-  const int faceSize = target ? target->faceSize() : 0;
-  lobe.usableLevels = usableRoughLevels(demo.accuracySettings().roughLevels, faceSize);
+// The levels a lobe reads from a filtered cube whose source has faceSize (as the renderer binds
+// it), and whether `kept` (the levels filtered this frame) holds them.
+void readLevels(int faceSize, const std::vector<int>& kept, bool made, int roughLevels,
+                LobeExplanation::Source source, LobeExplanation& lobe) {
+  lobe.usableLevels = usableRoughLevels(roughLevels, faceSize);
   lobe.level = std::clamp(lobe.roughness, 0.0f, 1.0f) * static_cast<float>(lobe.usableLevels);
   lobe.throughLevel = lobe.throughRoughness * static_cast<float>(lobe.usableLevels);
   lobe.levels = roughLevelsFor(lobe.roughness, lobe.usableLevels);
   lobe.lowerFaceSize = std::max(faceSize >> lobe.levels.lower, 1);
   lobe.upperFaceSize = std::max(faceSize >> lobe.levels.upper, 1);
-  const bool filtered = target != nullptr && has(probe.roughLevels, lobe.levels.lower) &&
-                        has(probe.roughLevels, lobe.levels.upper);
-  lobe.source =
-      filtered ? LobeExplanation::Source::Prefiltered : LobeExplanation::Source::NotFiltered;
+  const bool filtered = made && has(kept, lobe.levels.lower) && has(kept, lobe.levels.upper);
+  lobe.source = filtered ? source : LobeExplanation::Source::NotFiltered;
+}
+
+// A probe's reader: its capture's levels.
+void readPrefiltered(const Demo& demo, const ProbePlan& probe, LobeExplanation& lobe) {
+  const CubeCaptureTarget* target =
+      demo.renderer() ? demo.renderer()->probeTarget(probe.reflector) : nullptr;
+  readLevels(target ? target->faceSize() : 0, probe.roughLevels, target != nullptr,
+             demo.accuracySettings().roughLevels, LobeExplanation::Source::Prefiltered, lobe);
 }
 
 // A reader of the static skybox: the sky's levels, filtered from its own faces.
 void readPrefilteredSky(const Demo& demo, LobeExplanation& lobe) {
   const CubeFaces* sky = demo.skyboxFaces();
-  const int faceSize = sky ? (*sky)[0].width : 0;
-  lobe.usableLevels = usableRoughLevels(demo.accuracySettings().roughLevels, faceSize);
-  lobe.level = std::clamp(lobe.roughness, 0.0f, 1.0f) * static_cast<float>(lobe.usableLevels);
-  lobe.throughLevel = lobe.throughRoughness * static_cast<float>(lobe.usableLevels);
-  lobe.levels = roughLevelsFor(lobe.roughness, lobe.usableLevels);
-  lobe.lowerFaceSize = std::max(faceSize >> lobe.levels.lower, 1);
-  lobe.upperFaceSize = std::max(faceSize >> lobe.levels.upper, 1);
-  const std::vector<int>& kept = demo.lastPlan().skyRoughLevels;
-  const bool filtered =
-      sky != nullptr && has(kept, lobe.levels.lower) && has(kept, lobe.levels.upper);
-  lobe.source =
-      filtered ? LobeExplanation::Source::PrefilteredSky : LobeExplanation::Source::NotFiltered;
+  readLevels(sky ? (*sky)[0].width : 0, demo.lastPlan().skyRoughLevels, sky != nullptr,
+             demo.accuracySettings().roughLevels, LobeExplanation::Source::PrefilteredSky, lobe);
 }
 
 std::string levelName(int level, int faceSize) {
