@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "core/cube_sampling.h"
 #include "core/ggx.h"
@@ -28,6 +29,15 @@ Crossing crossGlass(RTCScene only, const std::vector<WorldMesh>& meshes, int obj
     const Hit far = trace(only, meshes, from, dir, epsilon, kInfinity);
     return FarSurface{far.object >= 0, far.position, far.normal};
   });
+}
+
+Tracer::Lobe Tracer::lobeAt(const Hit& hit, const glm::vec3& toViewer, Path path) const {
+  Path next = path.next();
+  ++next.roughSurfaces;
+  // Both sides of a triangle are shaded alike: the lobe lies around the side facing the viewer.
+  return {ggxAlpha(scene.objects[static_cast<size_t>(hit.object)].roughness),
+          glm::dot(hit.normal, toViewer) < 0.0f ? -hit.normal : hit.normal,
+          LobeSampler(seed, hit.position, toViewer), lobeRaysOn(path), next};
 }
 
 uint32_t Tracer::lobeRaysOn(Path path) const {
@@ -107,15 +117,10 @@ glm::vec3 Tracer::mirror(const Hit& hit, const glm::vec3& toViewer, Path path,
 // the lobe before it average its noise out. Only the clamp of what that surface shows (a capture
 // texel's) applies to the few-ray estimate: its bright reflections come out a little dark.
 glm::vec3 Tracer::lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path path) const {
-  const float alpha = ggxAlpha(scene.objects[static_cast<size_t>(hit.object)].roughness);
-  // Both sides of a triangle are shaded alike: the lobe lies around the side facing the viewer.
-  const glm::vec3 n = glm::dot(hit.normal, toViewer) < 0.0f ? -hit.normal : hit.normal;
+  const Lobe lobe = lobeAt(hit, toViewer, path);
+  const auto& [alpha, n, sampler, count, next] = lobe;
   const float nDotV = glm::dot(n, toViewer);
-  const LobeSampler sampler(seed, hit.position, toViewer);
   const bool first = path.roughSurfaces == 0 && lobeSamples > 1;
-  const uint32_t count = lobeRaysOn(path);
-  Path next = path.next();
-  ++next.roughSurfaces;
   glm::vec3 sum(0.0f);
   float weights = 0.0f;
   for (uint32_t k = 0; k < count; ++k) {
@@ -166,12 +171,19 @@ glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, Path path,
     const glm::vec3 r = glm::reflect(i, hit.normal);
     if (dirs) *dirs = {r, trueDirection(hit.object, met, r)};
   } else {
-    const Crossing c =
-        crossGlass(world.only(hit.object), meshes, hit.object, n, hit.position, glm::normalize(t));
-    Hit met;
-    refracted = radiance(hit.object, c.point, c.direction, path.next(), &met);
-    if (dirs) *dirs = {glm::normalize(t), trueDirection(hit.object, met, c.direction)};
-    if (object.rough()) refracted = transmittedAverage(hit, toViewer, n, path, refracted);
+    std::optional<glm::vec3> through;
+    if (object.rough()) through = transmittedAverage(hit, toViewer, n, path);
+    // The polished surface's own refracted ray: what polished glass shows, and rough glass's
+    // directions (its lobe's centre) or its view where no microfacet lets the ray in.
+    if (!through || dirs) {
+      const Crossing c = crossGlass(world.only(hit.object), meshes, hit.object, n, hit.position,
+                                    glm::normalize(t));
+      Hit met;
+      const glm::vec3 smooth = radiance(hit.object, c.point, c.direction, path.next(), &met);
+      if (!through) through = smooth;
+      if (dirs) *dirs = {glm::normalize(t), trueDirection(hit.object, met, c.direction)};
+    }
+    refracted = *through;
     if (object.fresnel) reflected = reflectedRay(nullptr);
   }
   return blended(glassBlend(object.colour, reflected, total, object.reflection, object.base,
@@ -183,16 +195,11 @@ glm::vec3 Tracer::glass(const Hit& hit, const glm::vec3& toViewer, Path path,
 // lobe's (ggxHalfVector, the points lobeAverage's sampler gives, counted as it counts them) of
 // what the view ray refracted through h sees once it has crossed the object, whose far surface
 // is polished. Normals the ray cannot enter through (total reflection, or a refracted ray that
-// does not point into the object) are left out; with none left, `smooth` (the polished
-// surface's view) stands.
-glm::vec3 Tracer::transmittedAverage(const Hit& hit, const glm::vec3& toViewer, float ior,
-                                     Path path, const glm::vec3& smooth) const {
-  const float alpha = ggxAlpha(scene.objects[static_cast<size_t>(hit.object)].roughness);
-  const glm::vec3 n = glm::dot(hit.normal, toViewer) < 0.0f ? -hit.normal : hit.normal;
-  const LobeSampler sampler(seed, hit.position, toViewer);
-  const uint32_t count = lobeRaysOn(path);
-  Path next = path.next();
-  ++next.roughSurfaces;
+// does not point into the object) are left out; with none left, nothing (the caller traces the
+// polished surface's ray).
+std::optional<glm::vec3> Tracer::transmittedAverage(const Hit& hit, const glm::vec3& toViewer,
+                                                    float ior, Path path) const {
+  const auto [alpha, n, sampler, count, next] = lobeAt(hit, toViewer, path);
   glm::vec3 sum(0.0f);
   uint32_t rays = 0;
   for (uint32_t k = 0; k < count; ++k) {
@@ -204,7 +211,8 @@ glm::vec3 Tracer::transmittedAverage(const Hit& hit, const glm::vec3& toViewer, 
     sum += radiance(hit.object, c.point, c.direction, next, nullptr);
     ++rays;
   }
-  return rays > 0 ? sum / static_cast<float>(rays) : smooth;
+  if (rays == 0) return std::nullopt;
+  return sum / static_cast<float>(rays);
 }
 
 // shaders/cube_textured.frag: the ray from the probe centre along the object-space position.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -74,11 +75,22 @@ struct Tracer {
   // The lobe rays a rough surface traces at this point of a path: lobeSamples for the first rough
   // surface, kNestedLobeRays for one seen in its lobe, then one (lobeAverage() says why).
   uint32_t lobeRaysOn(Path path) const;
+  // What a rough surface's lobe at `hit` starts from, the same for its reflection and (frosted
+  // glass) the light through: alpha, the normal facing the viewer, the seeded points, how many
+  // rays (lobeRaysOn), and the path its rays go on with.
+  struct Lobe {
+    float alpha;
+    glm::vec3 n;
+    LobeSampler sampler;
+    uint32_t count;
+    Path next;
+  };
+  Lobe lobeAt(const Hit& hit, const glm::vec3& toViewer, Path path) const;
   glm::vec3 mirror(const Hit& hit, const glm::vec3& toViewer, Path path, Directions* dirs) const;
   glm::vec3 lobeAverage(const Hit& hit, const glm::vec3& toViewer, Path path) const;
   glm::vec3 glass(const Hit& hit, const glm::vec3& toViewer, Path path, Directions* dirs) const;
-  glm::vec3 transmittedAverage(const Hit& hit, const glm::vec3& toViewer, float ior, Path path,
-                               const glm::vec3& smooth) const;
+  std::optional<glm::vec3> transmittedAverage(const Hit& hit, const glm::vec3& toViewer, float ior,
+                                              Path path) const;
   glm::vec3 cubeTextured(const Hit& hit, Path path, Directions* dirs) const;
 };
 
