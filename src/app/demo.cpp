@@ -60,13 +60,6 @@ std::string Demo::loadMeshesFrom(const std::string& directory) {
   return {};
 }
 
-bool Demo::hasAllMeshes() const {
-  for (const std::string& name : scene_.meshNames()) {
-    if (!meshes_.has(name)) return false;
-  }
-  return true;
-}
-
 const MeshData* Demo::meshLevel(const std::string& name, int lod) const {
   return lod == 0 ? meshes_.base(name) : nullptr;
 }
@@ -122,6 +115,7 @@ unsigned Demo::environmentTexture() const {
 
 std::string Demo::initGraphics() {
   planner_.invalidate();  // a new renderer has no captures yet
+  generalCaptured_ = false;
   // The GL may allow less than kMaxCubeFaceSize; capture targets are made at what it allows.
   GLint maxCubeSize = 0;
   glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &maxCubeSize);
@@ -150,6 +144,8 @@ void Demo::releaseGraphics() {
   inside_.release();
   pick_.release();
   planner_.invalidate();
+  exactPlanner_.invalidate();
+  generalCaptured_ = false;
 }
 
 void Demo::loseGraphics() {

@@ -8,6 +8,7 @@
 // are built after the first frame (see mesh_library.h).
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <span>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "app/demo_graphics.h"
+#include "app/frame_record.h"
 #include "app/frame_stats.h"
 #include "app/inside_views.h"
 #include "app/mesh_library.h"
@@ -58,7 +60,6 @@ class Demo {
   // The warnings of the last loadMesh, loadMeshText or loadMeshesFrom (each names its file; empty
   // when the files were clean or the load failed), for the caller to show.
   const std::vector<std::string>& lastWarnings() const { return meshes_.lastWarnings(); }
-  bool hasAllMeshes() const;
   // Mesh `name` as loaded (level 0; its triangles in chunk order once chunks are built), or null.
   // Coarser levels are index lists: levelTriangles() gives their sizes.
   const MeshData* meshLevel(const std::string& name, int lod) const;
@@ -139,7 +140,15 @@ class Demo {
   const Scene& scene() const { return scene_; }
   const FrameStats& lastStats() const { return stats_; }
   // What the last frame planned: its probes and their faces, the reflectors it traced.
-  const FramePlan& lastPlan() const { return lastPlan_; }
+  const FramePlan& lastPlan() const { return lastFrame_.plan; }
+  // Under the course preset the course's own file draws the frame (course/course_frame.cpp);
+  // off, the general renderer does (the test that holds the two to the same pixels).
+  void allowCourseFrame(bool on) { courseFrameAllowed_ = on; }
+  // The last frame's record (frame_record.h): what it drew, planned once.
+  const FrameRecord& lastFrame() const { return lastFrame_; }
+  // The general renderer's captures of the last frame's plan, when the course's own file drew it
+  // (the faces view and the lookups read the general renderer's cubes). Otherwise nothing to do.
+  void ensureGeneralCaptures();
   // Time spent building the exact mode's trees so far (load-time accounting).
   double bvhBuildMs() const { return meshes_.bvhBuildMs(); }
   // What the planner weighed for each probe in the last frame (search: planned).
@@ -149,8 +158,9 @@ class Demo {
   // Rebuilds the GL resources when they exist (programs and capture targets depend on it).
   // Returns "" or a message.
   std::string setAccuracySettings(const AccuracySettings& settings);
-  // Renders the main view with mirrors and glass writing the direction they look up (RGB) into
-  // `framebuffer` (a float target), for the accuracy measurement. Time does not advance.
+  // Renders the last frame's main view with mirrors and glass writing the direction they look up
+  // (RGB) into `framebuffer` (a float target), for the accuracy measurement. Time does not
+  // advance; nothing is drawn before the first frame.
   // `output` (SceneRenderer::kOutput...): what they write; pick a pixel reads the search's landing
   // point (kOutputSearchPoint) and the frame's own colours (kOutputColour) this way.
   void renderLookupDirections(unsigned framebuffer, int width, int height,
@@ -209,6 +219,19 @@ class Demo {
   std::string adopt(const std::string& name, Result<MeshData> mesh);
   bool needsLevels() const;
   std::vector<PlannedObject> plannedObjects(double seconds) const;
+  // The one place a frame is laid out and planned (demo_frame.cpp). NextFrame: the frame the demo
+  // draws next, by its planner (which remembers what it captured); FirstFrame: the frame now as a
+  // first frame plans it, every face it needs, the planner left untouched (the page's steps).
+  enum class Planning { NextFrame, FirstFrame };
+  FrameRecord record(int width, int height, Planning planning);
+  // Whether the course preset's frame is drawn by the course's own file (course/course_frame.cpp).
+  bool drawsCourseFrame() const;
+  // A record drawn by the general renderer (captures, main pass, error view) or by the course's
+  // file; `start`: when the frame began, for its stats.
+  void drawGeneral(const FrameRecord& f, unsigned framebuffer, bool waitForGpu,
+                   std::chrono::steady_clock::time_point start);
+  void drawCourse(const FrameRecord& f, unsigned framebuffer, bool waitForGpu,
+                  std::chrono::steady_clock::time_point start);
   // Everything besides the objects that the captures depend on, as values.
   CaptureContext captureContext() const;
   // The main pass's draws for a width x height viewport (view LOD, if on).
@@ -219,10 +242,11 @@ class Demo {
   ViewParams viewParams(int width, int height) const;
   // The frame's stats before anything is drawn: time, settings, sizes, meshes.
   void startStats(bool waitForGpu, int width, int height);
-  // The captures of `plan` into the probes, timed; their counts and any error into the stats.
-  void capturePass(const FramePlan& plan, bool waitForGpu);
-  // The capture of `plan` telling stepCallback_ of each step (demo_steps.cpp).
-  Result<PassCounts> captureInSteps(const FramePlan& plan);
+  // The captures of the record's plan into the probes, timed; their counts and any error into the
+  // stats.
+  void capturePass(const FrameRecord& f, bool waitForGpu);
+  // The capture of the record's plan telling stepCallback_ of each step (demo_steps.cpp).
+  Result<PassCounts> captureInSteps(const FrameRecord& f);
 
   Scene scene_;
   MeshLibrary meshes_;
@@ -236,13 +260,14 @@ class Demo {
   DemoGraphics graphics_;
   InsideViews inside_;  // the teaching views (after graphics_: their GL objects go first)
   PickOverlay pick_;    // pick a pixel's rays (after graphics_, as inside_)
-  // The frame's state: the planner and what the last frame planned and measured.
+  // The frame's state: the planners (the frame's and the error view's exact frame's), the last
+  // frame's record and what it measured.
   FramePlanner planner_;
+  FramePlanner exactPlanner_;
   bool firstFrameDrawn_ = false;
-  // The reflectors the last frame traced: a pass that reads the frame's cubes again
-  // (renderLookupDirections) draws each the same way.
-  std::vector<ProbeLayout> lastTraced_;
-  FramePlan lastPlan_;
+  FrameRecord lastFrame_;
+  bool generalCaptured_ = false;  // the general renderer holds the last record's captures
+  bool courseFrameAllowed_ = true;
   FrameStats stats_;
   StepCallback stepCallback_;  // step through a frame: unset unless asked for
 };

@@ -1,11 +1,13 @@
-// Demo's frame: the scene at time t, the plan, the captures, the main pass (and the error view's
-// pass when it is on), and the frame's stats.
+// Demo's frame: the frame record (the one place a frame is laid out and planned), then its
+// drawing: the course's own file for the course preset, or the general renderer's captures, main
+// pass and error view; the frame's stats.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "app/demo.h"
+#include "core/presets.h"
 #include "core/probe_layout.h"
 #include "core/settings_schema.h"
 #include "gfx/gl.h"
@@ -80,19 +82,62 @@ std::vector<ScreenBox> Demo::screenBoxes(int width, int height) const {
   return boxes;
 }
 
+bool Demo::drawsCourseFrame() const {
+  // The course's file draws the plain frame; the views that look inside it read the general
+  // renderer's captures and plan, which the GL test holds to the same pixels.
+  const Preset& course = *findPreset("course");
+  return courseFrameAllowed_ && course.planner == plannerSettings_ &&
+         course.accuracy == accuracy_ && CourseFrame::whyNot(scene_).empty() && !showError_ &&
+         !inside_.on() && !pick_.on() && !stepCallback_;
+}
+
+FrameRecord Demo::record(int width, int height, Planning planning) {
+  FrameRecord f;
+  f.seconds = clock_.seconds();
+  f.width = width;
+  f.height = height;
+  f.objects = plannedObjects(f.seconds);
+  f.context = captureContext();
+  f.view = viewParams(width, height);
+  f.mainDraws = viewDraws(f.objects, width, height);
+  FramePlanner firstFrame;  // a first frame's planner: every face it needs, nothing remembered
+  firstFrame.setCosts(planner_.costs());
+  if (planning == Planning::NextFrame) {
+    f.course = drawsCourseFrame();
+    // The course's file draws into its own cube: the general renderer's holds nothing the
+    // planner could remember.
+    if (lastFrame_.course && !f.course) planner_.invalidate();
+  }
+  FramePlanner& planner = planning == Planning::NextFrame ? planner_ : firstFrame;
+  f.plan = planner.plan(f.objects, f.context, plannerSettings_, plannerView(width, height));
+  if (showError_ && planning == Planning::NextFrame) {
+    if (graphics_.errorView().takeRemade()) exactPlanner_.invalidate();
+    CaptureContext exact = f.context;
+    exact.accuracy.search = Search::Exact;
+    exact.captureLod = 0.0f;
+    f.exactPlan = exactPlanner_.plan(f.objects, exact, PlannerSettings{});
+  }
+  return f;
+}
+
+void Demo::ensureGeneralCaptures() {
+  SceneRenderer* renderer = graphics_.renderer();
+  if (!renderer || !lastFrame_.course || generalCaptured_) return;
+  generalCaptured_ = true;
+  Result<PassCounts> capture =
+      renderer->capture(scene_, lastFrame_.seconds, lastFrame_.plan, lastFrame_.view.eye);
+  if (!capture) std::fprintf(stderr, "capture failed: %s\n", capture.error().c_str());
+}
+
 void Demo::renderLookupDirections(unsigned framebuffer, int width, int height, int output) {
   SceneRenderer* renderer = graphics_.renderer();
-  if (!renderer || width < 1 || height < 1) return;
-  const std::vector<PlannedObject> objects = plannedObjects(clock_.seconds());
-  FramePlan plan = FramePlanner::layout(objects, captureContext());
-  // Each reflector the way the last frame drew it: traced, or from its probe.
-  std::erase_if(plan.probes, [&](const ProbePlan& probe) {
-    return std::any_of(lastTraced_.begin(), lastTraced_.end(),
-                       [&](const ProbeLayout& t) { return t.reflector == probe.reflector; });
-  });
-  plan.traced = lastTraced_;
-  renderer->drawMain(scene_, clock_.seconds(), plan, viewParams(width, height),
-                     viewDraws(objects, width, height), framebuffer, width, height, output);
+  if (!renderer || width < 1 || height < 1 || lastFrame_.empty()) return;
+  ensureGeneralCaptures();
+  const FrameRecord& f = lastFrame_;
+  const bool sameSize = width == f.width && height == f.height;
+  renderer->drawMain(scene_, f.seconds, f.plan, sameSize ? f.view : viewParams(width, height),
+                     sameSize ? f.mainDraws : viewDraws(f.objects, width, height), framebuffer,
+                     width, height, output);
 }
 
 void Demo::startStats(bool waitForGpu, int width, int height) {
@@ -109,13 +154,13 @@ void Demo::startStats(bool waitForGpu, int width, int height) {
   stats_.meshCpuBytes = meshCpuBytes();
 }
 
-void Demo::capturePass(const FramePlan& plan, bool waitForGpu) {
+void Demo::capturePass(const FrameRecord& f, bool waitForGpu) {
   GpuTimer& timer = graphics_.timer();
   timer.begin(GpuTimer::kCapture);
   graphics_.renderer()->setTimePrefilter(waitForGpu);
-  Result<PassCounts> capture = stepCallback_ ? captureInSteps(plan)
-                                             : graphics_.renderer()->capture(
-                                                   scene_, stats_.timeSeconds, plan, camera_.eye());
+  Result<PassCounts> capture =
+      stepCallback_ ? captureInSteps(f)
+                    : graphics_.renderer()->capture(scene_, f.seconds, f.plan, f.view.eye);
   timer.end();
   if (!capture) {
     stats_.error = "capture failed: " + capture.error();
@@ -128,12 +173,72 @@ void Demo::capturePass(const FramePlan& plan, bool waitForGpu) {
     stats_.filterMs = graphics_.renderer()->lastFilterMs();
   }
   if (waitForGpu) reflect::waitForGpu();
-  stats_.probes = static_cast<int>(plan.probes.size());
-  stats_.tracedReflectors = 0;
-  for (const ProbeLayout& t : plan.traced) {
+}
+
+void Demo::drawGeneral(const FrameRecord& f, unsigned framebuffer, bool waitForGpu,
+                       std::chrono::steady_clock::time_point start) {
+  SceneRenderer& renderer = *graphics_.renderer();
+  ExactTracer* tracer = graphics_.tracer();
+  if (tracer && (!f.plan.traced.empty() || f.exactPlan)) {
+    tracer->prepare(scene_, f.seconds, f.plan, f.view.eye);
+  }
+  capturePass(f, waitForGpu);
+  stats_.captureMs = millisecondsSince(start);
+  ErrorViewPass& errorPass = graphics_.errorView();
+  const bool errorView = f.exactPlan && errorPass.prepare(f.width, f.height);
+  GpuTimer& timer = graphics_.timer();
+  timer.begin(GpuTimer::kMain);
+  const PassCounts main = renderer.drawMain(
+      scene_, f.seconds, f.plan, f.view, f.mainDraws,
+      errorView ? errorPass.currentFramebuffer() : framebuffer, f.width, f.height);
+  timer.end();
+  timer.endFrame();
+  if (waitForGpu) reflect::waitForGpu();
+  stats_.frameMs = millisecondsSince(start);
+  stats_.mainDrawCalls = main.drawCalls;
+  stats_.mainTriangles = main.triangles;
+  stats_.probes = static_cast<int>(f.plan.probes.size());
+  for (const ProbeLayout& t : f.plan.traced) {
     stats_.tracedReflectors += static_cast<int>(t.members.size());
   }
-  stats_.facesCaptured = plan.facesCaptured();
+  stats_.facesCaptured = f.plan.facesCaptured();
+  if (stats_.error.empty() && !renderer.programError().empty()) {
+    stats_.error = "a shader did not build: " + renderer.programError();
+  }
+  if (errorView && !errorPass.render(scene_, f, framebuffer, stats_)) {
+    exactPlanner_.invalidate();  // nothing the exact plan captured was drawn
+  }
+}
+
+void Demo::drawCourse(const FrameRecord& f, unsigned framebuffer, bool waitForGpu,
+                      std::chrono::steady_clock::time_point start) {
+  Result<CourseFrame*> made = graphics_.courseFrame(scene_.capture.faceSize);
+  if (!made) {
+    stats_.error = "the course's frame: " + made.error();
+    std::fprintf(stderr, "%s\n", stats_.error.c_str());
+    return;
+  }
+  CourseFrame& course = *made.value();
+  const MeshBuffers& meshes = *graphics_.meshes();
+  GpuTimer& timer = graphics_.timer();
+  timer.begin(GpuTimer::kCapture);
+  const PassCounts capture = course.captureFaces(scene_, f.seconds, meshes, f.view.eye);
+  timer.end();
+  if (waitForGpu) reflect::waitForGpu();
+  stats_.captureMs = millisecondsSince(start);
+  timer.begin(GpuTimer::kMain);
+  const PassCounts main = course.drawMain(scene_, f.seconds, meshes, f.view.view, f.view.projection,
+                                          f.view.eye, framebuffer, f.width, f.height);
+  timer.end();
+  timer.endFrame();
+  if (waitForGpu) reflect::waitForGpu();
+  stats_.frameMs = millisecondsSince(start);
+  stats_.captureDrawCalls = capture.drawCalls;
+  stats_.captureTriangles = capture.triangles;
+  stats_.mainDrawCalls = main.drawCalls;
+  stats_.mainTriangles = main.triangles;
+  stats_.probes = 1;
+  stats_.facesCaptured = 6;
 }
 
 const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width, int height,
@@ -141,57 +246,33 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   meshes_.collectFinished();  // levels built since the last frame join this one
   clock_.advance(dtSeconds);
   startStats(waitForGpu, width, height);
-  SceneRenderer* renderer = graphics_.renderer();
-  if (!renderer || width < 1 || height < 1) return stats_;  // hidden canvas: nothing to draw
+  if (!graphics_.renderer() || width < 1 || height < 1) return stats_;  // hidden canvas
 
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<PlannedObject> objects = plannedObjects(stats_.timeSeconds);
-  const FramePlan plan =
-      planner_.plan(objects, captureContext(), plannerSettings_, plannerView(width, height));
-  lastTraced_ = plan.traced;
-  ExactTracer* tracer = graphics_.tracer();
-  if (tracer && (!plan.traced.empty() || showError_)) {
-    tracer->prepare(scene_, stats_.timeSeconds, plan, camera_.eye());
+  const auto start = std::chrono::steady_clock::now();  // the frame's time includes its plan
+  lastFrame_ = record(width, height, Planning::NextFrame);
+  generalCaptured_ = !lastFrame_.course;
+  if (lastFrame_.course) {
+    drawCourse(lastFrame_, framebuffer, waitForGpu, start);
+  } else {
+    drawGeneral(lastFrame_, framebuffer, waitForGpu, start);
   }
-  capturePass(plan, waitForGpu);
-  stats_.captureMs = millisecondsSince(start);
-
-  const ViewParams view = viewParams(width, height);
-  ErrorViewPass& errorPass = graphics_.errorView();
-  const bool errorView = showError_ && errorPass.prepare(width, height);
-  const std::vector<DrawItem> draws = viewDraws(objects, width, height);
   GpuTimer& timer = graphics_.timer();
-  timer.begin(GpuTimer::kMain);
-  const PassCounts main =
-      renderer->drawMain(scene_, stats_.timeSeconds, plan, view, draws,
-                         errorView ? errorPass.currentFramebuffer() : framebuffer, width, height);
-  timer.end();
-  timer.endFrame();
-  if (waitForGpu) reflect::waitForGpu();
-  stats_.frameMs = millisecondsSince(start);
   if (timer.lastMs(GpuTimer::kCapture) && timer.lastMs(GpuTimer::kMain)) {
     stats_.gpuCaptureMs = *timer.lastMs(GpuTimer::kCapture);
     stats_.gpuFrameMs = stats_.gpuCaptureMs + *timer.lastMs(GpuTimer::kMain);
   }
-  stats_.mainDrawCalls = main.drawCalls;
-  stats_.mainTriangles = main.triangles;
-  if (stats_.error.empty() && !renderer->programError().empty()) {
-    stats_.error = "a shader did not build: " + renderer->programError();
-  }
-  if (errorView) {
-    errorPass.render(scene_, objects, captureContext(), view, draws, framebuffer, stats_);
-  }
   if (pick_.on()) {
+    const ViewParams& view = lastFrame_.view;
     const std::string error = pick_.draw(view.projection * view.view, framebuffer, width, height);
     if (!error.empty() && stats_.error.empty()) stats_.error = "pick a pixel: " + error;
   }
-  lastPlan_ = plan;
-  inside_.afterFrame(plan);
+  inside_.afterFrame(lastFrame_.plan);
   if (inside_.on()) {
     const auto lookups = [this](unsigned target, int w, int h) {
       renderLookupDirections(target, w, h);
     };
-    inside_.draw(*renderer, scene_, plan, lookups, framebuffer, width, height);
+    inside_.draw(*graphics_.renderer(), scene_, lastFrame_.plan, lookups, framebuffer, width,
+                 height);
   }
   if (!firstFrameDrawn_) {
     // The first frame is on screen: now build what the meshes were drawn without.

@@ -69,8 +69,20 @@ void DemoGraphics::meshReplaced(const std::string& name, MeshLibrary& library) {
   if (tracer_) tracer_->setMesh(name, library.bvh(name));
 }
 
+Result<CourseFrame*> DemoGraphics::courseFrame(int faceSize) {
+  if (!course_ || courseFaceSize_ != faceSize) {
+    course_.reset();
+    Result<CourseFrame> made = CourseFrame::create(faceSize);
+    if (!made) return Result<CourseFrame*>::failure(made.error());
+    course_ = std::make_unique<CourseFrame>(made.take());
+    courseFaceSize_ = faceSize;
+  }
+  return course_.get();
+}
+
 void DemoGraphics::release(MeshLibrary& library) {
   library.setGpu(nullptr);
+  course_.reset();
   errorView_.release();
   tracer_.reset();
   renderer_.reset();

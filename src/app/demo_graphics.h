@@ -1,5 +1,6 @@
 // The demo's GL resources and their lifetime: the one GPU copy of the meshes that every renderer
-// draws from, the main renderer, the GPU timer, the exact mode's tracer and the error view's pass.
+// draws from, the main renderer, the GPU timer, the exact mode's tracer, the error view's pass and
+// the course's own frame (made the first time the course preset draws).
 // Made from the CPU side (init), freed (release), and made again after a lost context.
 #pragma once
 
@@ -8,7 +9,9 @@
 #include "app/error_view_pass.h"
 #include "app/mesh_library.h"
 #include "core/accuracy_settings.h"
+#include "core/result.h"
 #include "core/skybox_faces.h"
+#include "course/course_frame.h"
 #include "gfx/exact_tracer.h"
 #include "gfx/gpu_timer.h"
 #include "gfx/mesh_buffer.h"
@@ -39,6 +42,8 @@ class DemoGraphics {
   GpuTimer& timer() const { return *timer_; }
   ExactTracer* tracer() const { return tracer_.get(); }
   ErrorViewPass& errorView() { return errorView_; }
+  // The course's frame for `faceSize` faces: made on first use, made again for another size.
+  Result<CourseFrame*> courseFrame(int faceSize);
   const MeshBuffers* meshes() const { return meshes_.get(); }
 
  private:
@@ -47,6 +52,8 @@ class DemoGraphics {
   std::unique_ptr<GpuTimer> timer_;
   std::unique_ptr<ExactTracer> tracer_;
   ErrorViewPass errorView_;
+  std::unique_ptr<CourseFrame> course_;
+  int courseFaceSize_ = 0;
 };
 
 }  // namespace reflect

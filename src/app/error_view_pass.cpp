@@ -19,7 +19,7 @@ std::string ErrorViewPass::setUp(const AccuracySettings& current, const MeshBuff
       std::string error = renderer_->setSkybox(*skybox);
       if (!error.empty()) return error;
     }
-    planner_.invalidate();
+    remade_ = true;  // it holds no capture yet
   }
   // The shared meshes and the tracer may have been made again since (after a lost context).
   renderer_->setMeshes(meshes);
@@ -40,19 +40,14 @@ bool ErrorViewPass::prepare(int width, int height) {
   return view_ && renderer_ && tracer_ && view_->resize(width, height).empty();
 }
 
-void ErrorViewPass::render(const Scene& scene, const std::vector<PlannedObject>& objects,
-                           CaptureContext context, const ViewParams& view,
-                           const std::vector<DrawItem>& draws, unsigned framebuffer,
+bool ErrorViewPass::render(const Scene& scene, const FrameRecord& frame, unsigned framebuffer,
                            FrameStats& stats) {
   const auto start = std::chrono::steady_clock::now();
-  context.accuracy.search = Search::Exact;
-  context.captureLod = 0.0f;
-  const FramePlan plan = planner_.plan(objects, context, PlannerSettings{});
-  Result<PassCounts> capture = renderer_->capture(scene, stats.timeSeconds, plan, view.eye);
-  if (!capture) planner_.invalidate();
+  const FramePlan& plan = *frame.exactPlan;
+  Result<PassCounts> capture = renderer_->capture(scene, frame.seconds, plan, frame.view.eye);
   tracer_->setMark(true);
-  renderer_->drawMain(scene, stats.timeSeconds, plan, view, draws, view_->exactFramebuffer(),
-                      stats.width, stats.height);
+  renderer_->drawMain(scene, frame.seconds, plan, frame.view, frame.mainDraws,
+                      view_->exactFramebuffer(), frame.width, frame.height);
   tracer_->setMark(false);
   const ErrorViewStats e = view_->compose(framebuffer);
   stats.errorView = true;
@@ -63,6 +58,7 @@ void ErrorViewPass::render(const Scene& scene, const std::vector<PlannedObject>&
   stats.errorMax = e.maxError;
   stats.errorViewMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return static_cast<bool>(capture);
 }
 
 void ErrorViewPass::release() {

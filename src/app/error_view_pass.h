@@ -1,11 +1,14 @@
 // The live error view's half of a frame (show error): the same frame rendered again in the exact
 // mode off screen by a second renderer, which draws from the same GPU meshes as the first, then
-// compared with the current mode's on the GPU (ErrorView) and shown as a heat map.
+// compared with the current mode's on the GPU (ErrorView) and shown as a heat map. The exact
+// frame's plan is the frame record's (Demo::record plans it beside the frame's own).
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
+#include "app/frame_record.h"
 #include "app/frame_stats.h"
 #include "core/accuracy_settings.h"
 #include "core/frame_planner.h"
@@ -31,19 +34,22 @@ class ErrorViewPass {
   bool prepare(int width, int height);
   // Where the current mode's frame goes while the view is on.
   unsigned currentFramebuffer() const { return view_->currentFramebuffer(); }
-  // The exact frame of `objects` (the eye and sizes from `view` and `stats`), the comparison
-  // into `framebuffer`, and the numbers into `stats`. `context` is the current frame's.
-  void render(const Scene& scene, const std::vector<PlannedObject>& objects, CaptureContext context,
-              const ViewParams& view, const std::vector<DrawItem>& draws, unsigned framebuffer,
+  // The record's exact frame (its exactPlan, drawn with its camera and main draws), the comparison
+  // into `framebuffer`, and the numbers into `stats`. False when its capture failed (nothing the
+  // exact plan asked for was drawn: the caller's planner must forget it).
+  bool render(const Scene& scene, const FrameRecord& frame, unsigned framebuffer,
               FrameStats& stats);
+  // Whether its exact renderer was made anew since the last call: the planner of its frames must
+  // then forget what it captured.
+  bool takeRemade() { return std::exchange(remade_, false); }
   // Frees its GL resources (or forgets them, after a lost context).
   void release();
 
  private:
   std::unique_ptr<SceneRenderer> renderer_;  // the exact pass
   std::unique_ptr<ErrorView> view_;
-  FramePlanner planner_;
   ExactTracer* tracer_ = nullptr;  // not owned
+  bool remade_ = false;
 };
 
 }  // namespace reflect

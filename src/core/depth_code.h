@@ -17,8 +17,4 @@ inline uint32_t depthCode(double z) {
   return static_cast<uint32_t>(std::clamp(std::floor(e * 65535.0 + 0.5), 0.0, 65534.0));
 }
 
-inline double depthOfCode(uint32_t code) {
-  return code >= kInfiniteDepthCode ? INFINITY : 1.0 / (1.0 - static_cast<double>(code) / 65535.0);
-}
-
 }  // namespace reflect

@@ -47,6 +47,7 @@ struct PlannerSettings {
   float viewLod = 0.0f;
   // The largest number of frames a face may lag behind the scene under this policy.
   int maxStalenessFrames() const;
+  bool operator==(const PlannerSettings&) const = default;
 };
 
 // One level of detail of an object's mesh (the pointer is borrowed for the plan() call).

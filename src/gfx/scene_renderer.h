@@ -63,10 +63,6 @@ class SceneRenderer {
   void setMeshes(const MeshBuffers* meshes) { meshes_ = meshes; }
   // The static cube map behind the scene (and the environment of Skybox-lit objects).
   std::string setSkybox(const CubeFaces& faces);
-  void clearSkybox() {
-    skybox_.reset();
-    skyPrefiltered_.reset();
-  }
 
   // Renders the plan's faces (scene_renderer_capture.cpp). `lightingEye` is the main camera's
   // eye: the course lights captures as seen from it. Probe targets are created (or resized) on

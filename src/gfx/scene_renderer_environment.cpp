@@ -1,7 +1,7 @@
 // SceneRenderer's programs and its reflectors: the shader variants by key (program_key.h), built
 // the first time a draw needs one; which variant draws an object in a pass; and what a
 // reflector's draw binds: its probe's colour cubes and depth pyramid, and the search's per-draw
-// uniforms. The captures and draws are in scene_renderer.cpp.
+// uniforms. The captures are in scene_renderer_capture.cpp, the draws in scene_renderer.cpp.
 #include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
 

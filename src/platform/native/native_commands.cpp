@@ -147,7 +147,8 @@ std::string writeReference(Demo& demo, const CliOptions& o) {
 }
 
 // The faces view of the frame just drawn (--faces): the same image the page shows.
-std::string writeFacesView(const Demo& demo, const CliOptions& o) {
+std::string writeFacesView(Demo& demo, const CliOptions& o) {
+  demo.ensureGeneralCaptures();  // the course's own file draws into a cube of its own
   Result<RgbaImage> view =
       composeFacesView(*demo.renderer(), demo.scene(), demo.lastPlan(), demo.insideViews().ages(),
                        o.view.facesChannel, 0, 0, o.view.facesProbe);
