@@ -20,6 +20,17 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
+// Runs `draw` inside the GPU timer's query for `pass`, then, when asked, waits for the GPU, so
+// that the CPU's clock sees the pass's whole cost too.
+template <typename Draw>
+auto timedPass(GpuTimer& timer, GpuTimer::Pass pass, bool waitForGpu, Draw draw) {
+  timer.begin(pass);
+  auto counts = draw();
+  timer.end();
+  if (waitForGpu) reflect::waitForGpu();
+  return counts;
+}
+
 }  // namespace
 
 CaptureContext Demo::captureContext() const {
@@ -186,14 +197,11 @@ void Demo::drawGeneral(const FrameRecord& f, unsigned framebuffer, bool waitForG
   stats_.captureMs = millisecondsSince(start);
   ErrorViewPass& errorPass = graphics_.errorView();
   const bool errorView = f.exactPlan && errorPass.prepare(f.width, f.height);
-  GpuTimer& timer = graphics_.timer();
-  timer.begin(GpuTimer::kMain);
-  const PassCounts main = renderer.drawMain(
-      scene_, f.seconds, f.plan, f.view, f.mainDraws,
-      errorView ? errorPass.currentFramebuffer() : framebuffer, f.width, f.height);
-  timer.end();
-  timer.endFrame();
-  if (waitForGpu) reflect::waitForGpu();
+  const unsigned target = errorView ? errorPass.currentFramebuffer() : framebuffer;
+  const PassCounts main = timedPass(graphics_.timer(), GpuTimer::kMain, waitForGpu, [&] {
+    return renderer.drawMain(scene_, f.seconds, f.plan, f.view, f.mainDraws, target, f.width,
+                             f.height);
+  });
   stats_.frameMs = millisecondsSince(start);
   stats_.mainDrawCalls = main.drawCalls;
   stats_.mainTriangles = main.triangles;
@@ -221,17 +229,14 @@ void Demo::drawCourse(const FrameRecord& f, unsigned framebuffer, bool waitForGp
   CourseFrame& course = *made.value();
   const MeshBuffers& meshes = *graphics_.meshes();
   GpuTimer& timer = graphics_.timer();
-  timer.begin(GpuTimer::kCapture);
-  const PassCounts capture = course.captureFaces(scene_, f.seconds, meshes, f.view.eye);
-  timer.end();
-  if (waitForGpu) reflect::waitForGpu();
+  const PassCounts capture = timedPass(timer, GpuTimer::kCapture, waitForGpu, [&] {
+    return course.captureFaces(scene_, f.seconds, meshes, f.view.eye);
+  });
   stats_.captureMs = millisecondsSince(start);
-  timer.begin(GpuTimer::kMain);
-  const PassCounts main = course.drawMain(scene_, f.seconds, meshes, f.view.view, f.view.projection,
-                                          f.view.eye, framebuffer, f.width, f.height);
-  timer.end();
-  timer.endFrame();
-  if (waitForGpu) reflect::waitForGpu();
+  const PassCounts main = timedPass(timer, GpuTimer::kMain, waitForGpu, [&] {
+    return course.drawMain(scene_, f.seconds, meshes, f.view.view, f.view.projection, f.view.eye,
+                           framebuffer, f.width, f.height);
+  });
   stats_.frameMs = millisecondsSince(start);
   stats_.captureDrawCalls = capture.drawCalls;
   stats_.captureTriangles = capture.triangles;
@@ -257,6 +262,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
     drawGeneral(lastFrame_, framebuffer, waitForGpu, start);
   }
   GpuTimer& timer = graphics_.timer();
+  timer.endFrame();
   if (timer.lastMs(GpuTimer::kCapture) && timer.lastMs(GpuTimer::kMain)) {
     stats_.gpuCaptureMs = *timer.lastMs(GpuTimer::kCapture);
     stats_.gpuFrameMs = stats_.gpuCaptureMs + *timer.lastMs(GpuTimer::kMain);

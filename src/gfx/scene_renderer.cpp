@@ -22,10 +22,11 @@ Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
 
   SceneRenderer r;
   r.accuracy_ = accuracy;
+  r.programs_ = ProgramCache(accuracy.mediump);
   // The programs every scene's main pass needs are built now, so a shader that does not build
   // fails here, loudly; the other variants when a draw first needs them.
   for (const ProgramKey& key : {ProgramKey{}, ProgramKey{Look::Environment}}) {
-    if (!r.program(key)) return Result<SceneRenderer>::failure(r.programError_);
+    if (!r.programs_.get(key)) return Result<SceneRenderer>::failure(r.programs_.lastError());
   }
 
   r.pyramid_ = pyramid.take();
@@ -86,91 +87,82 @@ const CubeCaptureTarget* SceneRenderer::probeTarget(int owner) const {
   return it == probes_.end() ? nullptr : &it->second;
 }
 
-void SceneRenderer::use(const Program& p, const Scene& scene, const glm::mat4& viewProj,
-                        const glm::vec3& viewPosition, const CaptureState& pass,
-                        int outputDirections) {
-  current_ = &p;
-  glUseProgram(p.program.id());
-  const ProgramUniforms& u = p.program.u();
-  u.capture.set(pass);
-  u.viewProjection.set(viewProj);
-  u.viewPosition.set(viewPosition);
-  switch (p.key.look) {
-    case Look::Phong:
-      u.lightPosition.set(scene.light.position);
-      u.ambient.set(scene.light.ambient);
-      u.diffuse.set(scene.light.diffuse);
-      u.specular.set(scene.light.specular);
-      u.shininess.set(scene.light.shininess);
-      break;
-    case Look::Environment:
-      u.outputDirection.set(outputDirections);
-      if (p.key.search == Search::Exact && exact_) exact_->bind(u.exact, accuracy_.lobeRays);
-      break;
-    case Look::CubeTextured:
-      break;
-  }
+void SceneRenderer::setForPass(const PhongUniforms& u, const ProgramKey&,
+                               const DrawPass& pass) const {
+  u.mesh.viewPosition.set(pass.lightingEye);
+  u.setLight(pass.scene.light);
 }
 
-PassCounts SceneRenderer::drawObject(const Scene& scene, const FramePlan& plan,
-                                     const DrawItem& item, double seconds) {
-  const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
+void SceneRenderer::setForPass(const EnvironmentUniforms& u, const ProgramKey& key,
+                               const DrawPass& pass) const {
+  u.mesh.viewPosition.set(pass.environmentEye);
+  u.outputDirection.set(pass.outputDirections);
+  if (key.search == Search::Exact && exact_) exact_->bind(u.exact, accuracy_.lobeRays);
+}
+
+void SceneRenderer::setForPass(const CubeTexturedUniforms& u, const ProgramKey&,
+                               const DrawPass& pass) const {
+  u.mesh.viewPosition.set(pass.environmentEye);
+}
+
+void SceneRenderer::setForObject(const EnvironmentUniforms& u, const ProgramKey& key,
+                                 const DrawPass& pass, const DrawItem& item,
+                                 const glm::mat4& model) const {
+  const SceneObject& object = pass.scene.objects[static_cast<size_t>(item.object)];
+  u.reflectionWeight.set(object.reflection);
+  u.baseWeight.set(object.base);
+  u.eta.set(1.0f / clampedIor(object.ior));
+  u.fresnelF0.set(fresnelF0(object.ior));
+  u.fresnel.set(object.fresnel);
+  if (key.refracts) {
+    // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in closed
+    // form, otherwise through its interior map, with the GLASS_EXIT programs.
+    const MeshBuffer* full = mesh(object.mesh, 0);
+    const float radius = sphereRadiusIn(full, model);
+    const GlassInteriorMap* interior = key.glassExit ? glassExitOf(object, model) : nullptr;
+    if (interior) u.glassExit.set(*interior, model);
+    u.twoSurfaces.set(accuracy_.glassSurfaces == 2 && (radius > 0.0f || interior));
+    const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
+    u.glassSphere.set(glm::vec4(centre, radius));
+  }
+  bindEnvironment(u, key, pass.scene, object, environmentOf(pass.scene, pass.plan, item.object));
+  if (key.search == Search::Exact && exact_) exact_->bindObject(u.exact, item.object);
+}
+
+void SceneRenderer::setForObject(const CubeTexturedUniforms&, const ProgramKey&,
+                                 const DrawPass& pass, const DrawItem& item,
+                                 const glm::mat4&) const {
+  bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP,
+              environmentOf(pass.scene, pass.plan, item.object).colour);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+template <typename Uniforms>
+PassCounts SceneRenderer::drawObject(const Uniforms& u, const ProgramKey& key, const DrawPass& pass,
+                                     const DrawItem& item) const {
+  const SceneObject& object = pass.scene.objects[static_cast<size_t>(item.object)];
   const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
-  const Program& p = *current_;
-  const ProgramUniforms& u = p.program.u();
-  const glm::mat4 model = scene.modelMatrix(object, seconds);
-  u.model.set(model);
-  u.normalMatrix.set(normalMatrixOf(glm::mat3(model)));
+  const glm::mat4 model = pass.scene.modelMatrix(object, pass.seconds);
+  u.mesh.model.set(model);
+  u.mesh.normalMatrix.set(normalMatrixOf(glm::mat3(model)));
   // The object's size, for the third capture pass (capture_output.glsl).
   const Bounds world = transformBounds(buffer->bounds(), model);
-  u.capture.extent.set(glm::length(world.max - world.min) / scene.capture.near);
-  u.colour.set(object.colour);
-  switch (p.key.look) {
-    case Look::Phong:
-      break;
-    case Look::Environment: {
-      u.reflectionWeight.set(object.reflection);
-      u.baseWeight.set(object.base);
-      u.eta.set(1.0f / clampedIor(object.ior));
-      u.fresnelF0.set(fresnelF0(object.ior));
-      u.fresnel.set(object.fresnel);
-      if (p.key.refracts) {
-        // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in
-        // closed form, otherwise through its interior map, with the GLASS_EXIT programs.
-        const MeshBuffer* full = mesh(object.mesh, 0);
-        const float radius = sphereRadiusIn(full, model);
-        const GlassInteriorMap* interior = p.key.glassExit ? glassExitOf(object, model) : nullptr;
-        if (interior) u.glassExit.set(*interior, model);
-        const bool twoSurfaces = accuracy_.glassSurfaces == 2 && (radius > 0.0f || interior);
-        u.twoSurfaces.set(twoSurfaces);
-        const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
-        u.glassSphere.set(glm::vec4(centre, radius));
-      }
-      bindEnvironment(scene, plan, item.object);
-      if (p.key.search == Search::Exact && exact_) {
-        exact_->bindObject(u.exact, item.object);
-      }
-      break;
-    }
-    case Look::CubeTextured:
-      bindEnvironment(scene, plan, item.object);
-      break;
-  }
+  u.mesh.capture.extent.set(glm::length(world.max - world.min) / pass.scene.capture.near);
+  u.mesh.colour.set(object.colour);
+  setForObject(u, key, pass, item, model);
   buffer->draw(item.ranges);
   const size_t triangles = item.ranges.empty() ? buffer->triangleCount() : item.triangles;
   return {static_cast<int>(std::max<size_t>(item.ranges.size(), 1)), triangles};
 }
 
-PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const FramePlan& plan,
-                                    const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
-                                    const glm::vec3& viewPosition,
-                                    const glm::vec3& environmentViewPosition,
-                                    const CaptureState& pass, int outputDirections) {
+PassCounts SceneRenderer::drawItems(const DrawPass& pass, const std::vector<DrawItem>& draws) {
   // One program switch per variant present, in the keys' order (Phong first).
   std::vector<std::pair<ProgramKey, const DrawItem*>> keyed;
   keyed.reserve(draws.size());
-  for (const DrawItem& d : draws) keyed.emplace_back(keyFor(scene, plan, d, pass, seconds), &d);
+  for (const DrawItem& d : draws) {
+    keyed.emplace_back(keyFor(pass.scene, pass.plan, d, pass.capture, pass.seconds), &d);
+  }
   std::stable_sort(keyed.begin(), keyed.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   PassCounts counts;
@@ -178,15 +170,25 @@ PassCounts SceneRenderer::drawItems(const Scene& scene, double seconds, const Fr
     size_t end = i;
     while (end < keyed.size() && keyed[end].first == keyed[i].first) ++end;
     ProgramKey key = keyed[i].first;
-    const Program* p = program(key);
+    const SceneProgram* p = programs_.get(key);
     if (!p && key.glassExit) {  // no interior-map program: glass leaves at one surface
       key.glassExit = false;
-      p = program(key);
+      p = programs_.get(key);
     }
     if (p) {
-      use(*p, scene, viewProj, key.look == Look::Phong ? viewPosition : environmentViewPosition,
-          pass, outputDirections);
-      for (size_t k = i; k < end; ++k) counts += drawObject(scene, plan, *keyed[k].second, seconds);
+      glUseProgram(p->id());
+      const MeshPassUniforms& mesh = p->mesh();
+      mesh.capture.set(pass.capture);
+      mesh.viewProjection.set(pass.viewProjection);
+      // The program's own type from here on: each setter reaches its own table alone.
+      std::visit(
+          [&](const auto& program) {
+            setForPass(program.u(), key, pass);
+            for (size_t k = i; k < end; ++k) {
+              counts += drawObject(program.u(), key, pass, *keyed[k].second);
+            }
+          },
+          p->program);
     }
     i = end;
   }
@@ -205,10 +207,10 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Fra
   glDisable(GL_CULL_FACE);  // the ground quad is seen from both sides
   glClearColor(scene.clearColour.r, scene.clearColour.g, scene.clearColour.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  const CaptureState pass;  // the main pass: colour only
-  PassCounts counts = drawItems(scene, seconds, plan, draws, camera.projection * camera.view,
-                                camera.eye, camera.eye, pass, outputDirections);
-  if (skybox_) skybox_->draw(camera.projection, camera.view, pass);
+  const DrawPass pass{scene,      seconds,    plan, camera.projection * camera.view,
+                      camera.eye, camera.eye, {},   outputDirections};  // colour only
+  PassCounts counts = drawItems(pass, draws);
+  if (skybox_) skybox_->draw(camera.projection, camera.view, pass.capture);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   glBindVertexArray(0);

@@ -27,6 +27,7 @@
 #include "gfx/mesh_buffer.h"
 #include "gfx/probe_prefilter.h"
 #include "gfx/program_key.h"
+#include "gfx/scene_programs.h"
 #include "gfx/shader_program.h"
 #include "gfx/skybox_pass.h"
 #include "gfx/uniform_table.h"
@@ -104,7 +105,7 @@ class SceneRenderer {
   // The exact mode's scene (search: exact), bound with the environment program; not owned.
   void setExactTracer(const ExactTracer* tracer) { exact_ = tracer; }
   // The last program that failed to build, as "environment.frag (main, exact): ...", or "".
-  const std::string& programError() const { return programError_; }
+  const std::string& programError() const { return programs_.lastError(); }
   // Programs built so far (each variant once), for tests.
   size_t programCount() const { return programs_.size(); }
   // The active uniforms of the programs built so far that no table entry sets, as
@@ -112,58 +113,6 @@ class SceneRenderer {
   std::vector<std::string> unsetUniforms() const;
 
  private:
-  // Every uniform of the scene's programs (mesh.vert with phong.frag, environment.frag or
-  // cube_textured.frag), a table for each variant (uniform_table.h); an entry the variant does
-  // not use is -1, which GL ignores.
-  struct ProgramUniforms : UniformTable {
-    CaptureUniforms capture{*this};
-    Uniform<glm::mat4> viewProjection{*this, "u_viewProjection"};
-    Uniform<glm::mat4> model{*this, "u_model"};
-    Uniform<glm::mat3> normalMatrix{*this, "u_normalMatrix"};
-    Uniform<glm::vec3> viewPosition{*this, "u_viewPosition"};
-    Uniform<glm::vec3> colour{*this, "u_colour"};
-    // phong.frag
-    Uniform<glm::vec3> lightPosition{*this, "u_lightPosition"};
-    Uniform<float> ambient{*this, "u_ambient"};
-    Uniform<float> diffuse{*this, "u_diffuse"};
-    Uniform<float> specular{*this, "u_specular"};
-    Uniform<float> shininess{*this, "u_shininess"};
-    // environment.frag: the material
-    Uniform<float> reflectionWeight{*this, "u_reflectionWeight"};
-    Uniform<float> baseWeight{*this, "u_baseWeight"};
-    Uniform<float> eta{*this, "u_eta"};
-    Uniform<float> fresnelF0{*this, "u_fresnelF0"};
-    Uniform<bool> fresnel{*this, "u_fresnel"};
-    Uniform<bool> twoSurfaces{*this, "u_twoSurfaces"};
-    Uniform<glm::vec4> glassSphere{*this, "u_glassSphere"};
-    Uniform<float> roughLod{*this, "u_roughLod"};
-    Uniform<float> refractLod{*this, "u_refractLod"};
-    Uniform<float> roughAlpha{*this, "u_roughAlpha"};
-    // environment.frag: the probe and its search
-    Uniform<glm::vec3> probeCentre{*this, "u_probeCentre"};
-    Uniform<float> distanceUnit{*this, "u_distanceUnit"};
-    Uniform<int> outputDirection{*this, "u_outputDirection"};
-    Uniform<int> layers{*this, "u_layers"};
-    Uniform<int> faceSize{*this, "u_faceSize"};
-    Uniform<int> topLevel{*this, "u_topLevel"};
-    Uniform<int> pyramidTile{*this, "u_pyramidTile"};
-    UniformArray<glm::vec3> faceRight{*this, "u_faceRight"};
-    UniformArray<glm::vec3> faceUp{*this, "u_faceUp"};
-    UniformArray<glm::vec3> faceAxis{*this, "u_faceAxis"};
-    // Texture units, set once when the program is built.
-    Uniform<int> environment{*this, "u_environment"};
-    Uniform<int> environment2{*this, "u_environment2"};
-    Uniform<int> pyramid{*this, "u_pyramid"};
-    Uniform<int> prefiltered{*this, "u_prefiltered"};
-    GlassExitUniforms glassExit{*this};
-    ExactUniforms exact{*this};
-  };
-  // One variant (program_key.h), built with its uniforms' table.
-  struct Program {
-    ProgramKey key;
-    TabledProgram<ProgramUniforms> program;
-  };
-
   SceneRenderer() = default;
   // The capture's parts (scene_renderer_capture.cpp).
   struct CaptureJob;
@@ -175,26 +124,50 @@ class SceneRenderer {
   PassCounts capturePass(const CaptureJob& job, const ProbePlan& probe, const CubeCaptureTarget& t,
                          const FacePlan& face, StepPass pass,
                          const std::vector<DrawItem>& backDraws);
-  static Result<Program> buildProgram(const ProgramKey& key, bool mediump);
-  // The program of `key`, built the first time it is asked for; null when it does not build (the
-  // error goes to stderr once).
-  const Program* program(const ProgramKey& key);
   // The variant that draws `item` in `pass`: its look; for a mirror or glass, whether its rays
   // are traced, its probe searched (and how) or looked up plainly.
   ProgramKey keyFor(const Scene& scene, const FramePlan& plan, const DrawItem& item,
                     const CaptureState& pass, double seconds) const;
-  // Draws `draws` grouped by program; `viewPosition` is where the (Phong) viewer is.
-  PassCounts drawItems(const Scene& scene, double seconds, const FramePlan& plan,
-                       const std::vector<DrawItem>& draws, const glm::mat4& viewProj,
-                       const glm::vec3& viewPosition, const glm::vec3& environmentViewPosition,
-                       const CaptureState& pass, int outputDirections);
-  PassCounts drawObject(const Scene& scene, const FramePlan& plan, const DrawItem& item,
-                        double seconds);
-  void use(const Program& program, const Scene& scene, const glm::mat4& viewProj,
-           const glm::vec3& viewPosition, const CaptureState& pass, int outputDirections);
-  // Binds object `index`'s environment (its probe's layers, or the sky) for the environment
-  // program in use and sets the search's uniforms.
-  void bindEnvironment(const Scene& scene, const FramePlan& plan, int index);
+  // What every draw of one pass shares.
+  struct DrawPass {
+    const Scene& scene;
+    double seconds;
+    const FramePlan& plan;
+    glm::mat4 viewProjection;
+    glm::vec3 lightingEye;     // where Phong's viewer is (the main camera's eye, as the course)
+    glm::vec3 environmentEye;  // where a mirror's view rays start (a capture: the probe centre)
+    CaptureState capture;
+    int outputDirections = 0;
+  };
+  // Draws `draws` grouped by program, each group with its program's own type.
+  PassCounts drawItems(const DrawPass& pass, const std::vector<DrawItem>& draws);
+  // What each program sets once a pass (the light; the output and the tracer) and per object
+  // (the material and its environment), one overload a program type (scene_programs.h).
+  void setForPass(const PhongUniforms& u, const ProgramKey& key, const DrawPass& pass) const;
+  void setForPass(const EnvironmentUniforms& u, const ProgramKey& key, const DrawPass& pass) const;
+  void setForPass(const CubeTexturedUniforms& u, const ProgramKey& key, const DrawPass& pass) const;
+  void setForObject(const PhongUniforms&, const ProgramKey&, const DrawPass&, const DrawItem&,
+                    const glm::mat4&) const {}
+  void setForObject(const EnvironmentUniforms& u, const ProgramKey& key, const DrawPass& pass,
+                    const DrawItem& item, const glm::mat4& model) const;
+  void setForObject(const CubeTexturedUniforms& u, const ProgramKey& key, const DrawPass& pass,
+                    const DrawItem& item, const glm::mat4& model) const;
+  // Draws one object with the program of type `Uniforms` in use.
+  template <typename Uniforms>
+  PassCounts drawObject(const Uniforms& u, const ProgramKey& key, const DrawPass& pass,
+                        const DrawItem& item) const;
+  // What object `index` looks its environment up in (its probe's layers, or the sky): bound to
+  // their units, for the program in use (scene_renderer_environment.cpp).
+  struct EnvironmentBinding {
+    GLuint colour = 0, colour2 = 0, pyramid = 0, prefiltered = 0;
+    int layers = 1, faceSize = 1, topLevel = 0;
+    int filteredFaceSize = 1;  // the face size of the cube the rough levels were filtered from
+    glm::vec3 centre{0.0f};
+  };
+  EnvironmentBinding environmentOf(const Scene& scene, const FramePlan& plan, int index) const;
+  // The environment program's search uniforms and textures for `b`.
+  void bindEnvironment(const EnvironmentUniforms& u, const ProgramKey& key, const Scene& scene,
+                       const SceneObject& object, const EnvironmentBinding& b) const;
   // Whether object `index`'s lookup searches its probe's depths (its probe is captured, is no
   // skybox, and not every surface it sees is far enough for the plain lookup).
   bool searchesFor(const Scene& scene, const FramePlan& plan, int index) const;
@@ -215,10 +188,7 @@ class SceneRenderer {
   // Drops the interior maps of glass meshes replaced in the shared set since they were made.
   void forgetReplacedGlassMeshes(const Scene& scene);
 
-  std::map<ProgramKey, Program> programs_;
-  std::set<ProgramKey> failedPrograms_;
-  std::string programError_;
-  const Program* current_ = nullptr;
+  ProgramCache programs_{false};
   GlassInteriorMaps glassInteriors_;
   DepthPyramidPrograms pyramid_;
   std::unique_ptr<SkyboxPass> skybox_;

@@ -88,16 +88,20 @@ PassCounts SceneRenderer::capturePass(const CaptureJob& job, const ProbePlan& pr
   bindTexture(kPeelDepthsUnit, GL_TEXTURE_2D_ARRAY,
               layer == 1 ? emptyDepths_.id() : t.faceDepths(0));
   bindTexture(kPeelBacksUnit, GL_TEXTURE_2D_ARRAY, layer == 2 ? t.backs() : emptyDepths_.id());
-  const CaptureState pass{layer, probe.centre, axis, scene.capture.near, face.face};
   // Other mirrors in view use their cube as it was before this frame's capture of them (one
   // bounce); they are seen from the probe centre.
-  const PassCounts counts =
-      drawItems(scene, job.seconds, job.plan,
-                layer == 1   ? face.draws
-                : layer == 3 ? backDraws
-                             : face.secondLayerDraws,
-                job.projection * view, job.lightingEye, probe.centre, pass, false);
-  if (skybox_ && layer != 3) skybox_->draw(job.projection, view, pass);
+  const DrawPass pass{scene,
+                      job.seconds,
+                      job.plan,
+                      job.projection * view,
+                      job.lightingEye,
+                      probe.centre,
+                      {layer, probe.centre, axis, scene.capture.near, face.face},
+                      kOutputColour};
+  const PassCounts counts = drawItems(pass, layer == 1   ? face.draws
+                                            : layer == 3 ? backDraws
+                                                         : face.secondLayerDraws);
+  if (skybox_ && layer != 3) skybox_->draw(job.projection, view, pass.capture);
   if (layer == 3) CubeCaptureTarget::endBackPass();
   return counts;
 }
