@@ -96,10 +96,10 @@ class SceneRenderer {
   // The static sky's prefiltered cube (0 when no rough reader reads the sky), for tests.
   GLuint skyPrefilteredTexture() const { return skyPrefiltered_ ? skyPrefiltered_->texture() : 0; }
   double lastFilterSamples() const { return lastFilterSamples_; }
-  // With `wait`, the prefilter pass waits for the GPU before and after it, so that
-  // lastFilterMs() is its own time (benches; the page does not wait).
-  void setTimePrefilter(bool wait) { timePrefilter_ = wait; }
-  double lastFilterMs() const { return lastFilterMs_; }
+  // Told just before (true) and after (false) each capture's prefilter pass, so that the caller
+  // can time it on its own clock (Demo's stats); unset (the default), nothing is called.
+  using PrefilterTiming = std::function<void(bool starting)>;
+  void setPrefilterTiming(PrefilterTiming timing) { prefilterTiming_ = std::move(timing); }
   // Glass interior maps made so far (one per non-sphere glass mesh in use), for tests.
   size_t glassInteriorMaps() const { return glassInteriors_.count(); }
   // The exact mode's scene (search: exact), bound with the environment program; not owned.
@@ -202,8 +202,7 @@ class SceneRenderer {
   std::unique_ptr<ProbePrefilter> prefilter_;        // built the first time a probe is filtered
   std::unique_ptr<PrefilteredCube> skyPrefiltered_;  // the sky's rough levels: rough readers only
   double lastFilterSamples_ = 0.0;
-  double lastFilterMs_ = 0.0;
-  bool timePrefilter_ = false;
+  PrefilterTiming prefilterTiming_;
   AccuracySettings accuracy_;
   const MeshBuffers* meshes_ = nullptr;
   std::map<std::string, uint64_t> glassMeshSerials_;  // each glass mesh's serial when last seen

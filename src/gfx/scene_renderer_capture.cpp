@@ -2,7 +2,6 @@
 // passes and their order, one rule for the renderer and the step list), then the faces' depth
 // pyramid. With an observer, it is told after each step and may stop the capture there (Inside
 // the frame, "Step through a frame"); without one the passes run as they always did.
-#include <chrono>
 #include <cmath>
 
 #include "core/cube_faces.h"
@@ -177,17 +176,10 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
     glEnable(GL_DEPTH_TEST);
     if (capturesDepths(probe, accuracy_) && job.stopAfterStep()) going = false;
   }
-  lastFilterMs_ = 0.0;
   if (going) {
-    if (timePrefilter_) waitForGpu();
-    const auto start = std::chrono::steady_clock::now();
+    if (prefilterTiming_) prefilterTiming_(true);
     Result<double> filtered = prefilterProbes(plan);
-    if (timePrefilter_) {
-      waitForGpu();
-      lastFilterMs_ =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-              .count();
-    }
+    if (prefilterTiming_) prefilterTiming_(false);
     if (!filtered) return Result<PassCounts>::failure(filtered.error());
   }
   glActiveTexture(GL_TEXTURE0);
