@@ -8,6 +8,7 @@
 #include "app/headless_frames.h"
 #include "bench/accuracy.h"
 #include "core/error_metrics.h"
+#include "core/presets.h"
 #include "core/settings_schema.h"
 #include "gfx/offscreen_target.h"
 
@@ -48,11 +49,9 @@ void appendRoughSettings(std::vector<SweepSetting>& s) {
 }  // namespace
 
 std::vector<SweepSetting> sweepSettings() {
-  AccuracySettings course;  // the course: captured at the origin, 16-bit depth, plain lookup
-  course.captureAtOrigin = true;
-  course.depthBits = 16;
-  course.search = Search::Plain;
-  course.glassSurfaces = 1;
+  // The course's settings are the preset's, so that the sweep, the CLI and the page measure one
+  // definition of it.
+  const Preset* course = findPreset("course");
   const AccuracySettings shipped;  // the default: planned (traced or captured, per reflector)
   AccuracySettings hierarchical;   // the cube-map search with two layers (the default before)
   hierarchical.search = Search::Hierarchical;
@@ -63,7 +62,7 @@ std::vector<SweepSetting> sweepSettings() {
   AccuracySettings oneLayer = hierarchical;
   oneLayer.layers = 1;
 
-  std::vector<SweepSetting> s = {{"original", course, 256},
+  std::vector<SweepSetting> s = {{"original", course->accuracy, 256, course->planner},
                                  {"default", shipped, 256},
                                  {"hierarchical", hierarchical, 256},
                                  {"centre", centre, 256},
@@ -107,9 +106,7 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
   for (const SweepSetting& s : settings) {
     auto demo = makeDemo();
     if (!demo) return Out::failure(demo.error());
-    PlannerSettings everyFrame;  // capture cost fully counted in every row
-    everyFrame.policy = UpdatePolicy::EveryFrame;
-    demo.value()->setPlannerSettings(everyFrame);
+    demo.value()->setPlannerSettings(s.planner);
     if (s.faceSize > 0) demo.value()->setCubeFaceSize(s.faceSize);
     std::string error = demo.value()->setAccuracySettings(s.accuracy);
     if (error.empty()) error = demo.value()->initGraphics();

@@ -12,19 +12,30 @@
 
 #include "app/demo.h"
 #include "core/accuracy_settings.h"
+#include "core/frame_planner.h"
 #include "core/result.h"
 #include "reference/reference_renderer.h"
 
 namespace reflect {
 
+// The default planner with every face recaptured every frame, so that each row's capture cost
+// is counted in full.
+inline PlannerSettings everyFramePlanner() {
+  PlannerSettings planner;
+  planner.policy = UpdatePolicy::EveryFrame;
+  return planner;
+}
+
 struct SweepSetting {
   std::string name;  // "original", "default", "size-64", "distance-4", ...
   AccuracySettings accuracy;
   int faceSize = 256;  // 0: the scene's own
+  PlannerSettings planner = everyFramePlanner();
 };
 
-// The settings the sweep measures: the course's ("original"), the shipped default ("default")
-// and one knob at a time around them.
+// The settings the sweep measures: the course's ("original": the `course` preset's planner and
+// accuracy, core/presets.h), the shipped default ("default") and one knob at a time around
+// them.
 std::vector<SweepSetting> sweepSettings();
 
 struct SweepRow {

@@ -3,19 +3,23 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
 #include "../gl/gl_fixture.h"
 #include "bench/accuracy.h"
 #include "bench/sweep.h"
+#include "core/presets.h"
 #include "core/settings_schema.h"
 
 namespace reflect {
 namespace {
 
-AccuracyReport measure(const AccuracySettings& settings, double t) {
+AccuracyReport measure(const AccuracySettings& settings, double t,
+                       const PlannerSettings& planner = {}) {
   auto demo = testing::makeDemo(makeDynamicReflectionScene());
+  demo->setPlannerSettings(planner);
   EXPECT_EQ(demo->setAccuracySettings(settings), "");
   auto report = measureAccuracy(*demo, t, 384, 384);
   EXPECT_TRUE(report) << report.error();
@@ -40,22 +44,30 @@ TEST(AccuracyModes, DistanceCorrectionLowersTheErrorOnTheDefaultScene) {
   }
 }
 
-// Issue 5's accuracy target, held as a regression check: the shipped default is at least 6 dB
-// above the course's setting (captured at the origin, plain lookup, 16-bit depth), with the
-// squared error pooled over t = 0, 2, 4 s as the sweep pools it. (Its time budget, 1.5x, is a
-// benchmark: `reflect bench --sweep`.)
-TEST(AccuracyModes, TheDefaultIsSixDecibelsAboveTheCourse) {
-  const std::vector<SweepSetting> settings = sweepSettings();
+// Issue 5's accuracy target (6 dB) is far exceeded: the shipped default traces the default
+// scene's mirror. Held here is the margin reached over the course (the `course` preset's planner
+// and accuracy: captured at the origin, plain lookup, 16-bit depth), with the squared error pooled
+// over t = 0, 2, 4 s as the sweep pools it: measured +24.55 dB (the course 24.73, 32.39 and
+// 26.80 dB at those times; the traced default 91.92, 46.74 and 99 dB: its error at t = 2 s is
+// nearly all of its pooled error), held 0.25 dB under. (Its time budget, 1.5x, is a benchmark:
+// `reflect bench --sweep`.)
+constexpr double kDefaultOverCourseDb = 24.3;
+
+TEST(AccuracyModes, TheDefaultIsTwentyFourDecibelsAboveTheCourse) {
+  const Preset* course = findPreset("course");
+  ASSERT_NE(course, nullptr);
   double courseSquares = 0, defaultSquares = 0;
   for (double t : {0.0, 2.0, 4.0}) {
-    const double course = measure(settings[0].accuracy, t).reflector.rmse;
-    const double shipped = measure(settings[1].accuracy, t).reflector.rmse;
-    courseSquares += course * course;
+    const double c = measure(course->accuracy, t, course->planner).reflector.rmse;
+    const double shipped = measure(AccuracySettings{}, t).reflector.rmse;
+    std::printf("t=%.0f: the course's RMSE %.4f, the default's %.6f\n", t, c, shipped);
+    courseSquares += c * c;
     defaultSquares += shipped * shipped;
   }
+  ASSERT_GT(defaultSquares, 0.0);  // the traced mirror is not the reference to the bit
   const double gainDb = 10.0 * std::log10(courseSquares / defaultSquares);
   std::printf("default over the course: %+.2f dB\n", gainDb);
-  EXPECT_GE(gainDb, 6.0);
+  EXPECT_GE(gainDb, kDefaultOverCourseDb);
 }
 
 TEST(AccuracyModes, TheCoursesCapturePointIsWorseThanTheReflectorsCentre) {
@@ -123,8 +135,19 @@ TEST(Sweep, SettingsIncludeTheOriginalAndTheShippedDefault) {
   const std::vector<SweepSetting> settings = sweepSettings();
   ASSERT_GE(settings.size(), 10u);
   EXPECT_EQ(settings[0].name, "original");
+  // The course's row is the `course` preset, planner and accuracy: one definition of the course.
+  const Preset* course = findPreset("course");
+  ASSERT_NE(course, nullptr);
+  EXPECT_TRUE(settings[0].accuracy == course->accuracy);
+  EXPECT_EQ(settings[0].planner.policy, course->planner.policy);
+  EXPECT_EQ(settings[0].planner.captureLod, course->planner.captureLod);
+  EXPECT_EQ(settings[0].planner.viewLod, course->planner.viewLod);
   EXPECT_TRUE(settings[0].accuracy.captureAtOrigin);
   EXPECT_EQ(settings[0].accuracy.search, Search::Plain);
+  // Every other row recaptures every face every frame, its capture cost counted in full.
+  for (size_t i = 1; i < settings.size(); ++i) {
+    EXPECT_EQ(settings[i].planner.policy, UpdatePolicy::EveryFrame) << settings[i].name;
+  }
   EXPECT_EQ(settings[1].name, "default");
   EXPECT_TRUE(settings[1].accuracy == AccuracySettings{});  // what Demo ships with
   EXPECT_EQ(settings[1].faceSize, 256);

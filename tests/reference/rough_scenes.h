@@ -1,4 +1,4 @@
-// What the rough-surface tests share (rough_reference_test, rough_glass_test): a shipped scene
+// What the rough-surface tests share (rough_reference_test: mirrors and glass): a shipped scene
 // with or without its roughness, a demo in the exact mode, and the reference with a given seed.
 #pragma once
 

@@ -26,10 +26,13 @@ const REFLECTORS = { fractionOver: 0.005, mean: 1.0 };
 // are the implementation's, so SwiftShader and llvmpipe part by a few levels over whole spheres
 // (measured at 800x600, t = 2: frame 0.34% over 16 levels, mean 0.20; reflectors 3.78%, mean 2.13).
 // Looser limits here, above those by about a third; a page drawing the rough spheres sharp
-// (roughness ignored) is far past them. frosted-glass reads prefiltered levels the same way and
-// takes the same limits (measured at 800x600, t = 2: frame 0.051%, mean 0.063; reflectors 0.656%,
-// mean 0.78: past the 0.5% of the sharp scenes, well inside these).
+// (roughness ignored) is far past them.
 const ROUGH = { frame: { fractionOver: 0.005, mean: 0.5 }, reflectors: { fractionOver: 0.05, mean: 3.0 } };
+// frosted-glass reads prefiltered levels the same way, but parts far less (measured at 800x600,
+// t = 2: frame 0.051% over 16 levels, mean 0.063; reflectors 0.656%, mean 0.78): the sharp
+// scenes' limits, but for 1% of its reflectors' pixels over the tolerance (the sharp scenes' 0.5%
+// is past what it measured).
+const FROSTED = { frame: FRAME, reflectors: { fractionOver: 0.01, mean: REFLECTORS.mean } };
 
 // Max channel difference per pixel of two RGBA images of one size.
 function differences(a, b) {
@@ -85,8 +88,9 @@ for (const scene of SCENES) {
                 `${(100 * frame.fractionOver).toFixed(3)}%; reflectors (${inside.count} px) mean ` +
                 `${inside.mean.toFixed(3)}, over ${(100 * inside.fractionOver).toFixed(3)}%`);
     expect(inside.count, 'reflector pixels found').toBeGreaterThan(500);
-    const rough = scene === 'rough-spheres' || scene === 'frosted-glass';
-    const limits = rough ? ROUGH : { frame: FRAME, reflectors: REFLECTORS };
+    const limits = scene === 'rough-spheres' ? ROUGH
+                 : scene === 'frosted-glass' ? FROSTED
+                 : { frame: FRAME, reflectors: REFLECTORS };
     expect(frame.fractionOver).toBeLessThanOrEqual(limits.frame.fractionOver);
     expect(frame.mean).toBeLessThanOrEqual(limits.frame.mean);
     expect(inside.fractionOver).toBeLessThanOrEqual(limits.reflectors.fractionOver);
