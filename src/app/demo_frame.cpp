@@ -149,6 +149,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
   const FramePlan plan =
       planner_.plan(objects, captureContext(), plannerSettings_, plannerView(width, height));
   lastTraced_ = plan.traced;
+  noteLevelUse(plan);
   ExactTracer* tracer = graphics_.tracer();
   if (tracer && (!plan.traced.empty() || showError_)) {
     tracer->prepare(scene_, stats_.timeSeconds, plan, camera_.eye());
