@@ -4,7 +4,7 @@
 //
 //   node tools/web_bench.mjs [--scene NAME] [--frames N] [--size WxH] [--query '&cube=128']
 //   node tools/web_bench.mjs --raw [--frames N] [--warmup N] [--size WxH] [--query '?paused&cube=128']
-//   node tools/web_bench.mjs --heavy [--runs N] [--frames N] [--warmup N] [--against OTHER_SITE]
+//   node tools/web_bench.mjs --heavy [--runs N] [--frames N] [--warmup N] [--against OTHER_SITE] [--as-loaded]
 //
 // Default: the page's bench mode (?bench): on the scene, for each capture policy (every-frame,
 // when-changed, when-changed + LOD 0.5, + view LOD 0.5, time-sliced 2, every-n 4) it resets the time to 0 and
@@ -24,12 +24,17 @@
 //     framebuffer), hooked from outside the page's code, so any build of the page is measured
 //     the same way (from navigation start);
 //   frame: N calls of demo.frame(1/60) (animated, the page's default settings) after a warm-up,
-//     once the page's levels of detail are built (demo.lodReady(), awaited where the page has it);
+//     once the page's levels of detail are built (demo.lodReady(), awaited where the page has it;
+//     it asks for every level the settings could draw). --as-loaded: only what the page builds by
+//     itself (demo.levelsSettled(), where the page has it: it builds levels only once a frame
+//     draws them; a page without it builds every level by itself, and lodReady waits for that);
 //   memory: the resident memory (VmRSS, /proc) summed over the browser's renderer processes
 //     (--type=renderer), after a garbage collection (--js-flags=--expose-gc), read from outside
 //     the browser; the heavy page's growth is its total minus the default scene's. The wasm
 //     memories' sizes are read by hooking WebAssembly.instantiate (reflect's, and others such as
-//     npm meshoptimizer's when the page runs it on the main thread).
+//     npm meshoptimizer's when the page runs it on the main thread), the JS heap in use
+//     (performance.memory, after the collection), the Workers the page started and its meshes'
+//     bytes (demo.stats(): meshBytes as the GPU holds them, meshCpuBytes as the demo keeps them).
 // --against DIR: the same for another build of the page (e.g. an older commit's build/web/site),
 // run alternately with this one (A B, then B A, ...), and the two summarised side by side.
 //
@@ -44,7 +49,7 @@ const site = join(repo, 'build/web/site');
 
 function parseArgs(argv) {
   const options = { frames: 60, warmup: 10, width: 800, height: 800, query: null, scene: null, raw: false,
-                    heavy: false, runs: 3, against: null, site };
+                    heavy: false, runs: 3, against: null, site, asLoaded: false };
   for (let i = 0; i < argv.length; ++i) {
     const arg = argv[i];
     const value = () => {
@@ -59,6 +64,7 @@ function parseArgs(argv) {
     else if (arg === '--heavy') options.heavy = true;
     else if (arg === '--runs') options.runs = Number(value());
     else if (arg === '--against') options.against = resolve(value());
+    else if (arg === '--as-loaded') options.asLoaded = true;
     else if (arg === '--site') options.site = resolve(value());
     else if (arg === '--size') {
       const m = /^(\d+)x(\d+)$/.exec(value());
@@ -69,7 +75,7 @@ function parseArgs(argv) {
       console.log('usage: node tools/web_bench.mjs [--scene NAME] [--frames N] [--size WxH] [--query Q]\n' +
                   '       node tools/web_bench.mjs --raw [--frames N] [--warmup N] [--size WxH] [--query Q]\n' +
                   '       node tools/web_bench.mjs --heavy [--runs N] [--frames N] [--warmup N] [--size WxH] ' +
-                  '[--site DIR] [--against DIR]');
+                  '[--site DIR] [--against DIR] [--as-loaded]');
       process.exit(0);
     } else throw new Error(`unknown argument ${arg}`);
   }
@@ -228,6 +234,14 @@ const PAGE_HOOKS = () => {
     }
     return drawElements.apply(this, args);
   };
+  window.__workers = 0;
+  const NativeWorker = window.Worker;
+  window.Worker = class extends NativeWorker {
+    constructor(...args) {
+      ++window.__workers;
+      super(...args);
+    }
+  };
   window.__wasmInstances = [];
   const keep = (result) => {
     const instance = result.instance || result;
@@ -273,10 +287,11 @@ async function measurePage(url, options) {
     await page.goto(url);
     await page.waitForFunction(() => window.demo !== undefined);
     const readyMs = await page.evaluate(() => window.demo.ready.then(() => performance.now()));
-    const lodMs = await page.evaluate(async () => {
-      if (window.demo.lodReady) await window.demo.lodReady();
+    const lodMs = await page.evaluate(async (asLoaded) => {
+      if (asLoaded && window.demo.levelsSettled) await window.demo.levelsSettled();
+      else if (window.demo.lodReady) await window.demo.lodReady();
       return performance.now();
-    });
+    }, options.asLoaded);
     const firstFrameMs = await page.evaluate(() => window.__firstFrameMs);
     const frames = await page.evaluate(({ warmup, count }) => {
       for (let i = 0; i < warmup; ++i) window.demo.frame(1 / 60);
@@ -301,8 +316,10 @@ async function measurePage(url, options) {
       return { reflect: !meshopt, bytes: memories.reduce((a, m) => a + m.buffer.byteLength, 0) };
     }));
     const stats = await page.evaluate(() => window.demo.stats());
+    const jsHeap = await page.evaluate(() => performance.memory?.usedJSHeapSize ?? null);
+    const workers = await page.evaluate(() => window.__workers);
     return {
-      firstFrameMs, readyMs, lodMs, frames, memory, problems, stats,
+      firstFrameMs, readyMs, lodMs, frames, memory, problems, stats, jsHeap, workers,
       reflectHeap: wasm.filter((w) => w.reflect).reduce((a, w) => a + w.bytes, 0),
       otherWasm: wasm.filter((w) => !w.reflect).reduce((a, w) => a + w.bytes, 0),
     };
@@ -325,7 +342,8 @@ async function heavyBench(options) {
   const mb = (bytes) => (bytes / (1024 * 1024)).toFixed(1);
   try {
     console.log(`heavy bench: ${options.runs} run(s), ${options.width}x${options.height}, ` +
-                `${options.frames} frames after ${options.warmup} warm-up; sites: ` +
+                `${options.frames} frames after ${options.warmup} warm-up` +
+                (options.asLoaded ? ', as loaded (levels the page builds by itself)' : '') + '; sites: ' +
                 sites.map((s) => `${s.name} = ${s.root}`).join(', '));
     for (let run = 0; run < options.runs; ++run) {
       const order = run % 2 === 0 ? sites : [...sites].reverse();
@@ -342,7 +360,8 @@ async function heavyBench(options) {
                     `renderer RSS ${light.memory.mb.toFixed(0)} / ${heavy.memory.mb.toFixed(0)} MB ` +
                     `(+${(heavy.memory.mb - light.memory.mb).toFixed(0)}); reflect wasm memory ` +
                     `${mb(light.reflectHeap)} / ${mb(heavy.reflectHeap)} MB; other wasm ${mb(heavy.otherWasm)} MB` +
-                    (heavy.stats.meshBytes !== undefined ? `; meshes as drawn ${mb(heavy.stats.meshBytes)} MB` : ''));
+                    (heavy.stats.meshBytes !== undefined ? `; meshes as drawn ${mb(heavy.stats.meshBytes)} MB` : '') +
+                    `; workers ${light.workers} / ${heavy.workers}`);
         for (const p of [...light.problems, ...heavy.problems]) console.log(`  note: ${p}`);
       }
     }
@@ -364,7 +383,14 @@ async function heavyBench(options) {
       ['reflect wasm memory, default scene (MB)', (x) => x.light.reflectHeap / 1048576],
       ['reflect wasm memory, heavy (MB)', (x) => x.heavy.reflectHeap / 1048576],
       ['other wasm memory, heavy (MB)', (x) => x.heavy.otherWasm / 1048576],
+      ['meshes as drawn, default scene (MB; demo.stats().meshBytes)', (x) => (x.light.stats.meshBytes ?? NaN) / 1048576],
       ['meshes as drawn, heavy (MB; demo.stats().meshBytes)', (x) => (x.heavy.stats.meshBytes ?? NaN) / 1048576],
+      ['meshes kept on the CPU, default scene (MB; meshCpuBytes)', (x) => (x.light.stats.meshCpuBytes ?? NaN) / 1048576],
+      ['meshes kept on the CPU, heavy (MB; meshCpuBytes)', (x) => (x.heavy.stats.meshCpuBytes ?? NaN) / 1048576],
+      ['JS heap in use, default scene (MB; performance.memory)', (x) => (x.light.jsHeap ?? NaN) / 1048576],
+      ['JS heap in use, heavy (MB; performance.memory)', (x) => (x.heavy.jsHeap ?? NaN) / 1048576],
+      ['Workers started, default scene', (x) => x.light.workers],
+      ['Workers started, heavy', (x) => x.heavy.workers],
       ['reflect wasm memory over meshes as drawn, heavy (x)', (x) => x.heavy.reflectHeap / (x.heavy.stats.meshBytes ?? NaN)],
       // What the heap is made of (builds whose stats have them): malloc's bytes in use after the
       // frames, what malloc has taken from the heap in all, and the most stack ever used.

@@ -1,5 +1,6 @@
 // A link's settings applied to a new session, in the order they depend on each other.
 import { showMessage } from './messages.js';
+import { DEFAULT_SCENE } from './url_state.js';
 
 // The link's settings: the first scene (at the link's cube size, or its accuracy mode's), then
 // the accuracy mode and settings, materials, planner settings, camera, time and pause. A value
@@ -14,7 +15,7 @@ export async function applyLink(session, link) {
   }
   session.cubeSize = link.cube || row?.faceSize || 0;
   session.paused = link.paused;
-  await session.switchScene(link.scene);
+  await openScene(session, link.scene);
   // All at once (one GL rebuild for accuracy settings); when that fails, one by one.
   const each = (changes, set) => {
     if (!Object.keys(changes).length || !set(changes)) return;
@@ -39,4 +40,17 @@ export async function applyLink(session, link) {
   if (link.cam) bridge.setCamera({ eye: link.cam.slice(0, 3), yaw: link.cam[3], pitch: link.cam[4] });
   if (link.t !== null) bridge.setTime(link.t);
   session.changed('settings');
+}
+
+// The link's scene, or the default one when it cannot be loaded (a name no scene has, a broken
+// file): the message naming the file stays on the page, and the page runs rather than leave a
+// black canvas. A default scene that fails too is the page's failure.
+async function openScene(session, name) {
+  try {
+    await session.switchScene(name);
+  } catch (e) {
+    if (name === DEFAULT_SCENE) throw e;
+    showMessage(`scene=${name} could not be loaded; showing the default scene (${DEFAULT_SCENE}) instead`, 'info');
+    await session.switchScene(DEFAULT_SCENE);
+  }
 }

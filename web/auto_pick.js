@@ -53,6 +53,9 @@ export class AutoPick {
   run() {
     const { session } = this;
     this.running = session.serial(async () => {
+      // The captured candidates draw chunks and capture LOD's levels: built before any is timed,
+      // so none is timed at full detail, nor while they arrive.
+      await session.lodReady();
       const { bridge } = session;
       const budget = this.budget();
       const key = this.key();

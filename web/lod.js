@@ -1,7 +1,7 @@
 // Chunks and levels of detail, built off the main thread. Chunking a 150k-triangle figure and
 // simplifying it would hold the page for a long while, so after the first frame the page asks the
-// C++ side what is left to build (bridge.levelJobs(): a mesh's chunks, and its coarser levels
-// while a LOD setting is on), and a Web Worker (lod_worker.js) builds it with the same C++ as the
+// C++ side what is left to build (bridge.levelJobs(): a mesh's chunks and coarser levels, once a
+// frame draws them), and a Web Worker (lod_worker.js) builds it with the same C++ as the
 // native build (core's buildLevels, compiled into the worker's own wasm module): the same chunk
 // order and the same levels. The results come back to the main thread one piece a task (level 0
 // in chunk order, then each coarser level, then "done"), so frames, input, scene switches and

@@ -3,8 +3,8 @@
 // camera, time and pause. Every change goes through here, to the C++ side through the bridge,
 // and tells the listeners (the panel, the address bar) what changed. Scene loads, model changes
 // and the bench run one at a time in a job queue; idle() resolves when it is empty and the levels
-// of detail are built. Levels are built after each first frame, off the main thread (lod.js), and
-// never hold a job: a scene switch cancels the build under way.
+// of detail are built. Levels are built off the main thread (lod.js), after the first frame that
+// draws them (session_levels.js), and never hold a job: a scene switch cancels the build under way.
 import { AccuracyModes } from './accuracy.js';
 import { showMessage } from './messages.js';
 import { loadScene, readFileMesh, sceneUrl } from './scene_loader.js';
@@ -57,17 +57,22 @@ export class Session {
     }
   }
 
-  // Builds what the C++ side still lacks (chunks; levels while a LOD setting is on), in the
-  // background (session_levels.js); resolves when that build is done.
+  // Builds what the C++ side still lacks of what the frames drew (chunks and levels of a capture,
+  // view LOD's levels), in the background (session_levels.js); resolves when that build is done.
   startLevels() { return this.levelState.start(); }
-  // Resolves (to { mesh: [triangles a level] }) once nothing is left to build.
+  // Asks for every chunk and level the LOD settings could draw, and resolves (to { mesh:
+  // [triangles a level] }) once they are built.
   lodReady() { return this.levelState.ready(); }
+  // Resolves once what the frames want is built, asking for nothing more.
+  levelsSettled() { return this.levelState.settled(); }
   get lodLevels() { return this.levelState.lodLevels; }
   get levels() { return this.levelState.builder; }
 
   faceSize() { return this.bridge.scene().cubeFaceSize || this.cubeSize; }
   frame(dt, waitForGpu = false) {
     this.lastStats = this.bridge.frame({ dt, waitForGpu });
+    // The frame captured, and its meshes lack the chunks or levels a capture draws: built now.
+    if (this.lastStats.levelsWanted && !this.levels.running) this.startLevels();
     this.redrawStep();
     return this.lastStats;
   }

@@ -30,9 +30,15 @@ function sceneAndLevels(session, bridge) {
     loadScene: (nameOrUrl) => session.loadScene(nameOrUrl),
     // Triangles of each level of detail of mesh `name` (null before any was built).
     lodLevels: (name) => session.lodLevels[name] || null,
+    // The levels the C++ side holds of mesh `name` now, triangles of each, level 0 first (null:
+    // no such mesh).
+    meshLevels: (name) => bridge.levelTriangles(name),
     // Resolves (to { mesh: [triangles a level] }) once every mesh's chunks and, while a LOD
-    // setting is on, its levels are built and in use (they are built after the first frame).
+    // setting is on, its levels are built and in use. It asks for them: the page itself builds
+    // them only once a frame draws them (a capture, view LOD), after the first frame.
     lodReady: () => session.lodReady(),
+    // Resolves (as lodReady) once what the frames drew wants is built, asking for nothing more.
+    levelsSettled: () => session.levelsSettled(),
     // The stats of the first frame drawn after the last scene load (drawn before any level was
     // built: its lodReady is false), and the level builder's events ({ event, at }: 'start',
     // 'done', at performance.now()) with the first frame's time.

@@ -130,8 +130,11 @@ function meshCalls(call, callWithData, Module) {
       };
     },
     lodSettings: () => call('rf_lod_settings_json'),
-    // What is left to build: [{ name, revision, chunks, coarser }] (web/lod.js builds it).
+    // What is left to build: [{ name, revision, chunks, coarser }] (web/lod.js builds it): what
+    // the frames drew wants (a frame's stats say levelsWanted), or everything after askForLevels.
     levelJobs: () => call('rf_level_jobs'),
+    // From now on, every level the LOD settings could draw is wanted (demo.lodReady()).
+    askForLevels: () => call('rf_ask_levels'),
     // Mesh `name`'s triangles in chunk order, the chunks' triangle counts. "" or the error.
     setMeshChunks: ({ name, revision, indices, chunkTriangles }) =>
       errorOf(callWithData('rf_set_mesh_chunks', { name, revision, chunkTriangles }, indices, indices.length)),

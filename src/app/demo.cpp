@@ -10,7 +10,7 @@
 namespace reflect {
 
 Demo::Demo(Scene scene) : scene_(std::move(scene)), camera_(scene_.camera) {
-  meshes_.setNeedsLevels(needsLevels());
+  meshes_.setLodSettings(plannerSettings_.captureLod > 0.0f, plannerSettings_.viewLod > 0.0f);
 }
 
 Demo::~Demo() = default;
@@ -44,8 +44,20 @@ std::string Demo::adopt(const std::string& name, Result<MeshData> mesh) {
   return error;
 }
 
-bool Demo::needsLevels() const {
-  return plannerSettings_.captureLod > 0.0f || plannerSettings_.viewLod > 0.0f;
+void Demo::noteLevelUse(const FramePlan& plan) {
+  // Chunks cull a captured face's draws, and capture LOD's levels are drawn only there: a frame
+  // that captures no probe draws neither (the main pass draws whole meshes, or view LOD's levels,
+  // which the settings alone ask for). But the planner prices a capture by the triangles its
+  // faces would draw, at the levels there are: a traced reflector counts as well where its
+  // capture, priced with no triangles at all, would have won (by the planner's own margin), so
+  // that levels not built yet never keep the planner from the capture they would make cheaper.
+  bool captures = !plan.probes.empty();
+  const MethodCosts& costs = planner_.costs();
+  for (const MethodChoice& choice : planner_.choices()) {
+    const double withoutTriangles = choice.captureMs - choice.capture.triangles * costs.triangle;
+    captures = captures || withoutTriangles * costs.hysteresis < choice.traceMs;
+  }
+  if (captures) meshes_.noteCaptures();
 }
 
 std::string Demo::loadMeshesFrom(const std::string& directory) {
@@ -96,7 +108,7 @@ std::string Demo::setSkybox(CubeFaces faces) {
 
 void Demo::setPlannerSettings(const PlannerSettings& settings) {
   plannerSettings_ = settings;
-  meshes_.setNeedsLevels(needsLevels());
+  meshes_.setLodSettings(settings.captureLod > 0.0f, settings.viewLod > 0.0f);
 }
 
 std::string Demo::setCubeFaceSize(int size) {

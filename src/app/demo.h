@@ -80,6 +80,11 @@ class Demo {
   bool lodReady() const { return meshes_.lodReady(); }
   // Background: starts what is left and waits for it (it is taken in before this returns).
   void waitForLevels() { meshes_.waitForLevels(); }
+  // Chunks and levels are built only once a frame draws them (noteLevelUse); levelsWanted: some
+  // are wanted and not built yet. askForLevels: want all the LOD settings could draw, as
+  // waitForLevels does (the page's demo.lodReady(), before it waits for its worker).
+  bool levelsWanted() const { return meshes_.levelsWanted(); }
+  void askForLevels() { meshes_.askForLevels(); }
   // What is left to build, for an external builder: each mesh (with its revision, which the
   // answers must carry) and whether its chunks, its coarser levels or both are wanted.
   using LevelJob = MeshLibrary::LevelJob;
@@ -217,7 +222,10 @@ class Demo {
  private:
   std::string adoptLoaded(const std::string& name, Result<LoadedMesh> loaded);
   std::string adopt(const std::string& name, Result<MeshData> mesh);
-  bool needsLevels() const;
+  // Called by frame() with its plan: from the first plan that captures a probe (or that traces
+  // one whose capture levels could make the cheaper), the meshes' chunks and capture LOD's levels
+  // are wanted.
+  void noteLevelUse(const FramePlan& plan);
   std::vector<PlannedObject> plannedObjects(double seconds) const;
   // The one place a frame is laid out and planned (demo_frame.cpp). NextFrame: the frame the demo
   // draws next, by its planner (which remembers what it captured); FirstFrame: the frame now as a

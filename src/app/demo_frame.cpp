@@ -265,6 +265,7 @@ const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width,
 
   const auto start = std::chrono::steady_clock::now();  // the frame's time includes its plan
   lastFrame_ = record(width, height, Planning::NextFrame);
+  noteLevelUse(lastFrame_.plan);  // chunks and levels are built once a frame draws them
   generalCaptured_ = !lastFrame_.course;
   if (lastFrame_.course) {
     drawCourse(lastFrame_, framebuffer, waitForGpu, start);

@@ -72,9 +72,20 @@ void MeshLibrary::describe(const std::string& name, PlannedObject& object) const
   object.meshRevision = revision == revisions_.end() ? 0 : revision->second;
 }
 
-void MeshLibrary::setNeedsLevels(bool needs) {
-  needsLevels_ = needs;
-  if (buildsAllowed_) startBuilds();  // a LOD setting turned on: its levels are wanted now
+void MeshLibrary::setLodSettings(bool captureLod, bool viewLod) {
+  captureLod_ = captureLod;
+  viewLod_ = viewLod;
+  if (buildsAllowed_) startBuilds();  // a LOD setting turned on: its levels may be wanted now
+}
+
+void MeshLibrary::noteCaptures() {
+  if (captures_) return;
+  captures_ = true;
+  if (buildsAllowed_) startBuilds();
+}
+
+void MeshLibrary::askForLevels() {
+  asked_ = true;
 }
 
 void MeshLibrary::allowBuilds() {
@@ -85,12 +96,19 @@ void MeshLibrary::allowBuilds() {
 bool MeshLibrary::lodReady() const {
   for (const auto& [name, entry] : meshes_) {
     if (entry.pending.valid() || !entry.chunked) return false;
-    if (needsLevels_ && !entry.levelsBuilt) return false;
+    if ((captureLod_ || viewLod_) && !entry.levelsBuilt) return false;
   }
   return true;
 }
 
+bool MeshLibrary::levelsWanted() const {
+  return std::any_of(meshes_.begin(), meshes_.end(), [this](const auto& mesh) {
+    return chunksLeft(mesh.second) || coarserLeft(mesh.second);
+  });
+}
+
 void MeshLibrary::waitForLevels() {
+  askForLevels();
   startBuilds();
   collectBuilds(true);
 }
@@ -99,8 +117,8 @@ void MeshLibrary::startBuilds() {
   if (levelBuilds_ != LevelBuilds::Background) return;
   for (auto& [name, entry] : meshes_) {
     if (entry.pending.valid()) continue;  // one build of a mesh at a time: it reads the base
-    const bool chunks = !entry.chunked;
-    const bool levels = needsLevels_ && !entry.levelsBuilt;
+    const bool chunks = chunksLeft(entry);
+    const bool levels = coarserLeft(entry);
     if (!chunks && !levels) continue;
     std::shared_ptr<const MeshData> base = entry.base;
     entry.pending = std::async(
@@ -151,11 +169,12 @@ void MeshLibrary::takeIn(MeshEntry& entry, BuiltLevels built) {
 std::vector<MeshLibrary::LevelJob> MeshLibrary::levelJobs() const {
   std::vector<LevelJob> jobs;
   for (const auto& [name, entry] : meshes_) {
-    const bool coarser = needsLevels_ && !entry.levelsBuilt;
-    if (entry.chunked && !coarser) continue;
+    const bool chunks = chunksLeft(entry);
+    const bool coarser = coarserLeft(entry);
+    if (!chunks && !coarser) continue;
     auto revision = revisions_.find(name);
-    jobs.push_back(LevelJob{name, revision == revisions_.end() ? 0 : revision->second,
-                            !entry.chunked, coarser});
+    jobs.push_back(
+        LevelJob{name, revision == revisions_.end() ? 0 : revision->second, chunks, coarser});
   }
   return jobs;
 }

@@ -2,13 +2,17 @@
 // their levels of detail, and their trees for the exact mode.
 //
 // First frame first: a loaded mesh is drawn as it was parsed. Its chunks (the capture's culling
-// units) and, when a LOD setting is on, its coarser levels are built afterwards: natively on a
+// units) and coarser levels are built afterwards, and only once something draws them: chunks and
+// capture LOD's levels serve captured cube faces alone (the main pass draws whole meshes, and a
+// traced reflector reads its own trees), so they are wanted once a frame captures a probe
+// (noteCaptures); view LOD's levels are wanted while it is on. Natively they are built on a
 // background thread (std::async) started after the first frame and taken in at the start of a
-// later frame (waitForLevels() waits for them, for tests and benchmarks); in the page by a Web
-// Worker, which hands them in through setMeshChunks / addLodLevel / finishLevels
+// later frame; waitForLevels() asks for everything the LOD settings could draw and waits for it
+// (tests and benchmarks: the same meshes whatever the frames drew). In the page a Web Worker
+// builds them and hands them in through setMeshChunks / addLodLevel / finishLevels
 // (LevelBuilds::External), each answer carrying the revision its job was given. Coarser levels
-// are kept as index lists over level 0's vertices, and built only while a LOD setting is on.
-// Whatever changes a mesh's levels is uploaded to the GPU set attached with setGpu.
+// are kept as index lists over level 0's vertices. Whatever changes a mesh's levels is uploaded to
+// the GPU set attached with setGpu.
 #pragma once
 
 #include <cstdint>
@@ -60,12 +64,25 @@ class MeshLibrary {
 
   enum class LevelBuilds { Background, External };
   void setLevelBuilds(LevelBuilds builds) { levelBuilds_ = builds; }
-  // Whether a LOD setting is on, so that coarser levels are wanted; and whether builds may start
-  // (after the first frame). Either turning true starts what is left.
-  void setNeedsLevels(bool needs);
+  // Which LOD settings are on: capture LOD's levels are drawn into captured faces only, view
+  // LOD's in the main pass.
+  void setLodSettings(bool captureLod, bool viewLod);
+  // A frame captured a probe (or weighed a capture that levels could make the cheaper): from now
+  // on chunks and, under capture LOD, coarser levels are wanted, for every mesh of this library.
+  void noteCaptures();
+  // Everything the LOD settings could draw is wanted from now on, whatever the frames draw:
+  // every mesh's chunks and, while a LOD setting is on, its levels (the page's demo.lodReady()).
+  void askForLevels();
+  // Whether builds may start (after the first frame). Any of these turning something on starts
+  // what is left.
   void allowBuilds();
+  // Everything the LOD settings could draw is built: every mesh chunked and, while a LOD setting
+  // is on, its levels made (whether or not a frame wanted them yet).
   bool lodReady() const;
-  // Background: starts what is left and waits for it (it is taken in before this returns).
+  // Something wanted is not built yet (the page's worker has work: levelJobs() is not empty).
+  bool levelsWanted() const;
+  // Background: asks for everything (askForLevels), starts what is left and waits for it (it is
+  // taken in before this returns).
   void waitForLevels();
   // Takes in the background builds that are done, without waiting.
   void collectFinished() { collectBuilds(false); }
@@ -114,6 +131,13 @@ class MeshLibrary {
     std::future<BuiltLevels> pending;  // a background build under way
   };
 
+  // What is wanted now (see noteCaptures): coarser levels are always built after the mesh's
+  // chunks, in chunk order, so wanting them wants the chunks too.
+  bool wantsCoarser() const { return viewLod_ || (captureLod_ && (captures_ || asked_)); }
+  bool wantsChunks() const { return captures_ || asked_ || wantsCoarser(); }
+  // What is left to build of `entry`: its chunks, its coarser levels.
+  bool chunksLeft(const MeshEntry& entry) const { return wantsChunks() && !entry.chunked; }
+  bool coarserLeft(const MeshEntry& entry) const { return wantsCoarser() && !entry.levelsBuilt; }
   // Starts a background build for every mesh with work left and none under way.
   void startBuilds();
   // Takes in the builds that are done (all of them, waiting, with `wait`).
@@ -130,7 +154,10 @@ class MeshLibrary {
   // std::async would wait for its thread if it were destroyed before).
   std::vector<std::future<BuiltLevels>> abandoned_;
   LevelBuilds levelBuilds_ = LevelBuilds::Background;
-  bool needsLevels_ = true;  // the default planner settings have capture LOD on
+  bool captureLod_ = true;  // the default planner settings have capture LOD on
+  bool viewLod_ = false;
+  bool captures_ = false;  // a frame captured (noteCaptures)
+  bool asked_ = false;     // askForLevels
   bool buildsAllowed_ = false;
   std::vector<std::string> lastWarnings_;
   MeshBuffers* gpu_ = nullptr;

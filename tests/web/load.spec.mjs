@@ -158,6 +158,26 @@ test('without WebGL2 a visible message says so and demo.ready rejects', async ({
   await expect(page.locator('#stats')).toHaveText('not running');
 });
 
+test('an unknown scene is named in a message, and the default scene runs instead of a black canvas', async ({ page }) => {
+  await page.goto('?paused&scene=nosuch');
+  expect(await readyOutcome(page)).toBe('resolved');
+  // The message names the missing file and stays; a second one says what the page did instead.
+  const missing = page.locator('#messages .message.error', { hasText: 'scenes/nosuch.json: HTTP 404' });
+  await expect(missing).toBeVisible();
+  await expect(page.locator('#messages .message.info', { hasText: 'showing the default scene (ex12-2) instead' }))
+    .toBeVisible();
+  expect(await page.evaluate(() => window.demo.scene().name)).toBe('ex12-2');
+  // The default scene is drawn, and the link names it.
+  await page.evaluate(() => window.demo.frame(0));
+  const { distinct, greyFraction } = colourSummary(await canvasScreenshot(page));
+  expect(distinct, 'distinct colours in the canvas').toBeGreaterThan(500);
+  expect(greyFraction, 'fraction of background grey').toBeLessThan(0.6);
+  await expect(page.locator('#stats')).not.toHaveText('not running');
+  expect(await page.evaluate(() => window.demo.query())).toMatch(/^\?scene=ex12-2&/);
+  await animationFrames(page, 5);
+  await expect(missing).toBeVisible();  // still there once the page runs
+});
+
 test('index.html preloads every module the page imports at start, and nothing else', async ({ page }) => {
   // The modules are fetched at once instead of a level of imports after another (load to first
   // frame, issue 12); a module added to app.js's graph but not to the list would load late.

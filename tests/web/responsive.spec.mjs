@@ -1,8 +1,9 @@
 // Issue 12: moving, dropping files and switching scenes stay responsive while the levels of detail
-// of the heavy figure are built. The page builds them in a Worker after the first frame; here the
-// worker's answers are held at the page's gate (demo.holdLevels) until the test lets them in, so
-// "levels not in yet" is a state the test waits for and acts in, not a race against the worker.
-// Every check is a state or a count, never a duration.
+// of the heavy figure are built. The page builds them in a Worker after the first frame that draws
+// them (here view LOD's, which the main pass draws: the default traces its mirror and draws no
+// level); the worker's answers are held at the page's gate (demo.holdLevels) until the test lets
+// them in, so "levels not in yet" is a state the test waits for and acts in, not a race against
+// the worker. Every check is a state or a count, never a duration.
 import { test, expect } from '@playwright/test';
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
@@ -50,7 +51,7 @@ test('with the heavy figure, dragging, dropping a file and switching scenes work
     const body = name === 'mario.obj' ? mario : readFileSync(MODELS + name);
     return route.fulfill({ status: 200, contentType: 'text/plain', body });
   });
-  await page.goto('?paused&assets=/course/');
+  await page.goto('?paused&assets=/course/&viewLod=0.05');
   await page.waitForFunction(() => window.demo !== undefined);
   await page.evaluate(() => window.demo.ready);
   const heavyTriangles = (await page.evaluate(() => window.demo.lodReady()))['mario.obj']?.[0];

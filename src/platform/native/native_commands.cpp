@@ -82,7 +82,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 // How soon the scene is on screen: one demo made as the page makes it (first frame first, its
-// chunks and levels built in the background after it), and this process's memory then.
+// chunks and levels built in the background after it where it captures; else when asked, after
+// it), and this process's memory then.
 std::string printLoad(const CliOptions& o, WarningPrinter& warnings) {
   const auto start = std::chrono::steady_clock::now();
   auto demo = makeDemo(o, {}, warnings, false);
@@ -93,14 +94,17 @@ std::string printLoad(const CliOptions& o, WarningPrinter& warnings) {
   demo.value()->frame(0.0, target.value().framebuffer(), o.width, o.height, true);
   const double firstFrame = millisecondsSince(start);
   const bool readyAtFirstFrame = demo.value()->lodReady();
+  // Only a frame that captures wants them (Demo::noteLevelUse); the rest are asked for here.
+  const bool wanted = demo.value()->levelsWanted();
   demo.value()->waitForLevels();
   const double ready = millisecondsSince(start);
   std::printf(
       "load: models parsed and GL resources made in %.0f ms; first frame (%dx%d) drawn %.0f ms "
-      "after the start%s; chunks and levels ready %.0f ms after the start (built in the "
-      "background after the first frame)\n",
+      "after the start%s; chunks and levels ready %.0f ms after the start (%s)\n",
       loaded, o.width, o.height, firstFrame, readyAtFirstFrame ? " (levels already ready)" : "",
-      ready);
+      ready,
+      wanted ? "built in the background after the first frame"
+             : "the first frame captured nothing, so none were built until asked for, after it");
   std::printf("memory after load: %s; meshes %.1f MB as drawn (GPU), %.1f MB kept on the CPU\n",
               describe(processMemory()).c_str(), demo.value()->meshGpuBytes() / 1048576.0,
               demo.value()->meshCpuBytes() / 1048576.0);

@@ -109,6 +109,9 @@ EMSCRIPTEN_KEEPALIVE const char* rf_frame(const char* request) {
   json stats = state().demo->frame(dt, 0, width, height, wait).toJson();
   // The wasm memory now (it grows and never shrinks: what a load's peak left behind).
   stats["heapBytes"] = emscripten_get_heap_size();
+  // This frame (or one before) drew a capture whose chunks or levels are not built: the page
+  // starts its worker (session.js).
+  stats["levelsWanted"] = state().demo->levelsWanted();
   return reply(stats);
 }
 

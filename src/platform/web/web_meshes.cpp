@@ -87,7 +87,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_lod_settings_json() {
 }
 
 // What is left to build for the page's worker (web/lod.js): [{"name", "revision", "chunks":
-// bool, "coarser": bool}]. Coarser levels are asked for only while a LOD setting is on.
+// bool, "coarser": bool}]: what the frames drew wants (a captured face: chunks and capture LOD's
+// levels; view LOD's levels while it is on), or everything since rf_ask_levels.
 EMSCRIPTEN_KEEPALIVE const char* rf_level_jobs() {
   json jobs = json::array();
   if (state().demo) {
@@ -99,6 +100,14 @@ EMSCRIPTEN_KEEPALIVE const char* rf_level_jobs() {
     }
   }
   return reply(jobs);
+}
+
+// From now on every mesh's chunks and, while a LOD setting is on, its coarser levels are wanted,
+// whatever the frames draw (demo.lodReady(): tests and the bench want the meshes the settings
+// could draw). {}.
+EMSCRIPTEN_KEEPALIVE const char* rf_ask_levels() {
+  if (state().demo) state().demo->askForLevels();
+  return replyDone();
 }
 
 // Mesh {"name", "revision"}'s triangles in chunk order: `count` indices (a reordering of its
