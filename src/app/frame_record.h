@@ -15,9 +15,11 @@
 namespace reflect {
 
 struct FrameRecord {
+  // Before the first frame, or for a hidden canvas: nothing was laid out.
+  bool empty() const { return width < 1 || height < 1; }
+
   double seconds = 0.0;
-  int width = 0;
-  int height = 0;
+  int width = 0, height = 0;
   std::vector<PlannedObject> objects;  // in the scene's order
   CaptureContext context;              // what the captures depend on besides the objects
   FramePlan plan;
@@ -27,8 +29,6 @@ struct FrameRecord {
   std::optional<FramePlan> exactPlan;
   // Drawn by the course's own file (course/course_frame.cpp) rather than the general renderer.
   bool course = false;
-
-  bool empty() const { return width < 1 || height < 1; }
 };
 
 }  // namespace reflect

@@ -5,12 +5,13 @@
 namespace reflect {
 
 Result<ErrorView> ErrorView::create() {
-  auto program = TabledProgram<Uniforms>::build("fullscreen.vert", "error_view.frag");
-  if (!program) return Result<ErrorView>::failure(program.error());
-  ErrorView v;
-  v.program_ = program.take();
-  v.vao_ = VertexArrayHandle(genVertexArray());
-  return v;
+  return withBuiltProgram<decltype(program_)>("fullscreen.vert", "error_view.frag",
+                                              [](auto program) {
+                                                ErrorView v;
+                                                v.program_ = std::move(program);
+                                                v.vao_ = VertexArrayHandle(genVertexArray());
+                                                return v;
+                                              });
 }
 
 std::string ErrorView::resize(int width, int height) {

@@ -3,12 +3,13 @@
 namespace reflect {
 
 Result<ImageBlit> ImageBlit::create() {
-  auto program = TabledProgram<Uniforms>::build("fullscreen.vert", "image_blit.frag");
-  if (!program) return Result<ImageBlit>::failure(program.error());
-  ImageBlit blit;
-  blit.program_ = program.take();
-  blit.vertexArray_ = VertexArrayHandle(genVertexArray());
-  return blit;
+  return withBuiltProgram<decltype(program_)>(
+      "fullscreen.vert", "image_blit.frag", [](auto program) {
+        ImageBlit blit;
+        blit.program_ = std::move(program);
+        blit.vertexArray_ = VertexArrayHandle(genVertexArray());
+        return blit;
+      });
 }
 
 void ImageBlit::draw(const RgbaImage& image, int width, int height,

@@ -5,24 +5,24 @@
 namespace reflect {
 
 Result<RayLines> RayLines::create() {
-  auto program = TabledProgram<Uniforms>::build("ray_lines.vert", "ray_lines.frag");
-  if (!program) return Result<RayLines>::failure(program.error());
-  RayLines lines;
-  lines.program_ = program.take();
-  lines.buffer_ = BufferHandle(genBuffer());
-  lines.vertexArray_ = VertexArrayHandle(genVertexArray());
-  glBindVertexArray(lines.vertexArray_.id());
-  glBindBuffer(GL_ARRAY_BUFFER, lines.buffer_.id());
-  // Each vertex: position then colour, three floats each.
-  constexpr GLsizei kStride = 6 * sizeof(float);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kStride, nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, kStride,
-                        reinterpret_cast<const void*>(3 * sizeof(float)));
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  return lines;
+  return withBuiltProgram<decltype(program_)>("ray_lines.vert", "ray_lines.frag", [](auto program) {
+    RayLines lines;
+    lines.program_ = std::move(program);
+    lines.buffer_ = BufferHandle(genBuffer());
+    lines.vertexArray_ = VertexArrayHandle(genVertexArray());
+    glBindVertexArray(lines.vertexArray_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, lines.buffer_.id());
+    // Each vertex: position then colour, three floats each.
+    constexpr GLsizei kStride = 6 * sizeof(float);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kStride, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, kStride,
+                          reinterpret_cast<const void*>(3 * sizeof(float)));
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    return lines;
+  });
 }
 
 void RayLines::set(const std::vector<RaySegment>& segments) {

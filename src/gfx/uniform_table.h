@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gfx/shader_program.h"
@@ -124,5 +125,16 @@ struct TabledProgram {
   // The active uniforms this program's table does not set (for tests).
   std::vector<std::string> unlisted() const { return uniforms->unlisted(program.id()); }
 };
+
+// Builds a pass's program of type `Program` (a TabledProgram) and hands it to `make`, which
+// returns the pass that owns it; a failure to build is the result instead.
+template <typename Program, typename Make>
+auto withBuiltProgram(const std::string& vertexFile, const std::string& fragmentFile, Make make)
+    -> Result<decltype(make(std::declval<Program>()))> {
+  using Out = Result<decltype(make(std::declval<Program>()))>;
+  Result<Program> program = Program::build(vertexFile, fragmentFile);
+  if (!program) return Out::failure(program.error());
+  return make(program.take());
+}
 
 }  // namespace reflect
