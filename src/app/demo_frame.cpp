@@ -201,7 +201,7 @@ void Demo::drawGeneral(const FrameRecord& f, unsigned framebuffer, bool waitForG
   SceneRenderer& renderer = *graphics_.renderer();
   ExactTracer* tracer = graphics_.tracer();
   if (tracer && (!f.plan.traced.empty() || f.exactPlan)) {
-    tracer->prepare(scene_, f.seconds, f.plan, f.view.eye);
+    tracer->prepare(scene_, f.plan, f.view.eye);
   }
   capturePass(f, waitForGpu);
   stats_.captureMs = millisecondsSince(start);

@@ -38,7 +38,7 @@ Result<std::vector<FrameStep>> Demo::drawFrameStep(int step, unsigned framebuffe
   const int count = static_cast<int>(steps.size());
   const int shown = std::clamp(step, 0, count - 1);
   ExactTracer* tracer = graphics_.tracer();
-  if (tracer && !f.plan.traced.empty()) tracer->prepare(scene_, f.seconds, f.plan, f.view.eye);
+  if (tracer && !f.plan.traced.empty()) tracer->prepare(scene_, f.plan, f.view.eye);
   if (shown + 1 == count) {  // the main step: the whole frame
     Result<PassCounts> capture = renderer->capture(scene_, f.seconds, f.plan, f.view.eye);
     if (!capture) return Out::failure(capture.error());

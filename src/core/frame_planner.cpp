@@ -48,6 +48,7 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
   planner::decideSkyFiltering(plan, objects, context, skyLevels, skyContent);
   plan.filterSky = false;
   plan.skyFilterSamples = 0.0;
+  for (const PlannedObject& o : objects) plan.models.push_back(o.model);
   return plan;
 }
 
@@ -219,6 +220,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   // Mirrors whose cube changed look different from the next frame on.
   for (int r : recapturedForRealChange) ++contentVersions_[static_cast<size_t>(r)];
   ++frameIndex_;
+  for (const PlannedObject& o : objects) plan.models.push_back(o.model);
   return plan;
 }
 

@@ -172,7 +172,11 @@ struct FramePlan {
   std::vector<int> skyRoughLevels{};
   bool filterSky = false;
   double skyFilterSamples = 0.0;
+  // Each object's model matrix this frame, in the scene's order (PlannedObject::model): every
+  // pass draws and traces with these, so no renderer computes a placement again.
+  std::vector<glm::mat4> models;
   int facesCaptured() const;
+  const glm::mat4& modelOf(int object) const { return models.at(static_cast<size_t>(object)); }
   // The probe object `object` samples, or null (none, or its rays are traced).
   const ProbePlan* probeOf(int object) const;
   bool traces(int object) const;

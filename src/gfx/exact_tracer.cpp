@@ -109,8 +109,7 @@ void ExactTracer::uploadAtlas(int frameRows) {
   atlasDirty_ = false;
 }
 
-void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& plan,
-                          const glm::vec3& eye) {
+void ExactTracer::prepare(const Scene& scene, const FramePlan& plan, const glm::vec3& eye) {
   if (atlasDirty_) uploadAtlas(frameRows_);
   std::vector<BvhInstance> instances(scene.objects.size());
   std::vector<PackedRef> roots(scene.objects.size(), PackedRef{-1, 0});
@@ -118,7 +117,7 @@ void ExactTracer::prepare(const Scene& scene, double seconds, const FramePlan& p
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     BvhInstance& instance = instances[i];
-    instance.model = scene.modelMatrix(o, seconds);
+    instance.model = plan.modelOf(static_cast<int>(i));
     instance.inverse = glm::inverse(instance.model);
     auto mesh = meshes_.find(o.mesh);
     auto root = roots_.find(o.mesh);

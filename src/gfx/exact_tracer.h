@@ -61,9 +61,10 @@ class ExactTracer {
   void setMesh(const std::string& name, std::shared_ptr<const MeshBvh> bvh);
   // The sky a ray that meets nothing sees (null: the clear colour). Returns "" or a message.
   std::string setSkybox(const CubeFaces* faces);
-  // The frame's placement: the top level over `scene`'s objects at `seconds`, probe centres from
-  // `plan`, lit as seen from `eye`. Uploads the atlas first if a mesh changed.
-  void prepare(const Scene& scene, double seconds, const FramePlan& plan, const glm::vec3& eye);
+  // The frame's placement: the top level over `scene`'s objects placed by `plan`'s model
+  // matrices, probe centres from `plan`, lit as seen from `eye`. Uploads the atlas first if a mesh
+  // changed.
+  void prepare(const Scene& scene, const FramePlan& plan, const glm::vec3& eye);
   // The error view's exact pass marks its pixels (alpha 0) while this is on.
   void setMark(bool on) { mark_ = on; }
 

@@ -143,7 +143,7 @@ PassCounts SceneRenderer::drawObject(const Uniforms& u, const ProgramKey& key, c
   const SceneObject& object = pass.scene.objects[static_cast<size_t>(item.object)];
   const MeshBuffer* buffer = mesh(object.mesh, item.lod);
   if (!buffer) return {};
-  const glm::mat4 model = pass.scene.modelMatrix(object, pass.seconds);
+  const glm::mat4& model = pass.plan.modelOf(item.object);
   u.mesh.model.set(model);
   u.mesh.normalMatrix.set(normalMatrixOf(glm::mat3(model)));
   // The object's size, for the third capture pass (capture_output.glsl).
@@ -161,7 +161,7 @@ PassCounts SceneRenderer::drawItems(const DrawPass& pass, const std::vector<Draw
   std::vector<std::pair<ProgramKey, const DrawItem*>> keyed;
   keyed.reserve(draws.size());
   for (const DrawItem& d : draws) {
-    keyed.emplace_back(keyFor(pass.scene, pass.plan, d, pass.capture, pass.seconds), &d);
+    keyed.emplace_back(keyFor(pass.scene, pass.plan, d, pass.capture), &d);
   }
   std::stable_sort(keyed.begin(), keyed.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -200,7 +200,7 @@ PassCounts SceneRenderer::drawMain(const Scene& scene, double seconds, const Fra
                                    unsigned framebuffer, int width, int height,
                                    int outputDirections) {
   forgetReplacedGlassMeshes(scene);
-  prepareGlassExits(scene, seconds);
+  prepareGlassExits(scene, plan);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);

@@ -127,7 +127,7 @@ class SceneRenderer {
   // The variant that draws `item` in `pass`: its look; for a mirror or glass, whether its rays
   // are traced, its probe searched (and how) or looked up plainly.
   ProgramKey keyFor(const Scene& scene, const FramePlan& plan, const DrawItem& item,
-                    const CaptureState& pass, double seconds) const;
+                    const CaptureState& pass) const;
   // What every draw of one pass shares.
   struct DrawPass {
     const Scene& scene;
@@ -180,7 +180,7 @@ class SceneRenderer {
   Result<ProbePrefilter*> prefilterPass();
   // Makes the interior maps of the scene's glass meshes that are not spheres the first time they
   // are needed (glassSurfaces 2).
-  void prepareGlassExits(const Scene& scene, double seconds);
+  void prepareGlassExits(const Scene& scene, const FramePlan& plan);
   // The interior map `object`, placed by `model`, leaves through (nullptr: a sphere, no glass, one
   // surface, or no map).
   const GlassInteriorMap* glassExitOf(const SceneObject& object, const glm::mat4& model) const;

@@ -124,8 +124,7 @@ bool SceneRenderer::captureFace(CaptureJob& job, const ProbePlan& probe, const C
   if (face.layers == 2) {
     for (const DrawItem& d : face.draws) {
       const SceneObject& object = scene.objects[static_cast<size_t>(d.object)];
-      if (mayFaceAway(mesh(object.mesh, d.lod), scene.modelMatrix(object, job.seconds),
-                      probe.centre)) {
+      if (mayFaceAway(mesh(object.mesh, d.lod), job.plan.modelOf(d.object), probe.centre)) {
         backDraws.push_back(d);
       }
     }
@@ -147,7 +146,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, double seconds, co
                                           const glm::vec3& lightingEye,
                                           const CaptureStepObserver* afterStep) {
   forgetReplacedGlassMeshes(scene);
-  prepareGlassExits(scene, seconds);
+  prepareGlassExits(scene, plan);
   PassCounts counts;
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);

@@ -24,7 +24,7 @@ std::vector<std::string> SceneRenderer::unsetUniforms() const {
 }
 
 ProgramKey SceneRenderer::keyFor(const Scene& scene, const FramePlan& plan, const DrawItem& item,
-                                 const CaptureState& pass, double seconds) const {
+                                 const CaptureState& pass) const {
   const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
   ProgramKey key;
   key.capture = pass.layer != 0;
@@ -53,8 +53,7 @@ ProgramKey SceneRenderer::keyFor(const Scene& scene, const FramePlan& plan, cons
   // pixel off by more than 32 levels a frame; tools/scene_accuracy.sh).
   const bool searches = pass.layer == 0 && searchesFor(scene, plan, item.object);
   key.search = searches ? capturedSearch(accuracy_.search) : Search::Plain;
-  key.glassExit =
-      key.refracts && glassExitOf(object, scene.modelMatrix(object, seconds)) != nullptr;
+  key.glassExit = key.refracts && glassExitOf(object, plan.modelOf(item.object)) != nullptr;
   return key;
 }
 
@@ -66,12 +65,13 @@ bool SceneRenderer::searchesFor(const Scene& scene, const FramePlan& plan, int i
   return probe && !probe->plainLookupSuffices && probes_.count(probe->reflector) > 0;
 }
 
-void SceneRenderer::prepareGlassExits(const Scene& scene, double seconds) {
+void SceneRenderer::prepareGlassExits(const Scene& scene, const FramePlan& plan) {
   if (accuracy_.glassSurfaces != 2 || accuracy_.search == Search::Exact) return;
-  for (const SceneObject& object : scene.objects) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& object = scene.objects[i];
     if (object.material != Material::Glass) continue;
     const MeshBuffer* full = mesh(object.mesh, 0);
-    if (!full || sphereRadiusIn(full, scene.modelMatrix(object, seconds)) > 0.0f) {
+    if (!full || sphereRadiusIn(full, plan.modelOf(static_cast<int>(i))) > 0.0f) {
       continue;  // no mesh yet, or a sphere: its exit has a closed form
     }
     glassInteriors_.mapFor(object.mesh, *full);
