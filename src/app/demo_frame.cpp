@@ -254,6 +254,7 @@ void Demo::drawCourse(const FrameRecord& f, unsigned framebuffer, bool waitForGp
   stats_.mainTriangles = main.triangles;
   stats_.probes = 1;
   stats_.facesCaptured = 6;
+  stats_.courseFrame = true;
 }
 
 const FrameStats& Demo::frame(double dtSeconds, unsigned framebuffer, int width, int height,

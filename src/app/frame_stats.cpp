@@ -14,6 +14,7 @@ nlohmann::json FrameStats::toJson() const {
                          {"probes", probes},
                          {"tracedReflectors", tracedReflectors},
                          {"facesCaptured", facesCaptured},
+                         {"courseFrame", courseFrame},
                          {"drawCalls", drawCalls()},
                          {"triangles", triangles()},
                          {"captureDrawCalls", captureDrawCalls},

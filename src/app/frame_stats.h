@@ -24,6 +24,7 @@ struct FrameStats {
   int probes = 0;            // probes captured (or kept) this frame
   int tracedReflectors = 0;  // reflectors whose rays were traced: no probe, no face
   int facesCaptured = 0;
+  bool courseFrame = false;  // drawn by the course's own file (src/course/course_frame.cpp)
   int captureDrawCalls = 0;
   size_t captureTriangles = 0;
   int mainDrawCalls = 0;

@@ -80,6 +80,7 @@ TEST(CourseFrame, TheStatsCountWhatItDrew) {
   EXPECT_EQ(s.captureDrawCalls, 6 * 3);  // six faces of ground, sonic and mario
   EXPECT_EQ(s.mainDrawCalls, 4);
   EXPECT_EQ(s.tracedReflectors, 0);
+  EXPECT_TRUE(s.courseFrame);
   EXPECT_GE(s.frameMs, s.captureMs);
 }
 

@@ -15,6 +15,10 @@ test('?preset=course gives the course\'s capture and lookup; a key of the link o
   const stats = await page.evaluate(() => window.demo.frame(1 / 60));
   expect(stats.facesCaptured).toBe(6);  // six faces, every frame
   expect(stats.tracedReflectors).toBe(0);
+  expect(stats.courseFrame).toBe(true);  // drawn by src/course/course_frame.cpp
+  // A view that looks inside the frame reads the general renderer's captures: it draws instead.
+  await page.evaluate(() => window.demo.setView({ inside: 'faces' }));
+  expect((await page.evaluate(() => window.demo.frame(1 / 60))).courseFrame).toBe(false);
 
   await openDemo(page, '?preset=course&search=hierarchical&paused');
   expect((await page.evaluate(() => window.demo.accuracy())).search).toBe('hierarchical');
