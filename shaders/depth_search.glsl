@@ -74,53 +74,115 @@ struct SearchResult {
 // it compares with stored codes without decoding them; 1/z also projects the ray onto the face.
 float depthFraction(float inverseZ) { return 1.0 - clamp(inverseZ, 0.0, 1.0); }
 
+// The ray seen on one face: its depth along the face's axis is xz + tau dz, its face coordinates
+// (xst + tau dst) / depth.
+struct FaceRay {
+  float xz;
+  float dz;
+  vec2 xst;
+  vec2 dst;
+  vec2 motion;
+  vec2 towards;
+};
+
+FaceRay rayOnFace(vec3 x, vec3 d, int f) {
+  FaceRay ray;
+  vec3 right = u_faceRight[f], up = u_faceUp[f], axis = u_faceAxis[f];
+  ray.xz = dot(x, axis);
+  ray.dz = dot(d, axis);
+  ray.xst = vec2(dot(x, right), dot(x, up));
+  ray.dst = vec2(dot(d, right), dot(d, up));
+  // s (and t) move monotonically along the ray, towards the border on the side of motion.
+  ray.motion = ray.dst * ray.xz - ray.xst * ray.dz;
+  ray.towards = step(0.0, ray.motion);
+  return ray;
+}
+
+// The level-`level` cell the ray is in at tau (at face coordinates st), and where it leaves it:
+// through the border at level-0 texel edgeTexel.x (leavesAcross) or edgeTexel.y, at tauExit
+// (kNever: it never leaves).
+struct Cell {
+  ivec2 index;
+  ivec2 edgeTexel;
+  bool leavesAcross;
+  float tauExit;
+};
+
+Cell cellAt(FaceRay ray, vec2 st, float tau, int level) {
+  Cell cell;
+  float texels = float(u_faceSize);
+  float toFace = 2.0 / texels;  // level-0 texels to face coordinates
+  // A level-L cell spans 2^L level-0 texels (the last one in a row may be cut by the face's
+  // edge).
+  int span = 1 << level;
+  int n = (u_faceSize + span - 1) >> level;
+  cell.index = clamp(ivec2(floor((st * 0.5 + 0.5) * texels)) >> level, ivec2(0), ivec2(n - 1));
+  // Where the ray leaves the cell: s = b where xs + tau ds = b (xz + tau dz).
+  cell.edgeTexel = min((cell.index + ivec2(ray.towards)) * span, ivec2(u_faceSize));
+  vec2 border = vec2(cell.edgeTexel) * toFace - 1.0;
+  vec2 crossing = (border * ray.xz - ray.xst) / (ray.dst - border * ray.dz);
+  // A crossing behind the ray's origin is never reached; one just behind tau is rounding.
+  bvec2 reached = bvec2(ray.motion.x != 0.0 && crossing.x >= 0.0,
+                        ray.motion.y != 0.0 && crossing.y >= 0.0);
+  crossing = max(crossing, vec2(tau));
+  cell.leavesAcross = reached.x && (!reached.y || crossing.x <= crossing.y);
+  cell.tauExit = cell.leavesAcross ? crossing.x : reached.y ? crossing.y : kNever;
+  return cell;
+}
+
+// One texel the ray does not pass freely (its depths over it are (eIn, eNear, eFar)): the ray
+// meets its object if its depths here reach into [front, back]: where it crosses the front, else
+// inside (it entered through a side the probe cannot see); likewise what lies behind. False:
+// it is behind what the texel stores.
+bool meetsTexel(vec3 x, vec3 d, FaceRay ray, float tau, float tauExit, vec3 depths, float eFront,
+                float eBack, vec2 behind, int i, out SearchResult met) {
+  float eIn = depths.x, eNear = depths.y, eFar = depths.z;
+  float mid = tauExit >= kNever ? tau : 0.5 * (tau + tauExit);
+  if (eNear <= eBack && eFar >= eFront) {
+    if (eIn > eFront) {
+      met = SearchResult(x + mid * d, 1, i);
+      return true;
+    }
+    float zFront = 1.0 / (1.0 - eFront);
+    met = SearchResult(x + clamp((zFront - ray.xz) / ray.dz, tau, tauExit) * d, 1, i);
+    return true;
+  }
+  if (u_layers == 2 && eNear <= behind.y && eFar >= behind.x) {
+    if (eIn > behind.x) {
+      met = SearchResult(x + mid * d, 2, i);
+      return true;
+    }
+    float zBehind = 1.0 / (1.0 - behind.x);
+    met = SearchResult(x + clamp((zBehind - ray.xz) / ray.dz, tau, tauExit) * d, 2, i);
+    return true;
+  }
+  return false;
+}
+
 SearchResult searchDepths(vec3 x, vec3 d) {
   float tau = 0.0;
   float tauFree = 0.0;  // the farthest point known to be in front of every stored surface
   int level = max(u_topLevel - 3, 0);
   const float kCode = 1.0 / 65535.0;
-  float texels = float(u_faceSize);
-  float toFace = 2.0 / texels;  // level-0 texels to face coordinates
-  // The ray seen on face f (recomputed only when it moves to another face): its depth along the
-  // face's axis is xz + tau dz, its face coordinates (xst + tau dst) / depth.
+  // The ray seen on face f, recomputed only when it moves to another face.
   int f = -1;
-  float xz = 0.0, dz = 0.0;
-  vec2 xst = vec2(0.0), dst = vec2(0.0), motion = vec2(0.0), towards = vec2(0.0);
+  FaceRay ray = FaceRay(0.0, 0.0, vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
   bool faceEdge = true;  // the ray is on a face's edge: which face it is on is to be found
   int stalled = 0;       // minimum steps in a row
   for (int i = 0; i < kMaxSteps; ++i) {
     int face = faceEdge ? faceOf(x + tau * d) : f;
     if (face != f) {
       f = face;
-      vec3 right = u_faceRight[f], up = u_faceUp[f], axis = u_faceAxis[f];
-      xz = dot(x, axis);
-      dz = dot(d, axis);
-      xst = vec2(dot(x, right), dot(x, up));
-      dst = vec2(dot(d, right), dot(d, up));
-      // s (and t) move monotonically along the ray, towards the border on the side of motion.
-      motion = dst * xz - xst * dz;
-      towards = step(0.0, motion);
+      ray = rayOnFace(x, d, f);
     }
-    float zIn = xz + tau * dz;
+    float zIn = ray.xz + tau * ray.dz;
     float inverseIn = 1.0 / zIn;
-    vec2 st = (xst + tau * dst) * inverseIn;
-    // A level-L cell spans 2^L level-0 texels (the last one in a row may be cut by the face's
-    // edge).
-    int span = 1 << level;
-    int n = (u_faceSize + span - 1) >> level;
-    ivec2 cell = clamp(ivec2(floor((st * 0.5 + 0.5) * texels)) >> level, ivec2(0), ivec2(n - 1));
-    // Where the ray leaves the cell: s = b where xs + tau ds = b (xz + tau dz).
-    ivec2 edgeTexel = min((cell + ivec2(towards)) * span, ivec2(u_faceSize));
-    vec2 border = vec2(edgeTexel) * toFace - 1.0;
-    vec2 crossing = (border * xz - xst) / (dst - border * dz);
-    // A crossing behind the ray's origin is never reached; one just behind tau is rounding.
-    bvec2 reached = bvec2(motion.x != 0.0 && crossing.x >= 0.0, motion.y != 0.0 && crossing.y >= 0.0);
-    crossing = max(crossing, vec2(tau));
-    bool leavesAcross = reached.x && (!reached.y || crossing.x <= crossing.y);
-    float tauExit = leavesAcross ? crossing.x : reached.y ? crossing.y : kNever;
+    vec2 st = (ray.xst + tau * ray.dst) * inverseIn;
+    Cell cell = cellAt(ray, st, tau, level);
+    float tauExit = cell.tauExit;
     // The ray's depths over the cell, as code fractions (an endless ray: 1, infinitely far).
     float eIn = depthFraction(inverseIn);
-    float eOut = tauExit >= kNever ? 1.0 : depthFraction(1.0 / (xz + tauExit * dz));
+    float eOut = tauExit >= kNever ? 1.0 : depthFraction(1.0 / (ray.xz + tauExit * ray.dz));
     float eNear = min(eIn, eOut), eFar = max(eIn, eOut);
 
     // The first chain: the nearest surfaces' codes (min over the cell) and how far back their
@@ -131,7 +193,7 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     // or the next from texel to texel; a ray crossing it where the code steps down would be in
     // front of one texel's surface and behind the next's, and slip through (single wrong
     // pixels in the mirror's image of the floor, 2-3 a frame in the default scene).
-    uvec4 codes = cellCodes(cell, f, level);
+    uvec4 codes = cellCodes(cell.index, f, level);
     vec2 first = vec2(codes.xy) * kCode;
     float eFront = first.x - kCode, eBack = first.y + kCode;
     vec2 behind = u_layers == 2 ? vec2(codes.zw) * kCode : vec2(1.0);
@@ -140,20 +202,9 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     bool free = eFar < eFront;
     bool passes = free || (eNear > eBack && eFar < behind.x);
     if (!passes && level == 0) {
-      // One texel. The ray meets its object if its depths here reach into [front, back]: where
-      // it crosses the front, else inside (it entered through a side the probe cannot see);
-      // likewise what lies behind.
-      float mid = tauExit >= kNever ? tau : 0.5 * (tau + tauExit);
-      if (eNear <= eBack && eFar >= eFront) {
-        if (eIn > eFront) return SearchResult(x + mid * d, 1, i);
-        float zFront = 1.0 / (1.0 - eFront);
-        return SearchResult(x + clamp((zFront - xz) / dz, tau, tauExit) * d, 1, i);
-      }
-      if (u_layers == 2 && eNear <= behind.y && eFar >= behind.x) {
-        if (eIn > behind.x) return SearchResult(x + mid * d, 2, i);
-        float zBehind = 1.0 / (1.0 - behind.x);
-        return SearchResult(x + clamp((zBehind - xz) / dz, tau, tauExit) * d, 2, i);
-      }
+      SearchResult met;
+      vec3 depths = vec3(eIn, eNear, eFar);
+      if (meetsTexel(x, d, ray, tau, tauExit, depths, eFront, eBack, behind, i, met)) return met;
       passes = true;  // behind what the texel stores: past it, unseen
     }
     if (!passes) {
@@ -171,7 +222,8 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     // Just past the border, into the next cell (or face); one level coarser if that border is
     // also the coarser cell's (else the next cell is this one's sibling, at this level), so a
     // ray grazing a surface walks along it instead of going up and down at every texel.
-    int exitTexel = leavesAcross ? edgeTexel.x : edgeTexel.y;
+    int exitTexel = cell.leavesAcross ? cell.edgeTexel.x : cell.edgeTexel.y;
+    int span = 1 << level;
     faceEdge = exitTexel == 0 || exitTexel >= u_faceSize;
     if ((exitTexel & (2 * span - 1)) == 0 || faceEdge) level = min(level + 1, u_topLevel);
     stalled = tauExit - tau < 1e-4 * max(tau, 1.0) ? stalled + 1 : 0;

@@ -62,6 +62,27 @@ vec3 exactInverse(vec3 d) {
   return 1.0 / mix(d, s, lessThan(abs(d), vec3(1e-20)));
 }
 
+// The ray o + t d against the triangle at v0 = a.xyz with edges e1 and e2 (a.w its slot): the
+// best hit becomes it where the ray meets it at t in (tMin, best.t).
+void exactTriangle(vec4 a, vec3 e1, vec3 e2, vec3 o, vec3 d, float tMin, int instance,
+                   inout ExactHit best) {
+  vec3 p = cross(d, e2);
+  float det = dot(e1, p);
+  float invDet = 1.0 / det;
+  vec3 sv = o - a.xyz;
+  float u = dot(sv, p) * invDet;
+  vec3 q = cross(sv, e1);
+  float v = dot(d, q) * invDet;
+  float t = dot(e2, q) * invDet;
+  if (det != 0.0 && u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > tMin && t < best.t) {
+    best.t = t;
+    best.instance = instance;
+    best.slot = int(a.w);
+    best.u = u;
+    best.v = v;
+  }
+}
+
 // The nearest hit along o + t d, t in (tMin, best.t), among the objects but `skip` (only `only`
 // when >= 0). One loop walks both levels, nearer child first: each turn reads the four texels
 // at `ref` and, by `count`, tests an interior node's two children, one triangle of a leaf, or
@@ -69,12 +90,7 @@ vec3 exactInverse(vec3 d) {
 // ray moves back when the walk pops below it). Every turn reads the same texture the same way:
 // a software rasteriser runs each turn's whole body for every pixel.
 ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only) {
-  ExactHit best;
-  best.t = kExactFar;
-  best.instance = -1;
-  best.slot = -1;
-  best.u = 0.0;
-  best.v = 0.0;
+  ExactHit best = ExactHit(kExactFar, -1, -1, 0.0, 0.0);
   if (u_exactEmpty == 1) return best;
   vec3 worldInv = exactInverse(direction);
   vec4 h0 = exactFetch(u_exactAtlas, u_exactHeader);
@@ -113,21 +129,7 @@ ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only)
       count = int(leftFirst ? b.w : e.w);
       done = nearEntry >= kExactFar;
     } else if (count > 0) {  // a leaf's next triangle: a = v0, b = v1 - v0, c = v2 - v0
-      vec3 p = cross(d, c.xyz);
-      float det = dot(b.xyz, p);
-      float invDet = 1.0 / det;
-      vec3 sv = o - a.xyz;
-      float u = dot(sv, p) * invDet;
-      vec3 q = cross(sv, b.xyz);
-      float v = dot(d, q) * invDet;
-      float t = dot(c.xyz, q) * invDet;
-      if (det != 0.0 && u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > tMin && t < best.t) {
-        best.t = t;
-        best.instance = instance;
-        best.slot = int(a.w);
-        best.u = u;
-        best.v = v;
-      }
+      exactTriangle(a, b.xyz, c.xyz, o, d, tMin, instance, best);
       ref += kExactTriangle;
       --count;
       done = count == 0;

@@ -141,12 +141,17 @@ function figurePixels(image, sphere) {
   return found;
 }
 
-test.describe('on a phone (390x844, devicePixelRatio 2, touch)', () => {
+// The phone's settings for each block of phone tests.
+function usePhone() {
   test.use(PHONE);
   // Every display frame draws 780x1688 pixels (four times the other tests' canvas) in SwiftShader,
   // and each step waits for the page between frames: more than the default minute on a busy
   // machine. (A limit on the test, not a check of how long anything takes.)
   test.describe.configure({ timeout: 180_000 });
+}
+
+test.describe('on a phone (390x844, devicePixelRatio 2, touch): the frame and the panel', () => {
+  usePhone();
 
   test('the three figures are in the frame, on the canvas as the C++ boxes say', async ({ page }) => {
     await openDemo(page, '?paused');
@@ -176,6 +181,28 @@ test.describe('on a phone (390x844, devicePixelRatio 2, touch)', () => {
     expect(sphere.x1 - sphere.x0).toBeCloseTo(0.3174, 3);
   });
 
+  test('the open panel is a sheet below the scene: the figures stay in the frame above it', async ({ page }) => {
+    await openDemo(page, '?paused');
+    const closed = await layout(page);
+    await page.locator('#panel > .lil-title').tap();
+    await panelSettled(page, true);
+    const open = await expectGoodLayout(page, 'phone, panel open');
+    expect(open.canvas.bottom).toBeLessThan(closed.canvas.bottom - 200);
+    expect(open.panel.top).toBeGreaterThanOrEqual(open.canvas.bottom - 0.5);
+    expect(open.panel.bottom).toBeLessThanOrEqual(844.5);
+    expect(open.panel.top).toBeLessThanOrEqual(844 / 2 + 1);  // at most half the height
+    // Its controls scroll inside it: the last folder can be reached.
+    await page.locator('#control-help').scrollIntoViewIfNeeded();
+    await expect(page.locator('#control-help button')).toBeInViewport();
+    await page.locator('#panel > .lil-title').tap();
+    await panelSettled(page, false);
+    expect((await expectGoodLayout(page, 'phone, panel closed again')).canvas).toEqual(closed.canvas);
+  });
+});
+
+test.describe('on a phone (390x844, devicePixelRatio 2, touch): touch', () => {
+  usePhone();
+
   test('the hints name touch, here and in the help overlay', async ({ page }) => {
     await openDemo(page, '?paused');
     const help = page.locator('#help');
@@ -193,24 +220,6 @@ test.describe('on a phone (390x844, devicePixelRatio 2, touch)', () => {
     await expect(page.locator('#help-title')).toHaveText('Touch');
     await expectRows(overlay, { keys: false, touch: true, 'touch-only': true });
     await expect(overlay).toContainText('two-finger drag');
-  });
-
-  test('the open panel is a sheet below the scene: the figures stay in the frame above it', async ({ page }) => {
-    await openDemo(page, '?paused');
-    const closed = await layout(page);
-    await page.locator('#panel > .lil-title').tap();
-    await panelSettled(page, true);
-    const open = await expectGoodLayout(page, 'phone, panel open');
-    expect(open.canvas.bottom).toBeLessThan(closed.canvas.bottom - 200);
-    expect(open.panel.top).toBeGreaterThanOrEqual(open.canvas.bottom - 0.5);
-    expect(open.panel.bottom).toBeLessThanOrEqual(844.5);
-    expect(open.panel.top).toBeLessThanOrEqual(844 / 2 + 1);  // at most half the height
-    // Its controls scroll inside it: the last folder can be reached.
-    await page.locator('#control-help').scrollIntoViewIfNeeded();
-    await expect(page.locator('#control-help button')).toBeInViewport();
-    await page.locator('#panel > .lil-title').tap();
-    await panelSettled(page, false);
-    expect((await expectGoodLayout(page, 'phone, panel closed again')).canvas).toEqual(closed.canvas);
   });
 
   test('a one-finger drag turns the view; two fingers dragged together slide it', async ({ page }) => {

@@ -1,0 +1,1 @@
+"""Generator of the cube-map skybox test images (tools/make_skybox.py)."""
