@@ -38,10 +38,10 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
   FramePlan plan;
   for (ProbeLayout& probe : planner::probesOf(objects)) {
     plan.probes.push_back(ProbePlan{std::move(probe), {}});
-    planner::decideStorage(plan.probes.back(), objects, context);
-    std::vector<int> levels;  // which levels there are; nothing is filtered here
-    planner::decideFiltering(plan.probes.back(), objects, context, levels);
-    plan.probes.back().filterFaces = 0;
+    ProbePlan& laid = plan.probes.back();
+    planner::decideStorage(laid, objects, context);
+    laid.roughLevels = planner::roughLevelsOf(laid, objects, context);
+    laid.filterFaces = 0;  // which levels there are; nothing is filtered here
   }
   std::vector<int> skyLevels;  // which levels there are; nothing is filtered here
   uint64_t skyContent = 0;
@@ -133,9 +133,7 @@ FacePlan FramePlanner::planFace(const ProbePlan& probe, int face, std::vector<Dr
   for (const DrawItem& d : draws) memory.visible.push_back(d.object);
   memory.stateVersions = stateVersions_;
   memory.contentVersions = contentVersions_;
-  const size_t shown = draws.size();
-  const bool hides = shown >= 2 || (context.skyboxContent != 0 && shown >= 1);
-  const int layers = probe.layers == 2 && hides ? 2 : 1;
+  const int layers = planner::faceStoresTwoLayers(probe.layers, draws.size(), context) ? 2 : 1;
   // The second layer is beyond the course's capture: culled and coarser under any policy.
   std::vector<DrawItem> secondLayer;
   if (layers == 2) {
@@ -145,7 +143,21 @@ FacePlan FramePlanner::planFace(const ProbePlan& probe, int face, std::vector<Dr
   return FacePlan{face, std::move(draws), layers, std::move(secondLayer)};
 }
 
-bool FramePlanner::planCapture(ProbePlan& probe, const std::vector<PlannedObject>& objects,
+FramePlanner::FaceDraws FramePlanner::faceDraws(const ProbePlan& probe,
+                                                const std::vector<PlannedObject>& objects,
+                                                const CaptureContext& context,
+                                                const PlannerSettings& settings) const {
+  FaceDraws draws;
+  for (int face = 0; face < 6; ++face) {
+    draws[static_cast<size_t>(face)] =
+        drawsFor(objects, probe.members, probe.centre, face, context,
+                 settings.policy == UpdatePolicy::EveryFrame, settings.captureLod);
+  }
+  return draws;
+}
+
+bool FramePlanner::planCapture(ProbePlan& probe, FaceDraws draws,
+                               const std::vector<PlannedObject>& objects,
                                const CaptureContext& context, const PlannerSettings& settings,
                                ProbeMemory& memory) const {
   // The probe moved, a capture option changed or it stores other layers or none: no face is
@@ -159,13 +171,10 @@ bool FramePlanner::planCapture(ProbePlan& probe, const std::vector<PlannedObject
     memory.plainLookupSuffices = probe.plainLookupSuffices;
   }
 
-  std::array<std::vector<DrawItem>, 6> draws;
   std::array<Staleness, 6> staleness{};
   std::vector<int> stale;  // faces that need a redraw, in face order
   for (int face = 0; face < 6; ++face) {
     const size_t f = static_cast<size_t>(face);
-    draws[f] = drawsFor(objects, probe.members, probe.centre, face, context,
-                        settings.policy == UpdatePolicy::EveryFrame, settings.captureLod);
     std::vector<int> visible;
     for (const DrawItem& d : draws[f]) visible.push_back(d.object);
     staleness[f] = settings.policy == UpdatePolicy::EveryFrame
@@ -194,17 +203,26 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   for (ProbeLayout& layout : planner::probesOf(objects)) {
     ProbePlan probe{std::move(layout), {}};
     planner::decideStorage(probe, objects, context);
+    probe.roughLevels = planner::roughLevelsOf(probe, objects, context);
     ProbeMemory& memory = memoryOf(probe.reflector);
-    if (chooseProbeMethod(probe, objects, context, settings, view, memory) == Method::Trace) {
+    // Culled once, for the cost and the capture; the exact mode traces without weighing.
+    FaceDraws draws;
+    const bool traced = context.accuracy.search == Search::Exact &&
+                        std::all_of(probe.members.begin(), probe.members.end(), [&](int m) {
+                          return planner::traceable(objects[static_cast<size_t>(m)]);
+                        });
+    if (!traced) draws = faceDraws(probe, objects, context, settings);
+    if (chooseProbeMethod(probe, draws, objects, context, settings, view, memory) ==
+        Method::Trace) {
       memory.filteredLevels.clear();  // a trace keeps no filtered levels either
       plan.traced.push_back(static_cast<ProbeLayout&>(probe));
       continue;
     }
-    if (planCapture(probe, objects, context, settings, memory)) {
+    if (planCapture(probe, std::move(draws), objects, context, settings, memory)) {
       recapturedForRealChange.insert(recapturedForRealChange.end(), probe.members.begin(),
                                      probe.members.end());
     }
-    planner::decideFiltering(probe, objects, context, memory.filteredLevels);
+    planner::decideFiltering(probe, memory.filteredLevels);
     plan.probes.push_back(std::move(probe));
   }
   // The exact mode traces every mirror and glass, a static skybox's users too.

@@ -251,16 +251,22 @@ class FramePlanner {
     int sliceCursor = 0;
   };
   enum class Staleness { Fresh, BounceOnly, Changed };
+  // What each face of a probe shows this frame (drawsFor), culled once: the cost of a capture
+  // and the capture itself read the same draws.
+  using FaceDraws = std::array<std::vector<DrawItem>, 6>;
+  FaceDraws faceDraws(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                      const CaptureContext& context, const PlannerSettings& settings) const;
 
   ProbeMemory& memoryOf(int reflector);
   // Trace the probe's reflectors or capture it (search: exact traces, planned weighs the two);
   // a change of method forgets the probe's faces.
-  Method chooseProbeMethod(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
-                           const CaptureContext& context, const PlannerSettings& settings,
-                           const PlannerView& view, ProbeMemory& memory);
+  Method chooseProbeMethod(const ProbePlan& probe, const FaceDraws& draws,
+                           const std::vector<PlannedObject>& objects, const CaptureContext& context,
+                           const PlannerSettings& settings, const PlannerView& view,
+                           ProbeMemory& memory);
   // Plans the faces a captured probe redraws this frame into probe.faces, and remembers what
   // they show. True when one is redrawn for a real change (not only a bounce).
-  bool planCapture(ProbePlan& probe, const std::vector<PlannedObject>& objects,
+  bool planCapture(ProbePlan& probe, FaceDraws draws, const std::vector<PlannedObject>& objects,
                    const CaptureContext& context, const PlannerSettings& settings,
                    ProbeMemory& memory) const;
   FacePlan planFace(const ProbePlan& probe, int face, std::vector<DrawItem> draws,
@@ -273,9 +279,9 @@ class FramePlanner {
                           const std::vector<int>& visibleNow) const;
   void trackChanges(const std::vector<PlannedObject>& objects);
   // Search: planned: what each method would cost `probe` this frame.
-  MethodChoice weigh(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
-                     const CaptureContext& context, const PlannerSettings& settings,
-                     const PlannerView& view) const;
+  MethodChoice weigh(const ProbePlan& probe, const FaceDraws& draws,
+                     const std::vector<PlannedObject>& objects, const CaptureContext& context,
+                     const PlannerSettings& settings, const PlannerView& view) const;
   // The objects a face shows: with `whole`, every object at full detail (the course's capture);
   // otherwise those the face may see, culled by chunks, at the coarsest level with
   // `trianglesPerPixel` (0: full detail).

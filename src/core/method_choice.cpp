@@ -11,7 +11,8 @@ using planner::contains;
 using planner::worldCentreOf;
 using planner::worldRadiusOf;
 
-MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
+MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
+                                 const std::vector<PlannedObject>& objects,
                                  const CaptureContext& context, const PlannerSettings& settings,
                                  const PlannerView& view) const {
   MethodChoice c;
@@ -37,22 +38,21 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<Plann
   const bool everyFrame = settings.policy == UpdatePolicy::EveryFrame;
   const double texels = static_cast<double>(context.faceSize) * context.faceSize;
   for (int face = 0; face < 6; ++face) {
-    const std::vector<DrawItem> draws = drawsFor(objects, probe.members, probe.centre, face,
-                                                 context, everyFrame, settings.captureLod);
+    const std::vector<DrawItem>& shown = draws[static_cast<size_t>(face)];
     bool moving = everyFrame;
     double triangles = 0.0;
-    for (const DrawItem& d : draws) {
+    for (const DrawItem& d : shown) {
       moving |= movedNow_[static_cast<size_t>(d.object)];
       triangles += static_cast<double>(d.triangles);
     }
     if (!moving) continue;
-    const bool hides = draws.size() >= 2 || (context.skyboxContent != 0 && !draws.empty());
+    const bool twoLayers = planner::faceStoresTwoLayers(probe.layers, shown.size(), context);
     // Two layers: the nearest surfaces and their backs at the capture's detail, what they hide
     // at kSecondLayerDetail of it.
-    const double passes = probe.layers == 2 && hides ? 2.0 + kSecondLayerDetail : 1.0;
+    const double passes = twoLayers ? 2.0 + kSecondLayerDetail : 1.0;
     c.capture.faces += 1.0;
     c.capture.triangles += triangles * passes;
-    c.capture.texels += texels * (probe.layers == 2 && hides ? 3.0 : 1.0);
+    c.capture.texels += texels * (twoLayers ? 3.0 : 1.0);
   }
   double share = 1.0;  // of the redraws a frame, under the policies that spread them
   if (settings.policy == UpdatePolicy::TimeSliced && c.capture.faces > 0.0) {
@@ -66,19 +66,15 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const std::vector<Plann
   c.capture.pixels = probe.plainLookupSuffices ? 0.0 : c.trace.pixels;
   c.trace.lobeRays = context.accuracy.lobeRays;
   if (c.capture.faces > 0.0) {
-    ProbePlan filtered = probe;
-    std::vector<int> none;
-    planner::decideFiltering(filtered, objects, context, none);
-    c.capture.filterSamples =
-        share * planner::filterSamplesFor(filtered.roughLevels, context.faceSize,
-                                          context.accuracy.filterSamples);
+    c.capture.filterSamples = share * planner::filterSamplesFor(probe.roughLevels, context.faceSize,
+                                                                context.accuracy.filterSamples);
   }
   c.traceMs = traceCost(c.trace, costs_);
   c.captureMs = captureCost(c.capture, costs_);
   return c;
 }
 
-Method FramePlanner::chooseProbeMethod(const ProbePlan& probe,
+Method FramePlanner::chooseProbeMethod(const ProbePlan& probe, const FaceDraws& draws,
                                        const std::vector<PlannedObject>& objects,
                                        const CaptureContext& context,
                                        const PlannerSettings& settings, const PlannerView& view,
@@ -91,7 +87,7 @@ Method FramePlanner::chooseProbeMethod(const ProbePlan& probe,
   Method method = Method::Capture;
   if (rays && search == Search::Exact) method = Method::Trace;
   if (rays && search == Search::Planned && view.pixelsPerTangent > 0.0f) {
-    MethodChoice choice = weigh(probe, objects, context, settings, view);
+    MethodChoice choice = weigh(probe, draws, objects, context, settings, view);
     choice.method = chooseMethod(choice.traceMs, choice.captureMs, memory.method, costs_);
     method = choice.method;
     choices_.push_back(choice);

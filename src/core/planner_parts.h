@@ -41,10 +41,22 @@ void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
 // (transmissionRoughness, core/ggx.h).
 std::vector<float> lobeRoughnesses(const SceneObject::Look& look);
 
-// The prefiltered levels a probe's rough readers need (ProbePlan::roughLevels), and the faces to
-// filter this frame given the levels filtered before (`filtered`, updated).
-void decideFiltering(ProbePlan& probe, const std::vector<PlannedObject>& objects,
-                     const CaptureContext& context, std::vector<int>& filtered);
+// Whether something in a face that shows `shown` objects can hide something else: two objects,
+// or one in front of the sky. A probe stores a second layer only if one of its faces can, and a
+// face of a two-layer probe keeps two only then: the one rule for the probe's storage, its faces'
+// plan and the cost of a capture.
+bool faceCanHide(size_t shown, const CaptureContext& context);
+inline bool faceStoresTwoLayers(int probeLayers, size_t shown, const CaptureContext& context) {
+  return probeLayers == 2 && faceCanHide(shown, context);
+}
+
+// The prefiltered levels a probe's rough readers need (ProbePlan::roughLevels), sorted.
+std::vector<int> roughLevelsOf(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,
+                               const CaptureContext& context);
+
+// The faces to filter this frame (ProbePlan::filterFaces) given probe.roughLevels and the levels
+// filtered before (`filtered`, updated).
+void decideFiltering(ProbePlan& probe, std::vector<int>& filtered);
 
 // The static sky's prefiltered levels, those its rough readers (environment: skybox, not traced
 // this frame) need at context.skyFaceSize, into plan.skyRoughLevels; plan.filterSky when they

@@ -33,18 +33,21 @@ void addLevelsOf(const SceneObject::Look& look, int roughLevels, int faceSize,
 
 }  // namespace
 
-void decideFiltering(ProbePlan& probe, const std::vector<PlannedObject>& objects,
-                     const CaptureContext& context, std::vector<int>& filtered) {
+std::vector<int> roughLevelsOf(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,
+                               const CaptureContext& context) {
   std::vector<int> levels;
   for (int m : probe.members) {
     addLevelsOf(objects[static_cast<size_t>(m)].look, context.accuracy.roughLevels,
                 context.faceSize, levels);
   }
   std::sort(levels.begin(), levels.end());
-  probe.roughLevels = levels;
-  const bool changed = levels != filtered;
-  probe.filterFaces = !levels.empty() && (!probe.faces.empty() || changed) ? 0x3Fu : 0u;
-  filtered = std::move(levels);
+  return levels;
+}
+
+void decideFiltering(ProbePlan& probe, std::vector<int>& filtered) {
+  const bool changed = probe.roughLevels != filtered;
+  probe.filterFaces = !probe.roughLevels.empty() && (!probe.faces.empty() || changed) ? 0x3Fu : 0u;
+  filtered = probe.roughLevels;
 }
 
 void decideSkyFiltering(FramePlan& plan, const std::vector<PlannedObject>& objects,

@@ -32,6 +32,10 @@ bool plainLookupWithinHalfTexel(float reach, float nearest, int faceSize) {
 
 namespace planner {
 
+bool faceCanHide(size_t shown, const CaptureContext& context) {
+  return shown >= 2 || (context.skyboxContent != 0 && shown >= 1);
+}
+
 void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
                    const CaptureContext& context) {
   const bool sky = context.skyboxContent != 0;
@@ -59,7 +63,7 @@ void decideStorage(ProbePlan& probe, const std::vector<PlannedObject>& objects,
     }
     if (seen) nearest = std::min(nearest, distanceToBox(probe.centre, world));
   }
-  for (int count : visible) occlusion |= count >= 2 || (sky && count >= 1);
+  for (int count : visible) occlusion |= faceCanHide(static_cast<size_t>(count), context);
   const Search search = capturedSearch(context.accuracy.search);
   const bool searches = search != Search::Plain;
   probe.plainLookupSuffices =
