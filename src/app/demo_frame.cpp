@@ -111,16 +111,18 @@ FrameRecord Demo::record(int width, int height, Planning planning) {
   f.context = captureContext();
   f.view = viewParams(width, height);
   f.mainDraws = viewDraws(f.objects, width, height);
-  FramePlanner firstFrame;  // a first frame's planner: every face it needs, nothing remembered
-  firstFrame.setCosts(planner_.costs());
+  const PlannerView view = plannerView(width, height);
   if (planning == Planning::NextFrame) {
     f.course = drawsCourseFrame();
     // The course's file draws into its own cube: the general renderer's holds nothing the
     // planner could remember.
     if (lastFrame_.course && !f.course) planner_.invalidate();
+    f.plan = planner_.plan(f.objects, f.context, plannerSettings_, view);
+  } else {
+    FramePlanner firstFrame;  // a first frame's planner: every face it needs, nothing remembered
+    firstFrame.setCosts(planner_.costs());
+    f.plan = firstFrame.plan(f.objects, f.context, plannerSettings_, view);
   }
-  FramePlanner& planner = planning == Planning::NextFrame ? planner_ : firstFrame;
-  f.plan = planner.plan(f.objects, f.context, plannerSettings_, plannerView(width, height));
   if (showError_ && planning == Planning::NextFrame) {
     if (graphics_.errorView().takeRemade()) exactPlanner_.invalidate();
     CaptureContext exact = f.context;

@@ -1,7 +1,7 @@
-// The course's Ex12-2 frame, all of it. Each frame a cube map is rendered from the centre of the
-// mirror sphere (six faces, 90 degrees, aspect 1, into a framebuffer), then the sphere shows 0.78 x
-// what the cube map holds along the reflected ray + 0.3 x its gold base colour. The rest of the
-// project (the planner, the traced default, the searches) is elsewhere; this file needs none of it.
+// The course's Ex12-2 frame, all of it. Each frame a cube map is rendered from where the course
+// places the mirror sphere (six faces, 90 degrees, aspect 1, into a framebuffer); the sphere shows
+// 0.78 x what the cube map holds along the reflected ray + 0.3 x its gold base colour. The rest of
+// the project (planner, traced default, searches) is elsewhere; this file needs none of it.
 #include "course/course_frame.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -149,7 +149,7 @@ Result<CourseFrame> CourseFrame::create(int faceSize) {
   return frame;
 }
 
-// 1. The six faces, from the sphere's centre (the origin): 90 degrees, aspect 1.
+// 1. The six faces, from the origin, where the course places the sphere: 90 degrees, aspect 1.
 PassCounts CourseFrame::captureFaces(const Scene& scene, double seconds, const MeshBuffers& meshes,
                                      const glm::vec3& eye) {
   const State& s = *state_;
