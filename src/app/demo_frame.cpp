@@ -137,8 +137,7 @@ void Demo::ensureGeneralCaptures() {
   SceneRenderer* renderer = graphics_.renderer();
   if (!renderer || !lastFrame_.course || generalCaptured_) return;
   generalCaptured_ = true;
-  Result<PassCounts> capture =
-      renderer->capture(scene_, lastFrame_.seconds, lastFrame_.plan, lastFrame_.view.eye);
+  Result<PassCounts> capture = renderer->capture(scene_, lastFrame_.plan, lastFrame_.view.eye);
   if (!capture) std::fprintf(stderr, "capture failed: %s\n", capture.error().c_str());
 }
 
@@ -148,7 +147,7 @@ void Demo::renderLookupDirections(unsigned framebuffer, int width, int height, i
   ensureGeneralCaptures();
   const FrameRecord& f = lastFrame_;
   const bool sameSize = width == f.width && height == f.height;
-  renderer->drawMain(scene_, f.seconds, f.plan, sameSize ? f.view : viewParams(width, height),
+  renderer->drawMain(scene_, f.plan, sameSize ? f.view : viewParams(width, height),
                      sameSize ? f.mainDraws : viewDraws(f.objects, width, height), framebuffer,
                      width, height, output);
 }
@@ -181,8 +180,7 @@ void Demo::capturePass(const FrameRecord& f, bool waitForGpu) {
     });
   }
   Result<PassCounts> capture =
-      stepCallback_ ? captureInSteps(f)
-                    : graphics_.renderer()->capture(scene_, f.seconds, f.plan, f.view.eye);
+      stepCallback_ ? captureInSteps(f) : graphics_.renderer()->capture(scene_, f.plan, f.view.eye);
   timer.end();
   if (!capture) {
     stats_.error = "capture failed: " + capture.error();
@@ -211,8 +209,7 @@ void Demo::drawGeneral(const FrameRecord& f, unsigned framebuffer, bool waitForG
   const bool errorView = f.exactPlan && errorPass.prepare(f.width, f.height);
   const unsigned target = errorView ? errorPass.currentFramebuffer() : framebuffer;
   const PassCounts main = timedPass(graphics_.timer(), GpuTimer::kMain, waitForGpu, [&] {
-    return renderer.drawMain(scene_, f.seconds, f.plan, f.view, f.mainDraws, target, f.width,
-                             f.height);
+    return renderer.drawMain(scene_, f.plan, f.view, f.mainDraws, target, f.width, f.height);
   });
   stats_.frameMs = millisecondsSince(start);
   stats_.mainDrawCalls = main.drawCalls;

@@ -23,7 +23,7 @@ Result<PassCounts> Demo::captureInSteps(const FrameRecord& f) {
     if (step + 1 >= count) return false;
     return stepCallback_(steps[static_cast<size_t>(step)], step, count);
   };
-  return renderer.capture(scene_, f.seconds, f.plan, f.view.eye, &observer);
+  return renderer.capture(scene_, f.plan, f.view.eye, &observer);
 }
 
 Result<std::vector<FrameStep>> Demo::drawFrameStep(int step, unsigned framebuffer, int width,
@@ -40,9 +40,9 @@ Result<std::vector<FrameStep>> Demo::drawFrameStep(int step, unsigned framebuffe
   ExactTracer* tracer = graphics_.tracer();
   if (tracer && !f.plan.traced.empty()) tracer->prepare(scene_, f.plan, f.view.eye);
   if (shown + 1 == count) {  // the main step: the whole frame
-    Result<PassCounts> capture = renderer->capture(scene_, f.seconds, f.plan, f.view.eye);
+    Result<PassCounts> capture = renderer->capture(scene_, f.plan, f.view.eye);
     if (!capture) return Out::failure(capture.error());
-    renderer->drawMain(scene_, f.seconds, f.plan, f.view, f.mainDraws, framebuffer, width, height);
+    renderer->drawMain(scene_, f.plan, f.view, f.mainDraws, framebuffer, width, height);
     return steps;
   }
   Result<RgbaImage> image = RgbaImage{};
@@ -52,8 +52,7 @@ Result<std::vector<FrameStep>> Demo::drawFrameStep(int step, unsigned framebuffe
         captureStepImage(*renderer, steps[static_cast<size_t>(index)], index, count, width, height);
     return false;
   };
-  Result<PassCounts> capture =
-      renderer->capture(scene_, f.seconds, f.plan, f.view.eye, &stopAtShown);
+  Result<PassCounts> capture = renderer->capture(scene_, f.plan, f.view.eye, &stopAtShown);
   if (!capture) return Out::failure(capture.error());
   if (!image) return Out::failure(image.error());
   const std::string error = inside_.drawImage(image.value(), framebuffer, width, height);

@@ -44,10 +44,10 @@ bool ErrorViewPass::render(const Scene& scene, const FrameRecord& frame, unsigne
                            FrameStats& stats) {
   const auto start = std::chrono::steady_clock::now();
   const FramePlan& plan = *frame.exactPlan;
-  Result<PassCounts> capture = renderer_->capture(scene, frame.seconds, plan, frame.view.eye);
+  Result<PassCounts> capture = renderer_->capture(scene, plan, frame.view.eye);
   tracer_->setMark(true);
-  renderer_->drawMain(scene, frame.seconds, plan, frame.view, frame.mainDraws,
-                      view_->exactFramebuffer(), frame.width, frame.height);
+  renderer_->drawMain(scene, plan, frame.view, frame.mainDraws, view_->exactFramebuffer(),
+                      frame.width, frame.height);
   tracer_->setMark(false);
   const ErrorViewStats e = view_->compose(framebuffer);
   stats.errorView = true;

@@ -1,0 +1,141 @@
+#include "gfx/environment_binding.h"
+
+#include <algorithm>
+
+#include "core/fresnel.h"
+#include "core/ggx.h"
+#include "gfx/probe_capture.h"
+#include "gfx/scene_renderer_detail.h"
+
+namespace reflect {
+using renderer_detail::bindTexture;
+using renderer_detail::sphereRadiusIn;
+
+ProgramKey EnvironmentBinding::keyFor(const Scene& scene, const FramePlan& plan,
+                                      const DrawItem& item, const CaptureState& pass) const {
+  const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
+  ProgramKey key;
+  key.capture = pass.layer != 0;
+  if (object.material == Material::Phong) return key;
+  if (object.material == Material::CubeTextured) {
+    key.look = Look::CubeTextured;
+    return key;
+  }
+  key.look = Look::Environment;
+  key.refracts = object.material == Material::Glass;
+  key.rough = object.rough();
+  if (plan.traces(item.object)) {
+    key.search = Search::Exact;
+    // Rays that can meet another mirror, glass or cube-textured object (or glass's own far
+    // side) need the general tracer; the rest meet Phong surfaces or the sky.
+    key.traceGeneral = key.refracts;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+      key.traceGeneral |=
+          i != static_cast<size_t>(item.object) && scene.objects[i].material != Material::Phong;
+    }
+    return key;
+  }
+  // A mirror seen in another probe's capture looks its own cube up plainly: that view is a
+  // second bounce, seen small and from the previous frame, and a search in every texel of it cost
+  // more than the rest of the frame (two-mirrors: 8.2x -> 3.7x the course's frame, -0.2 dB, +1
+  // pixel off by more than 32 levels a frame; tools/scene_accuracy.sh).
+  const bool searches = pass.layer == 0 && searchesFor(scene, plan, item.object);
+  key.search = searches ? capturedSearch(s_.accuracy.search) : Search::Plain;
+  key.glassExit = key.refracts && s_.glass.exitOf(object, plan.modelOf(item.object), s_.meshes,
+                                                  s_.accuracy) != nullptr;
+  return key;
+}
+
+bool EnvironmentBinding::searchesFor(const Scene& scene, const FramePlan& plan, int index) const {
+  const Search search = capturedSearch(s_.accuracy.search);
+  if (search == Search::Plain || search == Search::Exact) return false;
+  if (scene.objects[static_cast<size_t>(index)].environment == Environment::Skybox) return false;
+  const ProbePlan* probe = plan.probeOf(index);
+  return probe && !probe->plainLookupSuffices && s_.probes.target(probe->reflector) != nullptr;
+}
+
+void EnvironmentBinding::bindTracer(const EnvironmentUniforms& u, const ProgramKey& key) const {
+  if (key.search == Search::Exact && s_.exact) s_.exact->bind(u.exact, s_.accuracy.lobeRays);
+}
+
+void EnvironmentBinding::setForObject(const EnvironmentUniforms& u, const ProgramKey& key,
+                                      const Scene& scene, const FramePlan& plan, int index) const {
+  const SceneObject& object = scene.objects[static_cast<size_t>(index)];
+  const glm::mat4& model = plan.modelOf(index);
+  u.reflectionWeight.set(object.reflection);
+  u.baseWeight.set(object.base);
+  u.eta.set(1.0f / clampedIor(object.ior));
+  u.fresnelF0.set(fresnelF0(object.ior));
+  u.fresnel.set(object.fresnel);
+  if (key.refracts) {
+    // Glass leaves through its far side: where the mesh is a sphere (uniformly scaled) in closed
+    // form, otherwise through its interior map, with the GLASS_EXIT programs.
+    const MeshBuffer* full = s_.meshes ? s_.meshes->find(object.mesh, 0) : nullptr;
+    const float radius = sphereRadiusIn(full, model);
+    const GlassInteriorMap* interior =
+        key.glassExit ? s_.glass.exitOf(object, model, s_.meshes, s_.accuracy) : nullptr;
+    if (interior) u.glassExit.set(*interior, model);
+    u.twoSurfaces.set(s_.accuracy.glassSurfaces == 2 && (radius > 0.0f || interior));
+    const glm::vec3 centre(model * glm::vec4(full ? full->bounds().centre() : glm::vec3(0), 1));
+    u.glassSphere.set(glm::vec4(centre, radius));
+  }
+  bind(u, key, scene, object, texturesOf(scene, plan, index));
+  if (key.search == Search::Exact && s_.exact) s_.exact->bindObject(u.exact, index);
+}
+
+void EnvironmentBinding::setForObject(const CubeTexturedUniforms&, const ProgramKey&,
+                                      const Scene& scene, const FramePlan& plan, int index) const {
+  bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, texturesOf(scene, plan, index).colour);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+EnvironmentBinding::Textures EnvironmentBinding::texturesOf(const Scene& scene,
+                                                            const FramePlan& plan,
+                                                            int index) const {
+  const SceneObject& object = scene.objects[static_cast<size_t>(index)];
+  Textures b;
+  b.pyramid = s_.probes.emptyPyramid();
+  if (const ProbeLayout* layout = plan.layoutOf(index)) b.centre = layout->centre;
+  if (object.environment == Environment::Skybox) {
+    b.colour = s_.sky ? s_.sky->texture() : 0;
+    b.prefiltered = s_.rough.skyTexture();
+    b.filteredFaceSize = s_.sky ? s_.sky->faceSize() : 1;
+  } else if (const ProbePlan* probe = plan.probeOf(index)) {
+    if (const CubeCaptureTarget* t = s_.probes.target(probe->reflector)) {
+      b.colour = t->texture(0);
+      b.layers = t->format().layers;
+      b.colour2 = b.layers == 2 ? t->texture(1) : b.colour;
+      if (t->format().depthChain) b.pyramid = t->pyramid();
+      b.faceSize = t->faceSize();
+      b.filteredFaceSize = b.faceSize;
+      b.topLevel = t->topLevel();
+    }
+    if (GLuint filtered = s_.rough.probeTexture(probe->reflector)) b.prefiltered = filtered;
+  }
+  return b;
+}
+
+void EnvironmentBinding::bind(const EnvironmentUniforms& u, const ProgramKey& key,
+                              const Scene& scene, const SceneObject& object,
+                              const Textures& t) const {
+  bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, t.colour);
+  bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, t.colour2 ? t.colour2 : t.colour);
+  bindTexture(kPyramidUnit, GL_TEXTURE_2D, t.pyramid);
+  if (key.rough) {
+    bindTexture(kPrefilteredUnit, GL_TEXTURE_CUBE_MAP, t.prefiltered);
+    const float levels =
+        static_cast<float>(usableRoughLevels(s_.accuracy.roughLevels, t.filteredFaceSize));
+    u.roughLod.set(std::clamp(object.roughness, 0.0f, 1.0f) * levels);
+    u.refractLod.set(transmissionRoughness(object.roughness, object.ior) * levels);
+    u.roughAlpha.set(ggxAlpha(object.roughness));
+  }
+  glActiveTexture(GL_TEXTURE0);
+  u.probeCentre.set(t.centre);
+  u.distanceUnit.set(scene.capture.near);
+  u.layers.set(t.layers);
+  u.faceSize.set(t.faceSize);
+  u.topLevel.set(t.topLevel);
+  u.pyramidTile.set(1 << t.topLevel);
+}
+
+}  // namespace reflect

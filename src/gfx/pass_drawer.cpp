@@ -1,0 +1,85 @@
+#include "gfx/pass_drawer.h"
+
+#include <algorithm>
+
+#include "core/frustum.h"
+#include "core/normal_matrix.h"
+
+namespace reflect {
+
+void PassDrawer::setForPass(const PhongUniforms& u, const ProgramKey&, const DrawPass& pass) const {
+  u.mesh.viewPosition.set(pass.lightingEye);
+  u.setLight(pass.scene.light);
+}
+
+void PassDrawer::setForPass(const EnvironmentUniforms& u, const ProgramKey& key,
+                            const DrawPass& pass) const {
+  u.mesh.viewPosition.set(pass.environmentEye);
+  u.outputDirection.set(pass.outputDirections);
+  environments_.bindTracer(u, key);
+}
+
+void PassDrawer::setForPass(const CubeTexturedUniforms& u, const ProgramKey&,
+                            const DrawPass& pass) const {
+  u.mesh.viewPosition.set(pass.environmentEye);
+}
+
+template <typename Uniforms>
+PassCounts PassDrawer::drawObject(const Uniforms& u, const ProgramKey& key, const DrawPass& pass,
+                                  const DrawItem& item) const {
+  const SceneObject& object = pass.scene.objects[static_cast<size_t>(item.object)];
+  const MeshBuffer* buffer = mesh(object.mesh, item.lod);
+  if (!buffer) return {};
+  const glm::mat4& model = pass.plan.modelOf(item.object);
+  u.mesh.model.set(model);
+  u.mesh.normalMatrix.set(normalMatrixOf(glm::mat3(model)));
+  // The object's size, for the third capture pass (capture_output.glsl).
+  const Bounds world = transformBounds(buffer->bounds(), model);
+  u.mesh.capture.extent.set(glm::length(world.max - world.min) / pass.scene.capture.near);
+  u.mesh.colour.set(object.colour);
+  environments_.setForObject(u, key, pass.scene, pass.plan, item.object);
+  buffer->draw(item.ranges);
+  const size_t triangles = item.ranges.empty() ? buffer->triangleCount() : item.triangles;
+  return {static_cast<int>(std::max<size_t>(item.ranges.size(), 1)), triangles};
+}
+
+PassCounts PassDrawer::draw(const DrawPass& pass, const std::vector<DrawItem>& draws) const {
+  // One program switch per variant present, in the keys' order (Phong first).
+  std::vector<std::pair<ProgramKey, const DrawItem*>> keyed;
+  keyed.reserve(draws.size());
+  for (const DrawItem& d : draws) {
+    keyed.emplace_back(environments_.keyFor(pass.scene, pass.plan, d, pass.capture), &d);
+  }
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  PassCounts counts;
+  for (size_t i = 0; i < keyed.size();) {
+    size_t end = i;
+    while (end < keyed.size() && keyed[end].first == keyed[i].first) ++end;
+    ProgramKey key = keyed[i].first;
+    const SceneProgram* p = programs_.get(key);
+    if (!p && key.glassExit) {  // no interior-map program: glass leaves at one surface
+      key.glassExit = false;
+      p = programs_.get(key);
+    }
+    if (p) {
+      glUseProgram(p->id());
+      const MeshPassUniforms& mesh = p->mesh();
+      mesh.capture.set(pass.capture);
+      mesh.viewProjection.set(pass.viewProjection);
+      // The program's own type from here on: each setter reaches its own table alone.
+      std::visit(
+          [&](const auto& program) {
+            setForPass(program.u(), key, pass);
+            for (size_t k = i; k < end; ++k) {
+              counts += drawObject(program.u(), key, pass, *keyed[k].second);
+            }
+          },
+          p->program);
+    }
+    i = end;
+  }
+  return counts;
+}
+
+}  // namespace reflect
