@@ -111,7 +111,7 @@ void followRays(const Demo& demo, const SceneBvh& placed, const SurfacePoint& su
   e.lookupRay = {e.glass.exitPoint, e.glass.leaving};
 }
 
-// The search the renderer drew object `object` with (SceneRenderer::searchesFor's rule).
+// The search the renderer drew object `object` with (EnvironmentBinding::searchesFor's rule).
 std::string searchOf(const Demo& demo, int object) {
   const Search search = capturedSearch(demo.accuracySettings().search);
   const ProbePlan* probe = demo.lastPlan().probeOf(object);

@@ -66,6 +66,10 @@ bool FramePlan::traces(int object) const {
   return false;
 }
 
+bool FramePlan::tracesGeneral(int object) const {
+  return contains(generalTracers, object);
+}
+
 const ProbeLayout* FramePlan::layoutOf(int object) const {
   if (const ProbePlan* probe = probeOf(object)) return probe;
   for (const ProbeLayout& t : traced) {
@@ -232,6 +236,11 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       if (!planner::traceable(o) || plan.layoutOf(static_cast<int>(i))) continue;
       plan.traced.push_back(
           ProbeLayout{static_cast<int>(i), {static_cast<int>(i)}, planner::worldCentreOf(o)});
+    }
+  }
+  for (const ProbeLayout& t : plan.traced) {
+    for (int m : t.members) {
+      if (planner::needsGeneralTracer(objects, m)) plan.generalTracers.push_back(m);
     }
   }
   planner::decideSkyFiltering(plan, objects, context, skyFilteredLevels_, skyFilteredContent_);

@@ -163,6 +163,8 @@ struct FramePlan {
   // Reflectors whose rays are traced this frame (search: exact, or planned where tracing is the
   // cheaper): who they are and the centre their error is measured from. No probe, no face.
   std::vector<ProbeLayout> traced;
+  // The traced reflectors whose rays need the general tracer (planner::needsGeneralTracer).
+  std::vector<int> generalTracers;
   // The static skybox read by rough mirrors or frosted glass (environment: skybox): the
   // prefiltered levels they need (as ProbePlan::roughLevels, for the sky's face size; empty when
   // no skybox reader is rough: then the sky has no filtered cube), and whether the sky is
@@ -180,6 +182,7 @@ struct FramePlan {
   // The probe object `object` samples, or null (none, or its rays are traced).
   const ProbePlan* probeOf(int object) const;
   bool traces(int object) const;
+  bool tracesGeneral(int object) const;
   // Where `object`'s reflection is measured from: its probe's or its traced layout's centre.
   const ProbeLayout* layoutOf(int object) const;
 };

@@ -23,13 +23,12 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
     if (contains(probe.members, static_cast<int>(i))) {
       const float pixels = screenPixels(worldCentreOf(o), worldRadiusOf(o), view);
       c.trace.pixels += pixels;
+      c.trace.general |= planner::needsGeneralTracer(objects, static_cast<int>(i));
       if (o.look.rough()) {
         // Frosted glass traces two lobes a pixel (its reflection's and the light through it),
         // each crossing the object: about twice a rough mirror's rays.
         c.trace.lobePixels += o.look.material == Material::Glass ? 2.0f * pixels : pixels;
       }
-    } else {
-      c.trace.general |= o.look.material != Material::Phong;
     }
   }
   // Captured: the faces that show something moving are redrawn (every face, every frame, under

@@ -40,6 +40,16 @@ bool traceable(const PlannedObject& o) {
   return o.look.material == Material::Mirror || o.look.material == Material::Glass;
 }
 
+bool needsGeneralTracer(const std::vector<PlannedObject>& objects, int object) {
+  if (objects[static_cast<size_t>(object)].look.material == Material::Glass) return true;
+  for (size_t i = 0; i < objects.size(); ++i) {
+    if (i != static_cast<size_t>(object) && objects[i].look.material != Material::Phong) {
+      return true;
+    }
+  }
+  return false;
+}
+
 int chooseLevel(const PlannedObject& o, const glm::vec3& centre, float pixelsPerTangent,
                 float trianglesPerPixel) {
   if (trianglesPerPixel <= 0.0f || o.levels.size() < 2) return 0;

@@ -23,6 +23,12 @@ float worldRadiusOf(const PlannedObject& o);
 
 // A mirror or glass: its rays can be traced.
 bool traceable(const PlannedObject& o);
+// Whether the rays traced from object `object` need the general tracer: they can meet another
+// object that is not Phong (a mirror, glass or a cube-textured object), or glass's own far side.
+// The rest meet Phong surfaces or the sky alone, which the Phong-only tracer draws for less. The
+// one rule: the planner costs it (weigh) and records it (FramePlan::tracesGeneral) for the
+// renderer's program.
+bool needsGeneralTracer(const std::vector<PlannedObject>& objects, int object);
 
 // The coarsest level whose triangle count still covers the object's projected disc, seen from
 // `centre`, at `trianglesPerPixel`; pixelsPerTangent converts the tangent of an angle to pixels

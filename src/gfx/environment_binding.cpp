@@ -26,13 +26,7 @@ ProgramKey EnvironmentBinding::keyFor(const Scene& scene, const FramePlan& plan,
   key.rough = object.rough();
   if (plan.traces(item.object)) {
     key.search = Search::Exact;
-    // Rays that can meet another mirror, glass or cube-textured object (or glass's own far
-    // side) need the general tracer; the rest meet Phong surfaces or the sky.
-    key.traceGeneral = key.refracts;
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-      key.traceGeneral |=
-          i != static_cast<size_t>(item.object) && scene.objects[i].material != Material::Phong;
-    }
+    key.traceGeneral = plan.tracesGeneral(item.object);  // the planner's rule, costed there
     return key;
   }
   // A mirror seen in another probe's capture looks its own cube up plainly: that view is a

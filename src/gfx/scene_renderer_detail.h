@@ -1,5 +1,5 @@
-// Small helpers the two halves of SceneRenderer share (scene_renderer.cpp: captures and draws;
-// scene_renderer_environment.cpp: the reflectors' programs). Internal to src/gfx.
+// Small helpers the renderer's parts share (probe_capture.cpp, environment_binding.cpp,
+// glass_exits.cpp). Internal to src/gfx.
 #pragma once
 
 #include <algorithm>

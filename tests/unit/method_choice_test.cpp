@@ -157,6 +157,34 @@ TEST(MethodChoice, AnotherReflectorInViewNeedsTheGeneralTracer) {
   EXPECT_TRUE(planner.choices()[0].trace.general);
 }
 
+// One rule for the tracer's program and its cost: a mirror alone among Phong objects takes the
+// Phong-only tracer; glass (its own far side) and a mirror sharing its probe with another (they
+// see each other) take the general one, costed so and recorded in the plan for the renderer.
+TEST(MethodChoice, TheGeneralTracerIsDecidedOnceAndRecordedInThePlan) {
+  FramePlanner planner;
+  planner.setCosts(unitCosts());
+  CaptureContext exact;
+  exact.accuracy.search = Search::Exact;
+  FramePlan plan = planner.plan(sceneWithMirror(), exact, {}, kView);
+  EXPECT_TRUE(plan.traces(0));
+  EXPECT_FALSE(plan.tracesGeneral(0));
+
+  plan = planner.plan(sceneWithMirror(Material::Glass), exact, {}, kView);
+  EXPECT_TRUE(plan.tracesGeneral(0));
+
+  std::vector<PlannedObject> pair = sceneWithMirror();
+  pair.push_back(pair[0]);
+  pair.back().model = glm::translate(glm::mat4(1.0f), {0, 0, -3});
+  pair[0].probeGroup = pair.back().probeGroup = 7;  // one probe for both
+  FramePlanner weighing;
+  weighing.setCosts(traceCheap());
+  plan = weighing.plan(pair, planned(), {}, kView);
+  ASSERT_EQ(weighing.choices().size(), 1u);
+  EXPECT_EQ(weighing.choices()[0].method, Method::Trace);
+  EXPECT_TRUE(weighing.choices()[0].trace.general);  // they see each other: costed as general
+  EXPECT_EQ(plan.generalTracers, (std::vector<int>{0, 3}));
+}
+
 TEST(MethodChoice, WithoutAViewPlannedCaptures) {
   FramePlanner planner;
   const FramePlan plan = planner.plan(sceneWithMirror(), planned(), {});
