@@ -21,7 +21,7 @@ Result<ProbePrefilter*> PrefilteredProbes::pass() {
 }
 
 Result<double> PrefilteredProbes::filter(const FramePlan& plan, const CapturedCube& captured,
-                                   const SkyboxPass* sky, const AccuracySettings& accuracy) {
+                                         const SkyboxPass* sky, const AccuracySettings& accuracy) {
   lastSamples_ = 0.0;
   // A probe no rough reader reads any more keeps no filtered cube.
   for (auto it = probes_.begin(); it != probes_.end();) {
@@ -54,7 +54,7 @@ Result<double> PrefilteredProbes::filter(const FramePlan& plan, const CapturedCu
 }
 
 Result<double> PrefilteredProbes::filterSky(const FramePlan& plan, const SkyboxPass* sky,
-                                      const AccuracySettings& accuracy) {
+                                            const AccuracySettings& accuracy) {
   if (!sky || plan.skyRoughLevels.empty()) {
     sky_.reset();  // no rough reader reads the sky
     return 0.0;
