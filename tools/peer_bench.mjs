@@ -294,8 +294,17 @@ async function bench(base, pages, o, title = '') {
     for (const spec of pages) {
       // A browser of its own: the GPU process's caches (ANGLE's pipelines, SwiftShader's
       // routines) start empty, so every page's load compiles its shaders as a first visit does.
-      const own = await launchBrowser();
-      const r = await measure(own, base, spec, o).finally(() => own.close());
+      const once = async () => {
+        const own = await launchBrowser();
+        return measure(own, base, spec, o).finally(() => own.close().catch(() => {}));
+      };
+      // A browser that goes away under the page (this shared machine's other jobs) is noted and
+      // the page measured once more.
+      const r = await once().catch((error) => {
+        if (!/closed|crash/i.test(error.message)) throw error;
+        console.log(`round ${round} ${spec.label}: ${error.message.split('\n')[0]}; measured again`);
+        return once();
+      });
       samples.get(spec.key).push(r);
       const { split: x } = r;
       console.log(`round ${round} ${spec.label.padEnd(26)} frame ${fmt(r.frame.median, 7)} ms ` +
