@@ -1,10 +1,12 @@
 #!/usr/bin/env node
-// The project's page against three.js peers (tools/peers/), in one headless Chromium (Debian's,
+// The project's page against three.js peers (tools/peers/), in headless Chromium (Debian's,
 // SwiftShader WebGL2). Not a test: it prints numbers and exits 0. Two peers draw the default
 // scene (cubecamera, bvh); one reads a scene file (pmrem: a CubeCamera and a PMREM a mirror, rough
-// mirrors), the one --scene NAME names (ex12-2 without it).
+// mirrors), the one --scene NAME names (ex12-2 without it). Two pages are the floor, the main pass
+// alone: the project's page with every reflector made a Phong object once it is up (plain) and a
+// three.js page with the mirror a Phong object (three-plain); what they take, every method pays.
 //
-//   node tools/peer_bench.mjs [--heavy] [--rounds N] [--frames N] [--warmup N] [--size WxH]
+//   node tools/peer_bench.mjs [--heavy | --both] [--rounds N] [--frames N] [--warmup N] [--size WxH]
 //                             [--site DIR] [--pages KEY,KEY,...] [--query EXTRA] [--scene NAME]
 //                             [--reference PNG [--mask PNG | --save-mask PNG] [--time T]]
 //   node tools/peer_bench.mjs --screenshots DIR [--time T] [--heavy] [--pages ...] [--size WxH]
@@ -12,17 +14,26 @@
 //
 // Serves one folder, build/peer-bench/: the project's site (build/web/site, or --site), the
 // peers' pages, three and three-mesh-bvh from node_modules and, with --heavy, the 157k-triangle
-// figure (tools/make_models.py --heavy) in place of mario for every page. Each round measures
-// every page in turn (PAGES' order), each in a fresh browser context:
+// figure (tools/make_models.py --heavy) in place of mario for every page; --both measures the
+// shipped models' scene, then the heavy one's, in one run, and prints both. Each round measures
+// every page in turn (PAGES' order), each in a browser of its own (Debian's Chromium, with no
+// shader program cache: no page's load compiles from the caches of the page before it):
 //   load to first frame: performance.now() at the first draw call into the canvas (the default
-//     framebuffer), hooked before any of the page's scripts, so the project's page and the peers
-//     are measured the same way (from navigation start);
+//     framebuffer), hooked before any of the page's scripts (bench_lib.mjs's PAGE_HOOK), so the
+//     project's page and the peers are measured the same way (from navigation start); its parts
+//     from the pages' own performance marks (web/wasm_bridge.js, web/scene_loader.js,
+//     tools/peers/peer_page.js), resource timing, and the hook's timing of the wasm module's
+//     instantiateStreaming and of the shader compile and link calls (peer_report.mjs's loadSpans);
 //   frame: after the page is ready (and the project's levels of detail are built), W warm-up and
 //     F timed calls of frame(1/60) in one task: window.demo.frame on the project's page,
 //     window.peer.frame on the peers; each call's wall time, which includes the GPU's work
-//     (both end with a read-back).
+//     (both end with a read-back), and its CPU part (the wall time less that inside the GL calls
+//     that wait for the GPU process). Its parts: the project's frame stats (captureMs, then
+//     frameMs less it: each pass waited for); the peers draw F more frames with frameSplit, a
+//     read-back after each pass (the CubeCamera's update, then the render).
 // It prints each round, then per page the medians over the rounds of each round's median, p10
-// and p90 frame ms and its load time, then each project page's frame and load against each peer.
+// and p90 frame ms, the frame's and the load's parts, the floor, and each project page's frame and
+// load against each peer (tools/peer_report.mjs).
 // --screenshots DIR writes each page's picture at time T (default 0; three frames drawn there) as
 // DIR/KEY.png instead; --serve only serves the folder, for a person to look at the pages.
 // --reference PNG (a picture of the scene at --time T and --size WxH, e.g. `reflect render
@@ -33,8 +44,9 @@
 import { spawnSync } from 'node:child_process';
 import { copyFileSync, existsSync, mkdirSync, readdirSync, rmSync, symlinkSync } from 'node:fs';
 import { join, resolve } from 'node:path';
-import { freePort, launchChromium, repo, startServer, summary } from './bench_lib.mjs';
+import { PAGE_HOOK, freePort, loadParts, launchChromium, repo, startServer, summary } from './bench_lib.mjs';
 import { FRAMES_AT_TIME, runAccuracy } from './peer_accuracy.mjs';
+import { fmt, loadSpans, pageRows, printBoth, printTables } from './peer_report.mjs';
 
 // The project's configurations: what each adds to index.html's query. Add a row for a new setting.
 const PROJECT_PAGES = [
@@ -42,11 +54,15 @@ const PROJECT_PAGES = [
   { key: 'exact', label: 'project exact', query: 'search=exact' },
   { key: 'course', label: 'project course setting', query: 'acc=original&policy=every-frame&captureLod=0' },
   { key: 'hierarchical', label: 'project hierarchical', query: 'search=hierarchical' },
+  // The floor: every reflector made a Phong object once the page is up (no capture, no trace).
+  { key: 'plain', label: 'project, mirror as Phong', query: '', plain: true },
 ];
 // The peers (tools/peers/), each driven through window.peer.
 const PEER_PAGES = [
   { key: 'cubecamera', label: 'three.js CubeCamera', path: 'peers/index.html', query: 'rendition=cubecamera', peer: true },
   { key: 'bvh', label: 'three.js + three-mesh-bvh', path: 'peers/index.html', query: 'rendition=bvh', peer: true },
+  { key: 'three-plain', label: 'three.js, mirror as Phong', path: 'peers/index.html', query: 'rendition=plain',
+    peer: true, plain: true },
   // The scene file --scene names (sceneFile); without --scene it runs only when --pages names it.
   { key: 'pmrem', label: 'three.js CubeCamera + PMREM', path: 'peers/index.html', query: 'rendition=pmrem', peer: true,
     sceneFile: true },
@@ -58,7 +74,7 @@ const BASE_PAGES = PROJECT_PAGES.map((p) => ({ ...p, key: `base-${p.key}`, label
 const PAGES = [...PROJECT_PAGES, ...PEER_PAGES, ...BASE_PAGES];
 
 function parseArgs(argv) {
-  const o = { heavy: false, rounds: 2, frames: 20, warmup: 5, width: 800, height: 800,
+  const o = { heavy: false, both: false, rounds: 2, frames: 20, warmup: 5, width: 800, height: 800,
               site: join(repo, 'build/web/site'), pages: PAGES.map((p) => p.key), query: '',
               screenshots: null, time: 0, serve: false, against: null, scene: null,
               reference: null, mask: null, saveMask: null };
@@ -69,6 +85,7 @@ function parseArgs(argv) {
       return argv[++i];
     };
     if (arg === '--heavy') o.heavy = true;
+    else if (arg === '--both') o.both = true;
     else if (arg === '--rounds') o.rounds = Number(value());
     else if (arg === '--frames') o.frames = Number(value());
     else if (arg === '--warmup') o.warmup = Number(value());
@@ -88,7 +105,7 @@ function parseArgs(argv) {
       if (!m) throw new Error('--size wants WIDTHxHEIGHT');
       [o.width, o.height] = [Number(m[1]), Number(m[2])];
     } else if (arg === '--help' || arg === '-h') {
-      console.log('usage: node tools/peer_bench.mjs [--heavy] [--rounds N] [--frames N] [--warmup N] [--size WxH]\n' +
+      console.log('usage: node tools/peer_bench.mjs [--heavy | --both] [--rounds N] [--frames N] [--warmup N] [--size WxH]\n' +
                   '                                 [--site DIR] [--pages KEY,...] [--query EXTRA] [--against DIR]\n' +
                   '                                 [--scene NAME] [--reference PNG [--mask PNG | --save-mask PNG] [--time T]]\n' +
                   '       node tools/peer_bench.mjs --screenshots DIR [--time T] [--heavy] [--pages KEY,...]\n' +
@@ -140,7 +157,7 @@ function assemble(o) {
   link(join(repo, 'node_modules/three/build'), 'three/build');
   link(join(repo, 'node_modules/three/examples/jsm'), 'three/examples/jsm');
   link(join(repo, 'node_modules/three-mesh-bvh/build'), 'three-mesh-bvh/build');
-  if (o.heavy) {
+  if (o.heavy || o.both) {
     const heavy = join(repo, 'build/heavy/mario.obj');
     if (!existsSync(heavy)) {
       const made = spawnSync('python3', [join(repo, 'tools/make_models.py'), '--heavy'], { stdio: 'inherit' });
@@ -166,24 +183,6 @@ function pageUrl(page, o, extra = []) {
   return `${page.path || 'index.html'}?${[...parts, ...extra].filter(Boolean).join('&')}`;
 }
 
-// Runs before any script of the page: the time of the first draw call into the default
-// framebuffer (the canvas). Both kinds of draw call are hooked, so the measure does not depend on
-// which one a page happens to draw with first.
-const FIRST_DRAW_HOOK = () => {
-  window.__firstDrawMs = null;
-  const proto = WebGL2RenderingContext.prototype;
-  const originals = { drawElements: proto.drawElements, drawArrays: proto.drawArrays };
-  for (const [name, original] of Object.entries(originals)) {
-    proto[name] = function (...args) {
-      if (window.__firstDrawMs === null && this.getParameter(this.DRAW_FRAMEBUFFER_BINDING) === null) {
-        window.__firstDrawMs = performance.now();
-        Object.assign(proto, originals);
-      }
-      return original.apply(this, args);
-    };
-  }
-};
-
 // A fresh context on the page, ready to be driven: { context, page, api, problems }.
 async function openPage(browser, base, spec, o, extra = []) {
   const context = await browser.newContext({ viewport: { width: o.width, height: o.height }, deviceScaleFactor: 1 });
@@ -192,7 +191,7 @@ async function openPage(browser, base, spec, o, extra = []) {
   const problems = [];
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
-  await page.addInitScript(FIRST_DRAW_HOOK);
+  await page.addInitScript(PAGE_HOOK);
   await page.goto(base + pageUrl(spec, o, extra));
   const api = spec.peer ? 'peer' : 'demo';
   await page.waitForFunction((name) => window[name] !== undefined, api);
@@ -205,31 +204,51 @@ async function openPage(browser, base, spec, o, extra = []) {
     const errors = await page.evaluate(() => window.demo.messages().filter((m) => m.kind === 'error'));
     problems.push(...errors.map((m) => `page message: ${m.text}`));
   }
+  if (spec.plain && !spec.peer) {
+    const refused = await page.evaluate(() => window.demo.objects()
+      .map((o, index) => (o.material.type === 'phong' ? '' : window.demo.setMaterial(index, { type: 'phong' })))
+      .filter(Boolean));
+    problems.push(...refused.map((text) => `setMaterial: ${text}`));
+  }
   return { context, page, api, problems };
+}
+
+// W warm-up frames, then F timed ones, each frame's wall time and the part of it spent waiting for
+// the GPU process (PAGE_HOOK); the project's frames also say their stats' split. The peers then
+// draw F more with frameSplit (a wait after each pass) for their passes' times.
+function timeFrames({ name, warmup, count }) {
+  const api = window[name];
+  for (let i = 0; i < warmup; ++i) api.frame(1 / 60);
+  const frames = [];
+  for (let i = 0; i < count; ++i) {
+    const waited = window.__glWaitMs;
+    const start = performance.now();
+    const r = api.frame(1 / 60);
+    const wall = performance.now() - start;
+    const frame = { wall, cpu: wall - (window.__glWaitMs - waited) };
+    if (name === 'demo') {
+      // captureMs: from the frame's start (its plan) to its captures' end, waited for; frameMs
+      // adds the main pass, waited for. What is left of the wall time is the bridge (JSON).
+      Object.assign(frame, { capture: r.captureMs, main: r.frameMs - r.captureMs, traced: r.tracedReflectors,
+                             faces: r.facesCaptured, gpu: r.gpuFrameMs });
+    }
+    frames.push(frame);
+  }
+  if (name === 'peer') {
+    for (let i = 0; i < count; ++i) {
+      const { parts } = api.frameSplit(1 / 60);
+      frames[i].capture = parts.capture ?? 0;
+      frames[i].main = parts.main;
+    }
+  }
+  return frames;
 }
 
 async function measure(browser, base, spec, o) {
   const { context, page, api, problems } = await openPage(browser, base, spec, o);
   try {
-    const firstDrawMs = await page.evaluate(() => window.__firstDrawMs);
-    // The project page's load in parts (performance marks of web/wasm_bridge.js, scene_loader.js).
-    const parts = spec.peer ? null : await page.evaluate(() => {
-      const at = (name) => performance.getEntriesByName(name, 'mark')[0];
-      const committed = at('reflect:scene-committed');
-      return { wasm: at('reflect:wasm-ready')?.startTime, models: at('reflect:models-in')?.startTime,
-               committed: committed?.startTime, bvhMs: committed?.detail?.bvhMs };
-    });
-    const frames = await page.evaluate(({ name, warmup, count }) => {
-      const api = window[name];
-      for (let i = 0; i < warmup; ++i) api.frame(1 / 60);
-      const wall = [];
-      for (let i = 0; i < count; ++i) {
-        const start = performance.now();
-        api.frame(1 / 60);
-        wall.push(performance.now() - start);
-      }
-      return wall;
-    }, { name: api, warmup: o.warmup, count: o.frames });
+    const load = await page.evaluate(loadParts);
+    const frames = await page.evaluate(timeFrames, { name: api, warmup: o.warmup, count: o.frames });
     const canvas = await page.evaluate(() => {
       const c = document.getElementById('canvas');
       return `${c.width}x${c.height}`;
@@ -238,7 +257,11 @@ async function measure(browser, base, spec, o) {
       const d = window.demo;
       return `${d.accuracy().describe}; policy ${d.planner().policy}, capture LOD ${d.planner().captureLod}`;
     });
-    return { firstDrawMs, parts, frame: summary(frames), canvas, settings, problems };
+    const med = (key) => summary(frames.map((f) => f[key])).median;
+    const split = { capture: med('capture'), main: med('main'), cpu: med('cpu'), traced: med('traced'),
+                    faces: med('faces'), gpu: med('gpu') };
+    return { firstDrawMs: load.firstDraw, load, frame: summary(frames.map((f) => f.wall)), split, canvas, settings,
+             problems };
   } finally {
     await context.close();
   }
@@ -261,53 +284,48 @@ async function rendererString(browser) {
   }
 }
 
-const fmt = (x, width = 9) => (Number.isFinite(x) ? x.toFixed(1) : 'n/a').padStart(width);
-const median = (values) => summary(values).median;
-
-async function bench(browser, base, pages, o) {
-  console.log(`renderer: ${await rendererString(browser)}`);
-  console.log(`${o.rounds} round(s) of ${pages.map((p) => p.key).join(', ')}; ${o.width}x${o.height} CSS px at ` +
-              `device pixel ratio 1; ${o.frames} frames of frame(1/60) after ${o.warmup} warm-up` +
-              (o.heavy ? '; the heavy figure (157k triangles) as mario' : '') +
+async function bench(base, pages, o, title = '') {
+  console.log(`${title ? `${title}: ` : ''}${o.rounds} round(s) of ${pages.map((p) => p.key).join(', ')}; ` +
+              `${o.width}x${o.height} CSS px at device pixel ratio 1; ${o.frames} frames of frame(1/60) after ` +
+              `${o.warmup} warm-up` + (o.heavy ? '; the heavy figure (157k triangles) as mario' : '; the shipped models') +
               (o.query ? `; project query +${o.query}` : ''));
   const samples = new Map(pages.map((p) => [p.key, []]));
   for (let round = 1; round <= o.rounds; ++round) {
     for (const spec of pages) {
-      const r = await measure(browser, base, spec, o);
+      // A browser of its own: the GPU process's caches (ANGLE's pipelines, SwiftShader's
+      // routines) start empty, so every page's load compiles its shaders as a first visit does.
+      const once = async () => {
+        const own = await launchBrowser();
+        return measure(own, base, spec, o).finally(() => own.close().catch(() => {}));
+      };
+      // A browser that goes away under the page (this shared machine's other jobs) is noted and
+      // the page measured once more.
+      const r = await once().catch((error) => {
+        if (!/closed|crash/i.test(error.message)) throw error;
+        console.log(`round ${round} ${spec.label}: ${error.message.split('\n')[0]}; measured again`);
+        return once();
+      });
       samples.get(spec.key).push(r);
+      const { split: x } = r;
       console.log(`round ${round} ${spec.label.padEnd(26)} frame ${fmt(r.frame.median, 7)} ms ` +
-                  `(p10 ${fmt(r.frame.p10, 0)}, p90 ${fmt(r.frame.p90, 0)}), first frame ${fmt(r.firstDrawMs, 6)} ms, ` +
-                  `canvas ${r.canvas}` + (round === 1 && r.settings ? `; ${r.settings}` : ''));
-      if (r.parts?.committed !== undefined) {
-        const p = r.parts;
-        console.log(`  load: wasm ready ${fmt(p.wasm, 0)} ms, models in ${fmt(p.models, 0)}, scene made ` +
-                    `${fmt(p.committed, 0)} (of which the trees ${fmt(p.bvhMs, 0)}), first draw ${fmt(r.firstDrawMs, 0)}`);
-      }
+                  `(p10 ${fmt(r.frame.p10, 0)}, p90 ${fmt(r.frame.p90, 0)}; capture ${fmt(x.capture, 0)}, ` +
+                  `main ${fmt(x.main, 0)}, CPU ${fmt(x.cpu, 0)}` +
+                  (spec.peer ? '' : `, traced ${x.traced}, faces ${x.faces}`) +
+                  `), first frame ${fmt(r.firstDrawMs, 6)} ms, canvas ${r.canvas}` +
+                  (round === 1 && r.settings ? `; ${r.settings}` : ''));
+      const l = loadSpans(r.load, spec.peer);
+      console.log(`  load: code ready ${fmt(l.code, 0)} ms` +
+                  (spec.peer ? ` (three.module.js fetched ${fmt(r.load.threeFetched, 0)})`
+                    : ` (wasm fetched ${fmt(r.load.wasmFetched, 0)}, instantiateStreaming ${fmt(r.load.wasmStart, 0)} to ` +
+                      `${fmt(r.load.wasmEnd, 0)})`) +
+                  `, models ${fmt(l.models, 0)} (last fetched at ${fmt(r.load.modelsFetched, 0)}), BVH ${fmt(l.bvh, 0)}, ` +
+                  `setup ${fmt(l.setup, 0)}, to first draw ${fmt(l.first, 0)}; shaders ${fmt(l.shaders, 0)}`);
       for (const p of r.problems) console.log(`  note: ${p}`);
     }
   }
-  const rows = pages.map((spec) => {
-    const s = samples.get(spec.key);
-    return { spec, frame: median(s.map((r) => r.frame.median)), p10: median(s.map((r) => r.frame.p10)),
-             p90: median(s.map((r) => r.frame.p90)), load: median(s.map((r) => r.firstDrawMs ?? NaN)) };
-  });
-  console.log('');
-  console.log(`medians over ${o.rounds} round(s) of each round's figures:`);
-  console.log(`${'page'.padEnd(28)}${'frame ms'.padStart(9)}${'p10'.padStart(9)}${'p90'.padStart(9)}` +
-              `${'load to first frame ms'.padStart(24)}`);
-  for (const r of rows) {
-    console.log(`${r.spec.label.padEnd(28)}${fmt(r.frame)}${fmt(r.p10)}${fmt(r.p90)}${fmt(r.load, 24)}`);
-  }
-  const peers = rows.filter((r) => r.spec.peer);
-  const projects = rows.filter((r) => !r.spec.peer);
-  if (peers.length && projects.length) {
-    console.log('');
-    console.log('project pages against the peers (x the peer\'s: frame, load to first frame):');
-    for (const r of projects) {
-      console.log(`${r.spec.label.padEnd(28)}` + peers.map((p) => `vs ${p.spec.key}: ` +
-        `frame ${(r.frame / p.frame).toFixed(2)}x, load ${(r.load / p.load).toFixed(2)}x`).join('; '));
-    }
-  }
+  const rows = pageRows(pages, samples);
+  printTables(rows, o, title);
+  return rows;
 }
 
 // The query parts that hold a page at --time: the project's page paused there (the peers are
@@ -336,6 +354,9 @@ async function screenshots(browser, base, pages, o) {
   }
 }
 
+// No program cache on disk or in the GPU process: a page compiles its shaders as a first visit does.
+const launchBrowser = () => launchChromium(['--disable-gpu-program-cache', '--disable-gpu-shader-disk-cache']);
+
 async function main() {
   const o = parseArgs(process.argv.slice(2));
   const root = assemble(o);
@@ -347,12 +368,20 @@ async function main() {
     await new Promise((done) => child.on('exit', done));
     return;
   }
-  const browser = await launchChromium();
+  const browser = await launchBrowser();
   try {
     const pages = o.pages.map((key) => PAGES.find((p) => p.key === key));
     if (o.screenshots) await screenshots(browser, url, pages, o);
     else {
-      if (o.rounds > 0) await bench(browser, url, pages, o);
+      console.log(`renderer: ${await rendererString(browser)}; ${browser.version()}`);
+      if (o.rounds > 0 && o.both) {
+        // The shipped scene, then the heavy figure's, in one run: each its own tables, then both.
+        const light = await bench(url, pages, { ...o, heavy: false }, 'shipped scene');
+        console.log('');
+        const heavy = await bench(url, pages, { ...o, heavy: true }, 'heavy figure');
+        console.log('');
+        printBoth(light, heavy);
+      } else if (o.rounds > 0) await bench(url, pages, o);
       if (o.reference) {
         await runAccuracy(browser, url, pages, o, { openPage, extraFor: (spec) => heldAt(spec, o),
                                                     maskPage: PEER_PAGES.find((p) => p.sceneFile) });

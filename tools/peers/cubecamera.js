@@ -42,10 +42,11 @@ startPeer({
     const probe = new CubeCamera(capture.near, capture.far, target);
     probe.position.set(...mirror.centre);
     return {
-      draw() {
+      draw(phase) {
         world.mirror.visible = false;
         probe.update(renderer, world.scene);
         world.mirror.visible = true;
+        phase?.('capture');
         renderer.render(world.scene, world.camera);
       },
     };

@@ -3,6 +3,8 @@
 // window.peer, the interface tools/peer_bench.mjs drives (as the project's window.demo):
 //   ready                a promise: models loaded and the first frame drawn
 //   frame(dt)            advance by dt seconds, render, wait for the GPU: { ms }
+//   frameSplit(dt)       the same, with a wait for the GPU after each of the rendition's phases
+//                        (the CubeCamera's capture): { ms, parts: { capture?, main } } in ms
 //   setTime(t)           the animation time of the next frame
 //   readPixels()         render and read the canvas: { width, height, data } (RGBA, bottom row first)
 // With ?bench in the URL nothing else draws; otherwise the page animates itself with rAF.
@@ -12,7 +14,8 @@ import { SCENE } from './scene_facts.js';
 
 // `mirrorMaterial`: the rendition's material for the sphere (made before the models are in; the
 // rendition fills its uniforms). `makeRendition({ renderer, world })`, called once the world is
-// built, returns { draw() }, which renders the frame world.pose() has set up. `loadWorld(prefix)`,
+// built, returns { draw(phase) }, which renders the frame world.pose() has set up; a rendition that
+// draws in passes calls phase('capture') after its capture (frameSplit times the passes apart). `loadWorld(prefix)`,
 // if given, builds another world than the default scene's (a promise of { scene, camera,
 // background, pose(seconds), ... }; the pmrem rendition's reads a scene file).
 export function startPeer({ mirrorMaterial, makeRendition, loadWorld }) {
@@ -42,10 +45,16 @@ export function startPeer({ mirrorMaterial, makeRendition, loadWorld }) {
   // A read-back waits for the GPU to finish the frame, so a frame's time includes its GPU work.
   const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
 
+  // Load to first frame in parts, as performance marks (tools/peer_bench.mjs reads them): the
+  // scripts evaluated (three.js fetched and parsed), the models fetched and parsed into a world,
+  // the rendition made (the bvh rendition's trees).
+  performance.mark('peer:script-start');
   const ready = (async () => {
     world = loadWorld ? await loadWorld(prefix) : buildWorld(await loadModels(prefix), mirrorMaterial);
+    performance.mark('peer:models-in');
     if (world.background) renderer.setClearColor(new Color(...world.background), 1);
     rendition = makeRendition({ renderer, world });
+    performance.mark('peer:rendition-made');
     resize();
     render();
     sync();
@@ -59,6 +68,22 @@ export function startPeer({ mirrorMaterial, makeRendition, loadWorld }) {
       render();
       sync();
       return { ms: performance.now() - start };
+    },
+    frameSplit(dt = 0) {
+      const start = performance.now();
+      const parts = {};
+      let since = start;
+      const phase = (name) => {
+        sync();
+        const now = performance.now();
+        parts[name] = now - since;
+        since = now;
+      };
+      time += dt;
+      world.pose(time);
+      rendition.draw(phase);
+      phase('main');
+      return { ms: performance.now() - start, parts };
     },
     setTime(t) { time = t; },
     readPixels() {
