@@ -14,20 +14,42 @@ import { SCENE } from './scene_facts.js';
 
 // `mirrorMaterial`: the rendition's material for the sphere (made before the models are in; the
 // rendition fills its uniforms). `makeRendition({ renderer, world })`, called once the world is
-// built, returns { draw(phase) }, which renders the frame world.pose() has set up; a rendition that
-// draws in passes calls phase('capture') after its capture (frameSplit times the passes apart). `loadWorld(prefix)`,
-// if given, builds another world than the default scene's (a promise of { scene, camera,
+// built, returns { draw(phase) }, which renders the frame world.pose() has set up; a rendition
+// that draws in passes calls phase('capture') after its capture (frameSplit times the passes
+// apart). `loadWorld(prefix)`, if given, builds another world than the default scene's (a promise of { scene, camera,
 // background, pose(seconds), ... }; the pmrem rendition's reads a scene file).
-export function startPeer({ mirrorMaterial, makeRendition, loadWorld }) {
-  const params = new URLSearchParams(location.search);
-  const prefix = new URL(params.get('assets') || '../models/', location.href).href;
-  const canvas = document.getElementById('canvas');
+// One frame drawn by `draw(phase)` with a wait for the GPU (`sync`) after each phase it names and
+// after the rest, the main pass: { ms, parts: { capture?, main } } in ms.
+function drawInPhases(draw, sync) {
+  const start = performance.now();
+  const parts = {};
+  let since = start;
+  const phase = (name) => {
+    sync();
+    const now = performance.now();
+    parts[name] = now - since;
+    since = now;
+  };
+  draw(phase);
+  phase('main');
+  return { ms: performance.now() - start, parts };
+}
+
+function makeRenderer(canvas) {
   // As the project's context: no antialiasing, no alpha, a depth buffer.
   const renderer = new WebGLRenderer({ canvas, antialias: false, alpha: false, depth: true, stencil: false });
   // The shaders write final values, as the project's do; linear output also keeps three from
   // converting the clear colour to sRGB.
   renderer.outputColorSpace = LinearSRGBColorSpace;
   renderer.setClearColor(new Color(...SCENE.background), 1);
+  return renderer;
+}
+
+export function startPeer({ mirrorMaterial, makeRendition, loadWorld }) {
+  const params = new URLSearchParams(location.search);
+  const prefix = new URL(params.get('assets') || '../models/', location.href).href;
+  const canvas = document.getElementById('canvas');
+  const renderer = makeRenderer(canvas);
   const gl = renderer.getContext();
 
   let time = 0, world = null, rendition = null;
@@ -70,20 +92,9 @@ export function startPeer({ mirrorMaterial, makeRendition, loadWorld }) {
       return { ms: performance.now() - start };
     },
     frameSplit(dt = 0) {
-      const start = performance.now();
-      const parts = {};
-      let since = start;
-      const phase = (name) => {
-        sync();
-        const now = performance.now();
-        parts[name] = now - since;
-        since = now;
-      };
       time += dt;
       world.pose(time);
-      rendition.draw(phase);
-      phase('main');
-      return { ms: performance.now() - start, parts };
+      return drawInPhases((phase) => rendition.draw(phase), sync);
     },
     setTime(t) { time = t; },
     readPixels() {
