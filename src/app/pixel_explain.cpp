@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/held_trees.h"
 #include "core/accuracy_settings.h"
 #include "core/cube_sampling.h"
 #include "core/fresnel.h"
@@ -25,11 +26,11 @@ struct ExactSight {
 // The level-0 trees the demo already holds (the exact mode's), or one built here for a mesh that
 // has none yet. The demo's trees are shared without ownership: they outlive this explanation.
 SceneBvh placedObjects(const Demo& demo, double seconds) {
+  const MeshTreeLookup held = heldTrees(demo);
   return placeScene(
-      demo.scene(), seconds, [&demo](const std::string& name) -> std::shared_ptr<const MeshBvh> {
-        if (const MeshBvh* tree = demo.meshBvh(name)) {
-          return std::shared_ptr<const MeshBvh>(std::shared_ptr<const MeshBvh>(), tree);
-        }
+      demo.scene(), seconds,
+      [&demo, &held](const std::string& name) -> std::shared_ptr<const MeshBvh> {
+        if (std::shared_ptr<const MeshBvh> tree = held(name)) return tree;
         const MeshData* mesh = demo.meshLevel(name, 0);
         if (mesh == nullptr) return nullptr;
         return std::make_shared<const MeshBvh>(

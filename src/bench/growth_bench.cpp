@@ -11,6 +11,7 @@
 
 #include "app/demo.h"
 #include "app/headless_frames.h"
+#include "app/held_trees.h"
 #include "core/traced_rays.h"
 
 namespace reflect {
@@ -93,13 +94,9 @@ struct Cell {
 // (Demo::meshBvh: the level-0 trees; null where it holds none, and then the tracer neither draws
 // nor meets that mesh), at that frame's scene time and camera.
 TracedRayCount lastFrameRays(const Demo& demo, int width, int height) {
-  const MeshTreeLookup trees = [&demo](const std::string& name) -> std::shared_ptr<const MeshBvh> {
-    const MeshBvh* tree = demo.meshBvh(name);
-    if (tree == nullptr) return nullptr;
-    return std::shared_ptr<const MeshBvh>(std::shared_ptr<const MeshBvh>(), tree);  // not owned
-  };
-  return countTracedRays(demo.scene(), demo.lastStats().timeSeconds, trees, demo.camera(), width,
-                         height, [&demo](int object) { return demo.lastPlan().traces(object); });
+  return countTracedRays(demo.scene(), demo.lastStats().timeSeconds, heldTrees(demo), demo.camera(),
+                         width, height,
+                         [&demo](int object) { return demo.lastPlan().traces(object); });
 }
 
 Result<Cell> runCell(const std::string& modelDirectory, const GrowthOptions& o, int reflectors,
