@@ -14,6 +14,8 @@ namespace reflect {
 inline constexpr int kGlyphWidth = 5;
 inline constexpr int kGlyphHeight = 7;
 inline constexpr int kGlyphAdvance = kGlyphWidth + 1;  // one blank column between glyphs
+// The light grey the inside views write their labels in.
+inline constexpr std::array<uint8_t, 4> kLabelText{235, 235, 235, 255};
 
 // The glyph's rows, top first; bit 4 is the leftmost pixel. Lower case is drawn as upper case;
 // a character the font lacks is drawn as a filled box, so a missing glyph is seen, not skipped.

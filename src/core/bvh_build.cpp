@@ -7,13 +7,13 @@
 #include <limits>
 #include <utility>
 
+#include "core/float_limits.h"
 #include "core/frustum.h"
 
 namespace reflect {
 namespace {
 
 constexpr int kBins = 16;
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 Bounds emptyBounds() {
   return {glm::vec3(kInfinity), glm::vec3(-kInfinity)};

@@ -1,6 +1,7 @@
 // The BVH traversal on the CPU (core/bvh.h): a stack, nearer child first, the same steps as the
 // shader's walk (shaders/exact_trace.glsl); the reference tests check its hits against Embree.
 #include "core/bvh.h"
+#include "core/float_limits.h"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +10,6 @@
 
 namespace reflect {
 namespace {
-
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // 1 / d with zero components made tiny, so the slabs never compute 0 * infinity.
 glm::vec3 inverseDirection(const glm::vec3& d) {

@@ -12,7 +12,6 @@ using Rgba = std::array<uint8_t, 4>;
 constexpr Rgba kCapturedFrame{70, 200, 100, 255};
 constexpr Rgba kStaleFrame{235, 165, 40, 255};
 constexpr Rgba kEmptyFrame{110, 110, 110, 255};
-constexpr Rgba kText{235, 235, 235, 255};
 constexpr int kFrameWidth = 2;
 constexpr int kLegendLine = kGlyphHeight + 4;
 constexpr int kLegendHeight = 2 + kGlyphHeight + 6 + 6 * kLegendLine;  // title, then a line a face
@@ -47,13 +46,13 @@ void drawLegend(RgbaImage& view, const CrossGeometry& g, const std::array<FaceMa
   // The strip below the cross: always room for it, whatever the face size.
   const int left = g.margin;
   int y = 3 * (g.faceSize + 2 * g.margin) + 2;
-  drawText(view, left, y, title, kText);
+  drawText(view, left, y, title, kLabelText);
   y += kGlyphHeight + 6;
   for (int face = 0; face < 6; ++face) {
     fillRect(view, left, y, kGlyphHeight, kGlyphHeight,
              frameColour(marks[static_cast<size_t>(face)]));
     drawText(view, left + kGlyphAdvance * 2, y,
-             faceLabel(face) + "  " + faceStatus(marks[static_cast<size_t>(face)]), kText);
+             faceLabel(face) + "  " + faceStatus(marks[static_cast<size_t>(face)]), kLabelText);
     y += kLegendLine;
   }
 }
@@ -153,7 +152,8 @@ RgbaImage unfoldCross(const CubeFaces& faces, const std::array<FaceMark, 6>& mar
              g.faceSize + 2 * kFrameWidth, frameColour(marks[face]));
     const bool stale = marks[face].everCaptured && !marks[face].captured;
     copyFace(view, faces[face], x, y, stale);
-    if (labels) drawText(view, x, y - kFrameWidth - 1 - kGlyphHeight, kCubeFaces[face].name, kText);
+    if (labels)
+      drawText(view, x, y - kFrameWidth - 1 - kGlyphHeight, kCubeFaces[face].name, kLabelText);
   }
   if (labels) drawLegend(view, g, marks, title);
   return view;

@@ -10,7 +10,6 @@ namespace reflect {
 namespace {
 
 using Rgba = std::array<uint8_t, 4>;
-constexpr Rgba kText{235, 235, 235, 255};
 constexpr Rgba kPanel{24, 24, 28, 255};
 constexpr int kLine = kGlyphHeight + 4;
 constexpr int kMargin = 6;
@@ -45,7 +44,7 @@ void drawLegend(RgbaImage& view, const FaceUseCounts& counts,
   for (size_t i = 0; i < lines.size(); ++i) {
     fillRect(view, kMargin, y, kGlyphHeight, kGlyphHeight,
              i < 6 ? kFaceUseColours[i] : kFaceUseTraced);
-    drawText(view, kMargin + 2 * kGlyphAdvance, y, lines[i], kText);
+    drawText(view, kMargin + 2 * kGlyphAdvance, y, lines[i], kLabelText);
     y += kLine;
   }
 }
@@ -86,7 +85,7 @@ RgbaImage composeFaceUse(RgbaImage frame, const std::vector<glm::vec4>& lookups,
                          const std::array<FaceMark, 6>& marks, const std::string& title) {
   const FaceUseCounts counts = paintFaceUse(frame, lookups);
   fillRect(frame, 0, 0, textWidth(title, 1) + 2 * kMargin, kGlyphHeight + 2 * kMargin, kPanel);
-  drawText(frame, kMargin, kMargin, title, kText);
+  drawText(frame, kMargin, kMargin, title, kLabelText);
   drawLegend(frame, counts, marks);
   return frame;
 }

@@ -9,6 +9,7 @@
 #include <limits>
 #include <thread>
 
+#include "core/float_limits.h"
 #include "core/fresnel.h"
 #include "core/frustum.h"
 #include "core/ggx.h"
@@ -18,8 +19,6 @@
 
 namespace reflect {
 namespace {
-
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 uint8_t toByte(float c) {
   return static_cast<uint8_t>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));

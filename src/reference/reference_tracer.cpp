@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/cube_sampling.h"
+#include "core/float_limits.h"
 #include "core/ggx.h"
 #include "core/reference_shading.h"
 #include "core/trace_limits.h"
@@ -12,7 +13,6 @@
 namespace reflect {
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // The lobe rays of a rough mirror seen in another's lobe (lobeAverage).
 constexpr uint32_t kNestedLobeRays = 8;
 
