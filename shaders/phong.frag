@@ -1,4 +1,5 @@
-// Per-fragment Phong with the course's constants (shading.glsl's phongShade).
+// Per-fragment Phong with the course's constants (shading.glsl's phongShade); AMBIENT_PROBE: its
+// ambient from the nearest live probe's irradiance (a probe-lit object in the main pass).
 in vec3 v_worldPosition;
 in vec3 v_worldNormal;
 
@@ -13,9 +14,30 @@ uniform float u_shininess;
 #include "capture_output.glsl"
 #include "shading.glsl"
 
+#if AMBIENT_PROBE
+// The nearest live probe's irradiance (irradiance_project.vert wrote it): E(n) / pi =
+// sum c_i Y_i(n), c_i in .rgb.
+layout(std140) uniform ProbeIrradiance {
+  vec4 u_irradiance[9];
+};
+
+#include "irradiance.glsl"
+
+vec3 probeAmbient(vec3 n) {
+  vec3 e = vec3(0.0);
+  for (int i = 0; i < 9; ++i) e += u_irradiance[i].rgb * shBasis(n, i);
+  return max(e, vec3(0.0));
+}
+#endif
+
 void main() {
   vec3 N = normalize(v_worldNormal);
   vec4 terms = vec4(u_ambient, u_diffuse, u_specular, u_shininess);
+#if AMBIENT_PROBE
+  vec3 colour = phongLit(u_colour, v_worldPosition, N, u_lightPosition, u_viewPosition,
+                         probeAmbient(N), terms);
+#else
   vec3 colour = phongShade(u_colour, v_worldPosition, N, u_lightPosition, u_viewPosition, terms);
+#endif
   writeOutputs(colour, v_worldPosition, N, false);
 }

@@ -7,16 +7,22 @@
 // Per-fragment Phong: ambient and diffuse take the object colour, white specular only where the
 // light reaches the front of the surface. `terms` = (ambient, diffuse, specular, shininess).
 // Unclamped: a capture texel or the frame's byte clamps it.
-vec3 phongShade(vec3 colour, vec3 p, vec3 n, vec3 light, vec3 eye, vec4 terms) {
+// phongLit: the same with the ambient light given per channel (a probe-lit object's irradiance,
+// irradiance.glsl); phongShade's is the constant terms.x.
+vec3 phongLit(vec3 colour, vec3 p, vec3 n, vec3 light, vec3 eye, vec3 ambient, vec4 terms) {
   vec3 L = normalize(light - p);
   vec3 V = normalize(eye - p);
   float nDotL = max(dot(n, L), 0.0);
-  vec3 c = colour * (terms.x + terms.y * nDotL);
+  vec3 c = colour * (ambient + terms.y * nDotL);
   if (nDotL > 0.0) {
     vec3 R = reflect(-L, n);
     c += vec3(terms.z * pow(clamp(dot(R, V), 0.0, 1.0), terms.w));
   }
   return c;
+}
+
+vec3 phongShade(vec3 colour, vec3 p, vec3 n, vec3 light, vec3 eye, vec4 terms) {
+  return phongLit(colour, p, n, light, eye, vec3(terms.x), terms);
 }
 
 // ((n - 1) / (n + 1))^2, the share reflected at normal incidence (core/fresnel.h's fresnelF0,

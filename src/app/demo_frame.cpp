@@ -56,6 +56,7 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
     p.colour = object.colour;
     p.look = object.look();
     p.probed = object.needsLiveProbe();
+    p.probeLit = object.probeLit();
     p.probeGroup = object.probeGroup;
     p.probeCentre = capturePoint(object.probeCentre, accuracy_.captureAtOrigin);
     planned.push_back(p);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/held_trees.h"
+#include "app/text_line.h"
 #include "core/accuracy_settings.h"
 #include "core/cube_sampling.h"
 #include "core/fresnel.h"
@@ -77,6 +78,16 @@ std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
   if (e.object < 0) return "the view ray meets nothing there: the pixel shows the background";
   const SceneObject& object = demo.scene().objects[static_cast<size_t>(e.object)];
   const std::string what = "object " + std::to_string(e.object + 1) + " (" + object.mesh + ")";
+  if (const ProbePlan* light = demo.lastPlan().irradianceOf(e.object)) {
+    // A probe-lit figure: it looks no reflection up, but its ambient comes from a probe.
+    const glm::vec3& c = light->centre;
+    return what + formatLine(
+                      " is phong, lit by probe: its ambient is the irradiance of object "
+                      "%d's probe (centre %.2f, %.2f, %.2f), order-2 spherical harmonics "
+                      "at its normal, %s",
+                      light->reflector + 1, c.x, c.y, c.z,
+                      light->projectIrradiance ? "projected this frame" : "as last projected");
+  }
   if (object.material != Material::Mirror && object.material != Material::Glass) {
     return what + " is " + materialName(object.material) +
            ", not a mirror or glass: it looks nothing up";

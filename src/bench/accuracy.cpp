@@ -86,6 +86,15 @@ Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
   return report;
 }
 
+Result<ImageErrorMetrics> objectInteriorError(const RgbaImage& raster,
+                                              const ReferenceFrame& reference, int object) {
+  const RgbaImage& exact = reference.image;
+  const std::vector<uint8_t> edges = silhouetteMask(reference.objectIds, exact.width, exact.height);
+  std::vector<uint8_t> own(reference.objectIds.size());
+  for (size_t i = 0; i < own.size(); ++i) own[i] = reference.objectIds[i] == object && !edges[i];
+  return imageErrorMetrics(raster, exact, own);
+}
+
 Result<ReferenceFrame> referenceFor(const Demo& demo, double t, int width, int height,
                                     const ReferenceOptions& options) {
   const MeshLookup meshes = [&demo](const std::string& name) { return demo.meshLevel(name, 0); };

@@ -47,6 +47,12 @@ std::vector<uint8_t> silhouetteMask(const std::vector<int>& objectIds, int width
 Result<AccuracyReport> compareWithReference(const RgbaImage& raster,
                                             const ReferenceFrame& reference);
 
+// Over the pixels where the reference's primary ray meets object `object`, less silhouette
+// pixels (silhouetteMask): how far the raster is from the reference on that object's own surface
+// (a probe-lit figure's diffuse light, docs/rough.md).
+Result<ImageErrorMetrics> objectInteriorError(const RgbaImage& raster,
+                                              const ReferenceFrame& reference, int object);
+
 // Renders the demo's frame at scene time `t` (renderFrameAt: capture with the demo's current
 // planner settings and face size, then the main pass) and the reference of the same moment and
 // camera (full-detail meshes), and compares them. Needs a current GL context.

@@ -26,9 +26,10 @@ bool sameLevels(const std::vector<PlannedLevel>& a, const std::vector<PlannedLev
 
 bool sameState(const PlannedObject& a, const PlannedObject& b) {
   return a.model == b.model && a.colour == b.colour && a.look == b.look &&
-         a.probeCentre == b.probeCentre && a.meshRevision == b.meshRevision &&
-         a.probed == b.probed && a.localBounds.min == b.localBounds.min &&
-         a.localBounds.max == b.localBounds.max && sameLevels(a.levels, b.levels);
+         a.probeLit == b.probeLit && a.probeCentre == b.probeCentre &&
+         a.meshRevision == b.meshRevision && a.probed == b.probed &&
+         a.localBounds.min == b.localBounds.min && a.localBounds.max == b.localBounds.max &&
+         sameLevels(a.levels, b.levels);
 }
 
 }  // namespace
@@ -36,8 +37,8 @@ bool sameState(const PlannedObject& a, const PlannedObject& b) {
 FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
                                const CaptureContext& context) {
   FramePlan plan;
-  for (ProbeLayout& probe : planner::probesOf(objects)) {
-    plan.probes.push_back(ProbePlan{std::move(probe), {}});
+  for (ProbePlan& probe : planner::probesWithReaders(objects)) {
+    plan.probes.push_back(std::move(probe));
     ProbePlan& laid = plan.probes.back();
     planner::decideStorage(laid, objects, context);
     laid.roughLevels = planner::roughLevelsOf(laid, objects, context);
@@ -54,7 +55,14 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
 
 const ProbePlan* FramePlan::probeOf(int object) const {
   for (const ProbePlan& p : probes) {
-    if (std::find(p.members.begin(), p.members.end(), object) != p.members.end()) return &p;
+    if (!p.lightOnly && contains(p.members, object)) return &p;
+  }
+  return nullptr;
+}
+
+const ProbePlan* FramePlan::irradianceOf(int object) const {
+  for (const ProbePlan& p : probes) {
+    if (contains(p.diffuseReaders, object)) return &p;
   }
   return nullptr;
 }
@@ -204,8 +212,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   FramePlan plan;
   choices_.clear();
   std::vector<int> recapturedForRealChange;
-  for (ProbeLayout& layout : planner::probesOf(objects)) {
-    ProbePlan probe{std::move(layout), {}};
+  for (ProbePlan& probe : planner::probesWithReaders(objects)) {
     planner::decideStorage(probe, objects, context);
     probe.roughLevels = planner::roughLevelsOf(probe, objects, context);
     ProbeMemory& memory = memoryOf(probe.reflector);
@@ -215,11 +222,22 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
                         std::all_of(probe.members.begin(), probe.members.end(), [&](int m) {
                           return planner::traceable(objects[static_cast<size_t>(m)]);
                         });
-    if (!traced) draws = faceDraws(probe, objects, context, settings);
+    const bool readers = !probe.diffuseReaders.empty();
+    if (!traced || readers) draws = faceDraws(probe, objects, context, settings);
     if (chooseProbeMethod(probe, draws, objects, context, settings, view, memory) ==
         Method::Trace) {
       memory.filteredLevels.clear();  // a trace keeps no filtered levels either
       plan.traced.push_back(static_cast<ProbeLayout&>(probe));
+      if (!readers) continue;
+      // Kept alive for its diffuse readers: the colours they take their light from, nothing
+      // more. (Its reflectors see their own rays, so their looks do not change with it.)
+      probe.lightOnly = true;
+      probe.layers = 1;
+      probe.plainLookupSuffices = true;
+      probe.roughLevels.clear();
+      planCapture(probe, std::move(draws), objects, context, settings, memory);
+      probe.projectIrradiance = !probe.faces.empty();
+      plan.probes.push_back(std::move(probe));
       continue;
     }
     if (planCapture(probe, std::move(draws), objects, context, settings, memory)) {
@@ -227,6 +245,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
                                      probe.members.end());
     }
     planner::decideFiltering(probe, memory.filteredLevels);
+    probe.projectIrradiance = readers && !probe.faces.empty();
     plan.probes.push_back(std::move(probe));
   }
   // The exact mode traces every mirror and glass, a static skybox's users too.

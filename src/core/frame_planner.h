@@ -64,6 +64,7 @@ struct PlannedObject {
   SceneObject::Look look{};   // its material, as other probes' captures show it
   uint32_t meshRevision = 0;  // the generation of the object's mesh: new when it is replaced
   bool probed = false;        // samples a live probe of its own (mirror, glass, cube-textured)
+  bool probeLit = false;      // Phong lit by the nearest live probe's irradiance (Ambient::Probe)
   // Probed objects with the same group >= 0 share one probe at the centre of their joint bounds
   // (cheaper, less exact: they do not see each other); -1 = a probe of its own.
   int probeGroup = -1;
@@ -135,6 +136,14 @@ struct ProbePlan : ProbeLayout {
   // face edges) or the levels needed changed, else none.
   std::vector<int> roughLevels{};
   unsigned filterFaces = 0;
+  // Diffuse light (Ambient::Probe): the probe-lit objects nearest this probe, which take their
+  // ambient from its irradiance (nearestProbe, core/probe_layout.h), and whether that irradiance
+  // is projected again this frame (it has readers and a face was redrawn).
+  std::vector<int> diffuseReaders{};
+  bool projectIrradiance = false;
+  // Captured for its diffuse readers alone: its reflectors' rays are traced (FramePlan::traced),
+  // so nothing searches or filters it; it stores colours only (one layer, no depths).
+  bool lightOnly = false;
 };
 
 // The plain lookup (the cube map along the ray's direction d) is off by the parallax angle
@@ -181,6 +190,8 @@ struct FramePlan {
   const glm::mat4& modelOf(int object) const { return models.at(static_cast<size_t>(object)); }
   // The probe object `object` samples, or null (none, or its rays are traced).
   const ProbePlan* probeOf(int object) const;
+  // The probe whose irradiance probe-lit `object` takes, or null (not probe-lit, or no probe).
+  const ProbePlan* irradianceOf(int object) const;
   bool traces(int object) const;
   bool tracesGeneral(int object) const;
   // Where `object`'s reflection is measured from: its probe's or its traced layout's centre.

@@ -70,6 +70,15 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
   }
   c.traceMs = traceCost(c.trace, costs_);
   c.captureMs = captureCost(c.capture, costs_);
+  if (!probe.diffuseReaders.empty()) {
+    // Diffuse readers keep the probe captured either way: traced, its faces are still drawn
+    // (colours only, one layer), with nothing searched or filtered.
+    CaptureWork colours = c.capture;
+    if (colours.faces > 0.0) colours.texels = colours.faces * texels;
+    colours.pixels = 0.0;
+    colours.filterSamples = 0.0;
+    c.traceMs += captureCost(colours, costs_);
+  }
   return c;
 }
 

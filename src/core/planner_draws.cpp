@@ -26,6 +26,21 @@ std::vector<ProbeLayout> probesOf(const std::vector<PlannedObject>& objects) {
   return layoutProbes(candidates);
 }
 
+std::vector<ProbePlan> probesWithReaders(const std::vector<PlannedObject>& objects) {
+  std::vector<ProbeLayout> layouts = probesOf(objects);
+  std::vector<ProbePlan> probes(layouts.size());
+  for (size_t i = 0; i < objects.size(); ++i) {
+    if (!objects[i].probeLit) continue;
+    const int nearest = nearestProbe(layouts, worldCentreOf(objects[i]));
+    if (nearest >= 0)
+      probes[static_cast<size_t>(nearest)].diffuseReaders.push_back(static_cast<int>(i));
+  }
+  for (size_t p = 0; p < layouts.size(); ++p) {
+    static_cast<ProbeLayout&>(probes[p]) = std::move(layouts[p]);
+  }
+  return probes;
+}
+
 glm::vec3 worldCentreOf(const PlannedObject& o) {
   return glm::vec3(o.model * glm::vec4(o.localBounds.centre(), 1.0f));
 }

@@ -17,6 +17,10 @@ bool contains(const std::vector<int>& list, int value);
 // The probes the objects ask for (grouped, placed), before any is planned.
 std::vector<ProbeLayout> probesOf(const std::vector<PlannedObject>& objects);
 
+// The probes laid out (probesOf), each with the probe-lit objects nearest it as its
+// diffuseReaders; nothing else of the plan decided.
+std::vector<ProbePlan> probesWithReaders(const std::vector<PlannedObject>& objects);
+
 // The world bounding sphere of an object's oriented box.
 glm::vec3 worldCentreOf(const PlannedObject& o);
 float worldRadiusOf(const PlannedObject& o);

@@ -2,6 +2,20 @@
 
 namespace reflect {
 
+int nearestProbe(const std::vector<ProbeLayout>& probes, const glm::vec3& point) {
+  int nearest = -1;
+  float best = 0.0f;
+  for (size_t i = 0; i < probes.size(); ++i) {
+    const glm::vec3 d = probes[i].centre - point;
+    const float distance = glm::dot(d, d);
+    if (nearest < 0 || distance < best) {
+      nearest = static_cast<int>(i);
+      best = distance;
+    }
+  }
+  return nearest;
+}
+
 std::vector<ProbeLayout> layoutProbes(const std::vector<ProbeCandidate>& objects) {
   std::vector<ProbeLayout> probes;
   for (size_t i = 0; i < objects.size(); ++i) {

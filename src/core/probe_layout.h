@@ -32,6 +32,11 @@ struct ProbeLayout {
 // world bounds (for one member: its own bounds' centre).
 std::vector<ProbeLayout> layoutProbes(const std::vector<ProbeCandidate>& objects);
 
+// The probe (an index into `probes`) whose centre is nearest `point`, the first of equals; -1
+// when there is none. A probe-lit object takes its diffuse light from it
+// (ProbePlan::diffuseReaders).
+int nearestProbe(const std::vector<ProbeLayout>& probes, const glm::vec3& point);
+
 // The explicit capture point of an object: the course's origin when `captureAtOrigin`, otherwise
 // the scene's own (nullopt: the bounds centre, as layoutProbes decides).
 std::optional<glm::vec3> capturePoint(const std::optional<glm::vec3>& sceneCentre,

@@ -8,10 +8,16 @@ namespace reflect {
 
 glm::vec3 phongShade(const glm::vec3& colour, const glm::vec3& p, const glm::vec3& n,
                      const glm::vec3& light, const glm::vec3& eye, const glm::vec4& terms) {
+  return phongLit(colour, p, n, light, eye, glm::vec3(terms.x), terms);
+}
+
+glm::vec3 phongLit(const glm::vec3& colour, const glm::vec3& p, const glm::vec3& n,
+                   const glm::vec3& light, const glm::vec3& eye, const glm::vec3& ambient,
+                   const glm::vec4& terms) {
   const glm::vec3 l = glm::normalize(light - p);
   const glm::vec3 v = glm::normalize(eye - p);
   const float nDotL = std::max(glm::dot(n, l), 0.0f);
-  glm::vec3 c = colour * (terms.x + terms.y * nDotL);
+  glm::vec3 c = colour * (ambient + terms.y * nDotL);
   if (nDotL > 0.0f) {
     const glm::vec3 r = glm::reflect(-l, n);
     c += glm::vec3(terms.z * std::pow(std::clamp(glm::dot(r, v), 0.0f, 1.0f), terms.w));

@@ -11,8 +11,14 @@
 
 namespace reflect {
 
-// shading.glsl's phongShade: colour * (ambient + diffuse max(N.L, 0)) + (N.L > 0 ? specular
-// pow(clamp(R.V, 0, 1), shininess) : 0). `terms` = (ambient, diffuse, specular, shininess).
+// shading.glsl's phongLit: colour * (ambient + diffuse max(N.L, 0)) + (N.L > 0 ? specular
+// pow(clamp(R.V, 0, 1), shininess) : 0), `ambient` per channel. `terms` = (ambient (unused),
+// diffuse, specular, shininess).
+glm::vec3 phongLit(const glm::vec3& colour, const glm::vec3& p, const glm::vec3& n,
+                   const glm::vec3& light, const glm::vec3& eye, const glm::vec3& ambient,
+                   const glm::vec4& terms);
+
+// shading.glsl's phongShade: phongLit with the constant ambient terms.x.
 glm::vec3 phongShade(const glm::vec3& colour, const glm::vec3& p, const glm::vec3& n,
                      const glm::vec3& light, const glm::vec3& eye, const glm::vec4& terms);
 

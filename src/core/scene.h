@@ -36,6 +36,12 @@ enum class Environment {
   Skybox,     // the scene's static skybox
 };
 
+// Where a Phong object's ambient light comes from.
+enum class Ambient {
+  Constant,  // the course: the light's ambient constant, the same from every direction
+  Probe,     // what the nearest live probe sees, as irradiance (docs/rough.md, "Diffuse light")
+};
+
 enum class Motion {
   None,
   Orbit,  // M = R(axis, rate * t) * placement: circles the world origin
@@ -65,6 +71,10 @@ struct SceneObject {
   // Where its live probe captures from, in world space; unset = the centre of the mesh bounds.
   // (Ex12-1 captures its cube's environment from the origin.)
   std::optional<glm::vec3> probeCentre;
+  // Phong: its ambient light. Probe: the irradiance the nearest live probe's capture gives its
+  // normal (order-2 spherical harmonics), in place of the light's ambient constant, in the main
+  // pass; what mirrors and captures show of it keeps the constant (one bounce).
+  Ambient ambient = Ambient::Constant;
 
   bool usesEnvironment() const { return material != Material::Phong; }
   // What a capture of this object depends on besides its mesh, place and colour (compared by
@@ -84,6 +94,7 @@ struct SceneObject {
   Look look() const { return {material, environment, reflection, base, ior, fresnel, roughness}; }
   bool rough() const { return look().rough(); }
   bool needsLiveProbe() const { return usesEnvironment() && environment == Environment::LiveProbe; }
+  bool probeLit() const { return material == Material::Phong && ambient == Ambient::Probe; }
 };
 
 struct CaptureSettings {

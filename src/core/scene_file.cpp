@@ -95,7 +95,7 @@ SceneObject readObject(const JsonReader& r, std::vector<std::string>& probeGroup
   SceneObject o;
   if (!r.requireObject()) return o;
   r.onlyKeys({"mesh", "translate", "rotate", "scale", "colour", "material", "animation", "probe",
-              "probeCentre"});
+              "probeCentre", "ambient"});
   if (!r.has("mesh")) r["mesh"].fail("missing (expected an .obj file name)");
   o.mesh = readPath(r["mesh"]);
   if (r.ok() && o.mesh.size() < 5) r["mesh"].fail("expected an .obj file name");
@@ -121,6 +121,16 @@ SceneObject readObject(const JsonReader& r, std::vector<std::string>& probeGroup
   if (r.has("material")) readMaterial(r["material"], o);
   if (r.has("animation")) readAnimation(r["animation"], o);
   if (r.has("probeCentre")) o.probeCentre = r["probeCentre"].vec3({0, 0, 0});
+  if (r.has("ambient")) {
+    const JsonReader a = r["ambient"];
+    const std::string ambient = a.string("");
+    if (ambient == "probe") {
+      o.ambient = Ambient::Probe;
+      if (o.material != Material::Phong) a.fail("\"probe\" lights a Phong object only");
+    } else if (ambient != "constant" && a.ok()) {
+      a.fail("expected \"constant\" or \"probe\"");
+    }
+  }
   if (r.has("probe")) {
     const std::string group = r["probe"].string("");
     auto it = std::find(probeGroups.begin(), probeGroups.end(), group);
@@ -219,6 +229,15 @@ Result<Scene> parseSceneJson(const std::string& text, const std::string& source)
         scene.objects.push_back(readObject(objects[i], probeGroups));
       }
       if (error.empty() && scene.objects.empty()) objects.fail("a scene needs at least one object");
+      const auto has = [&](bool (SceneObject::*what)() const) {
+        return std::any_of(scene.objects.begin(), scene.objects.end(),
+                           [&](const SceneObject& o) { return (o.*what)(); });
+      };
+      if (error.empty() && has(&SceneObject::probeLit) && !has(&SceneObject::needsLiveProbe)) {
+        objects.fail(
+            "an object with \"ambient\": \"probe\" needs a live probe to read (a mirror, glass "
+            "or cube-textured object with a live environment)");
+      }
     }
   }
   if (!error.empty()) return Result<Scene>::failure(source + ": " + error);

@@ -7,6 +7,7 @@ std::string CourseFrame::whyNot(const Scene& scene) {
   if (!scene.skybox.empty()) return "the scene has a skybox";
   int mirrors = 0;
   for (const SceneObject& o : scene.objects) {
+    if (o.probeLit()) return "an object takes its ambient light from the probe";
     if (o.material == Material::Phong) continue;
     if (o.material != Material::Mirror || !o.needsLiveProbe()) {
       return "not every reflector is a live-probe mirror";

@@ -23,7 +23,7 @@ TextureHandle createColourCube(const CaptureFormat& format, int size) {
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
-  if (format.mipmaps) glGenerateMipmap(GL_TEXTURE_CUBE_MAP);  // allocates the chain
+  if (format.mipmaps || format.boxChain) glGenerateMipmap(GL_TEXTURE_CUBE_MAP);  // the chain
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   return texture;
 }
@@ -199,7 +199,7 @@ void CubeCaptureTarget::finish(const DepthPyramidPrograms& programs, unsigned fa
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, topLevel_);
     glBindTexture(GL_TEXTURE_2D, 0);
   }
-  if (format_.mipmaps) {
+  if (format_.mipmaps || format_.boxChain) {
     for (int layer = 0; layer < format_.layers; ++layer) {
       glBindTexture(GL_TEXTURE_CUBE_MAP, colour_[static_cast<size_t>(layer)].id());
       glGenerateMipmap(GL_TEXTURE_CUBE_MAP);

@@ -32,6 +32,9 @@ struct CaptureFormat {
   bool halfFloat = false;
   int depthBits = 24;
   bool mipmaps = false;
+  // The colour mip chain is rebuilt after each capture for the irradiance projection
+  // (probe_irradiance.h) while lookups still read level 0 alone (LINEAR), unless `mipmaps`.
+  bool boxChain = false;
   bool depthChain = false;  // the hierarchical search's depths and pyramids
   int layers = 1;           // 1 or 2 (a second layer needs the depths)
   bool operator==(const CaptureFormat&) const = default;

@@ -5,6 +5,7 @@
 #include "core/fresnel.h"
 #include "core/ggx.h"
 #include "gfx/probe_capture.h"
+#include "gfx/probe_irradiance.h"
 #include "gfx/scene_renderer_detail.h"
 
 namespace reflect {
@@ -16,7 +17,11 @@ ProgramKey EnvironmentBinding::keyFor(const Scene& scene, const FramePlan& plan,
   const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
   ProgramKey key;
   key.capture = pass.layer != 0;
-  if (object.material == Material::Phong) return key;
+  if (object.material == Material::Phong) {
+    // Probe light is one bounce: captures (and so reflections) show the constant ambient.
+    key.probeLight = !key.capture && plan.irradianceOf(item.object) != nullptr;
+    return key;
+  }
   if (object.material == Material::CubeTextured) {
     key.look = Look::CubeTextured;
     return key;
@@ -50,6 +55,11 @@ bool EnvironmentBinding::searchesFor(const Scene& scene, const FramePlan& plan, 
 
 void EnvironmentBinding::bindTracer(const EnvironmentUniforms& u, const ProgramKey& key) const {
   if (key.search == Search::Exact && s_.exact) s_.exact->bind(u.exact, s_.accuracy.lobeRays);
+}
+
+void EnvironmentBinding::setForObject(const PhongUniforms&, const ProgramKey& key, const Scene&,
+                                      const FramePlan& plan, int object) const {
+  if (key.probeLight) s_.irradiance.bindFor(plan, object);
 }
 
 void EnvironmentBinding::setForObject(const EnvironmentUniforms& u, const ProgramKey& key,

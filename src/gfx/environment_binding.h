@@ -20,6 +20,7 @@
 namespace reflect {
 
 class ProbeCapture;
+class ProbeIrradiance;
 
 // Where the reflectors' environments live this frame; none owned.
 struct EnvironmentSources {
@@ -29,7 +30,8 @@ struct EnvironmentSources {
   const PrefilteredProbes& rough;  // their prefiltered levels, and the sky's
   const SkyboxPass* sky;           // null: no skybox
   const GlassExits& glass;
-  const ExactTracer* exact;  // the traced scene (null: none yet)
+  const ExactTracer* exact;           // the traced scene (null: none yet)
+  const ProbeIrradiance& irradiance;  // the probes' irradiance, for probe-lit Phong objects
 };
 
 class EnvironmentBinding {
@@ -42,10 +44,10 @@ class EnvironmentBinding {
                     const CaptureState& pass) const;
   // The traced scene's uniforms, once a pass, for a program that traces.
   void bindTracer(const EnvironmentUniforms& u, const ProgramKey& key) const;
-  // Per object: a reflector's material and environment; a cube-textured object's cube; Phong
-  // reads none.
-  void setForObject(const PhongUniforms&, const ProgramKey&, const Scene&, const FramePlan&,
-                    int) const {}
+  // Per object: a reflector's material and environment; a cube-textured object's cube; a
+  // probe-lit Phong object its probe's irradiance (other Phong objects read none).
+  void setForObject(const PhongUniforms&, const ProgramKey& key, const Scene&,
+                    const FramePlan& plan, int object) const;
   void setForObject(const EnvironmentUniforms& u, const ProgramKey& key, const Scene& scene,
                     const FramePlan& plan, int object) const;
   void setForObject(const CubeTexturedUniforms& u, const ProgramKey& key, const Scene& scene,

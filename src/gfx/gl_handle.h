@@ -77,6 +77,8 @@ using TextureHandle = GlHandle<deleteOne<glDeleteTextures>>;
 using FramebufferHandle = GlHandle<deleteOne<glDeleteFramebuffers>>;
 using RenderbufferHandle = GlHandle<deleteOne<glDeleteRenderbuffers>>;
 using QueryHandle = GlHandle<deleteOne<glDeleteQueries>>;
+using SamplerHandle = GlHandle<deleteOne<glDeleteSamplers>>;
+using TransformFeedbackHandle = GlHandle<deleteOne<glDeleteTransformFeedbacks>>;
 using ProgramHandle = GlHandle<glDeleteProgram>;
 using ShaderHandle = GlHandle<glDeleteShader>;
 

@@ -86,9 +86,14 @@ Result<CubeCaptureTarget*> ProbeCapture::targetFor(const Scene& scene, const Pro
                                                    const AccuracySettings& accuracy) {
   // Depths only for a probe whose reflectors search them.
   const bool depths = capturesDepths(probe, accuracy);
-  const CaptureFormat format{
-      scene.capture.faceSize,   accuracy.halfFloat, accuracy.depthBits, accuracy.mipmaps, depths,
-      depths ? probe.layers : 1};
+  CaptureFormat format{scene.capture.faceSize,
+                       accuracy.halfFloat,
+                       accuracy.depthBits,
+                       accuracy.mipmaps,
+                       false,
+                       depths,
+                       depths ? probe.layers : 1};
+  format.boxChain = !probe.diffuseReaders.empty();
   auto target = targets_.find(probe.reflector);
   if (target == targets_.end() || !(target->second.format() == format)) {
     Result<CubeCaptureTarget> created = CubeCaptureTarget::create(format);

@@ -37,6 +37,7 @@ const char* ProgramKey::fragmentFile() const {
 
 std::string ProgramKey::defines() const {
   std::string out = define("CAPTURE_OUTPUT", capture ? 1 : 0);
+  if (look == Look::Phong) out += define("AMBIENT_PROBE", probeLight ? 1 : 0);
   if (look != Look::Environment) return out;
   for (Search s : kSearches) out += define(searchMacro(s), static_cast<int>(s));
   out += "#define SEARCH " + searchMacro(search) + "\n";
@@ -60,6 +61,7 @@ std::string ProgramKey::defines() const {
 
 std::string ProgramKey::describe() const {
   std::string s = std::string(fragmentFile()) + " (" + (capture ? "capture" : "main");
+  if (probeLight) s += ", probe-lit";
   if (look == Look::Environment) {
     s += std::string(", ") + searchName(search);
     if (refracts) s += ", refracts";

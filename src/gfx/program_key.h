@@ -38,6 +38,9 @@ struct ProgramKey {
   // lobe, read from the probe's prefiltered levels or, traced, by lobe rays (ROUGH 1). Mirrors of
   // roughness 0 keep the program they had, so their pixels cannot change.
   bool rough = false;
+  // Phong in the main pass, a probe-lit object (SceneObject::probeLit): its ambient is its probe's
+  // irradiance (AMBIENT_PROBE 1). Captures draw it with the constant ambient (one bounce).
+  bool probeLight = false;
 
   auto operator<=>(const ProgramKey&) const = default;
 

@@ -1,5 +1,7 @@
 #include "gfx/scene_programs.h"
 
+#include "gfx/probe_irradiance.h"
+
 #include <cstdio>
 
 #include "core/cube_faces.h"
@@ -52,6 +54,11 @@ Result<SceneProgram> buildAs(const ProgramKey& key, bool mediump) {
   glUseProgram(built.value().id());
   setOnce(built.value().u(), key);
   glUseProgram(0);
+  if (key.probeLight) {
+    // The probe's irradiance buffer is bound there for each probe-lit draw (probe_irradiance.h).
+    const GLuint id = built.value().id();
+    glUniformBlockBinding(id, glGetUniformBlockIndex(id, "ProbeIrradiance"), kIrradianceBinding);
+  }
   return SceneProgram{key, built.take()};
 }
 

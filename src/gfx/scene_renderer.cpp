@@ -5,7 +5,9 @@ namespace reflect {
 Result<SceneRenderer> SceneRenderer::create(const AccuracySettings& accuracy) {
   Result<ProbeCapture> capture = ProbeCapture::create();
   if (!capture) return Result<SceneRenderer>::failure(capture.error());
-  SceneRenderer r(capture.take());
+  Result<ProbeIrradiance> irradiance = ProbeIrradiance::create();
+  if (!irradiance) return Result<SceneRenderer>::failure(irradiance.error());
+  SceneRenderer r(capture.take(), irradiance.take());
   r.accuracy_ = accuracy;
   r.programs_ = ProgramCache(accuracy.mediump);
   // The programs every scene's main pass needs are built now, so a shader that does not build
@@ -28,7 +30,7 @@ std::string SceneRenderer::setSkybox(const CubeFaces& faces) {
 }
 
 EnvironmentSources SceneRenderer::environments() const {
-  return {accuracy_, meshes_, capture_, rough_, skybox_.get(), glass_, exact_};
+  return {accuracy_, meshes_, capture_, rough_, skybox_.get(), glass_, exact_, irradiance_};
 }
 
 Result<PassCounts> SceneRenderer::capture(const Scene& scene, const FramePlan& plan,
@@ -46,6 +48,10 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, const FramePlan& p
         plan, [this](int owner) { return capture_.target(owner); }, skybox_.get(), accuracy_);
     if (prefilterTiming_) prefilterTiming_(false);
     if (!filtered) return Result<PassCounts>::failure(filtered.error());
+    lastProjections_ = irradiance_.update(plan, [this](int owner) {
+      const CubeCaptureTarget* t = capture_.target(owner);
+      return std::pair<GLuint, int>(t ? t->texture() : 0, t ? t->faceSize() : 0);
+    });
   }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);

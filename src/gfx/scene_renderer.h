@@ -30,6 +30,7 @@
 #include "gfx/pass_drawer.h"
 #include "gfx/prefiltered_probes.h"
 #include "gfx/probe_capture.h"
+#include "gfx/probe_irradiance.h"
 #include "gfx/scene_programs.h"
 #include "gfx/skybox_pass.h"
 
@@ -78,6 +79,10 @@ class SceneRenderer {
   // The static sky's prefiltered cube (0 when no rough reader reads the sky), for tests.
   GLuint skyPrefilteredTexture() const { return rough_.skyTexture(); }
   double lastFilterSamples() const { return rough_.lastSamples(); }
+  // The probes' irradiance (probe-lit objects' diffuse light), and how many were projected in
+  // the last capture: for tests and the frame's stats.
+  const ProbeIrradiance& irradiance() const { return irradiance_; }
+  int lastIrradianceProjections() const { return lastProjections_; }
   // Told just before (true) and after (false) each capture's prefilter pass, so that the caller
   // can time it on its own clock (Demo's stats); unset (the default), nothing is called.
   using PrefilterTiming = std::function<void(bool starting)>;
@@ -95,16 +100,19 @@ class SceneRenderer {
   std::vector<std::string> unsetUniforms() const;
 
  private:
-  explicit SceneRenderer(ProbeCapture capture) : capture_(std::move(capture)) {}
+  SceneRenderer(ProbeCapture capture, ProbeIrradiance irradiance)
+      : capture_(std::move(capture)), irradiance_(std::move(irradiance)) {}
   // What this frame's reflectors read, from the parts that own it.
   EnvironmentSources environments() const;
 
   ProgramCache programs_{false};
   ProbeCapture capture_;
+  ProbeIrradiance irradiance_;
   PrefilteredProbes rough_;
   GlassExits glass_;
   std::unique_ptr<SkyboxPass> skybox_;
   PrefilterTiming prefilterTiming_;
+  int lastProjections_ = 0;
   AccuracySettings accuracy_;
   const MeshBuffers* meshes_ = nullptr;
   const ExactTracer* exact_ = nullptr;

@@ -83,21 +83,23 @@ Result<std::string> expandIncludes(const std::string& file, std::set<std::string
 
 Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile,
                                            const std::string& fragmentFile, bool mediump,
-                                           const std::string& defines) {
+                                           const std::string& defines,
+                                           const std::vector<std::string>& feedback) {
   std::set<std::string> vertexIncludes, fragmentIncludes;
   Result<std::string> vertex = expandIncludes(vertexFile, vertexIncludes);
   if (!vertex) return Result<ShaderProgram>::failure(vertex.error());
   Result<std::string> fragment = expandIncludes(fragmentFile, fragmentIncludes);
   if (!fragment) return Result<ShaderProgram>::failure(fragment.error());
   return buildFromSource(vertexFile, vertex.value().c_str(), fragmentFile, fragment.value().c_str(),
-                         mediump, defines);
+                         mediump, defines, feedback);
 }
 
 Result<ShaderProgram> ShaderProgram::buildFromSource(const std::string& vertexFile,
                                                      const char* vertexSource,
                                                      const std::string& fragmentFile,
                                                      const char* fragmentSource, bool mediump,
-                                                     const std::string& defines) {
+                                                     const std::string& defines,
+                                                     const std::vector<std::string>& feedback) {
   Result<ShaderHandle> vs = compile(GL_VERTEX_SHADER, vertexFile, vertexSource, false, "");
   if (!vs) return Result<ShaderProgram>::failure(vs.error());
   Result<ShaderHandle> fs =
@@ -109,6 +111,13 @@ Result<ShaderProgram> ShaderProgram::buildFromSource(const std::string& vertexFi
   result.program_ = ProgramHandle(glCreateProgram());
   glAttachShader(result.program_.id(), vs.value().id());
   glAttachShader(result.program_.id(), fs.value().id());
+  // Outputs transform feedback captures (named before the link), one buffer, interleaved.
+  if (!feedback.empty()) {
+    std::vector<const char*> names;
+    for (const std::string& name : feedback) names.push_back(name.c_str());
+    glTransformFeedbackVaryings(result.program_.id(), static_cast<GLsizei>(names.size()),
+                                names.data(), GL_INTERLEAVED_ATTRIBS);
+  }
   glLinkProgram(result.program_.id());
   GLint ok = GL_FALSE;
   glGetProgramiv(result.program_.id(), GL_LINK_STATUS, &ok);

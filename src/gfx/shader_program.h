@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/result.h"
 #include "gfx/gl_handle.h"
@@ -19,13 +20,15 @@ class ShaderProgram {
   // shader). Failure carries the stage, the file name and the driver's log.
   // `defines` ("#define NAME VALUE\n" lines) follow the prelude in the fragment shader.
   static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
-                                     bool mediump = false, const std::string& defines = "");
+                                     bool mediump = false, const std::string& defines = "",
+                                     const std::vector<std::string>& feedback = {});
   // The same from GLSL text (without #version); the names label messages. For tools and tests.
   static Result<ShaderProgram> buildFromSource(const std::string& vertexName,
                                                const char* vertexSource,
                                                const std::string& fragmentName,
                                                const char* fragmentSource, bool mediump = false,
-                                               const std::string& defines = "");
+                                               const std::string& defines = "",
+                                               const std::vector<std::string>& feedback = {});
 
   GLuint id() const { return program_.id(); }
   // -1 (and a message on stderr) for a uniform the program does not have.

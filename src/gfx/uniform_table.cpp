@@ -20,6 +20,11 @@ std::vector<std::string> UniformTable::unlisted(GLuint program) const {
     GLenum type = 0;
     glGetActiveUniform(program, static_cast<GLuint>(i), static_cast<GLsizei>(buffer.size()),
                        &length, &size, &type, buffer.data());
+    // A uniform block's members are set by the buffer bound to it, not by the table.
+    const GLuint index = static_cast<GLuint>(i);
+    GLint block = -1;
+    glGetActiveUniformsiv(program, 1, &index, GL_UNIFORM_BLOCK_INDEX, &block);
+    if (block >= 0) continue;
     std::string name(buffer.data(), static_cast<size_t>(length));
     const size_t bracket = name.find('[');  // arrays are listed as "name[0]"
     if (bracket != std::string::npos) name.resize(bracket);

@@ -72,7 +72,10 @@ Result<PlacedScene> placeScene(const Scene& scene, const MeshLookup& meshes, dou
                                         object.material == Material::CubeTextured);
     if (!world) return Result<PlacedScene>::failure(world.error());
     placed.meshes[i] = world.take();
-    if (object.material != Material::Phong) placed.reflectors.push_back(static_cast<int>(i));
+    // Rays leave reflectors, and probe-lit objects' diffuse rays leave them: neither meets itself.
+    if (object.material != Material::Phong || object.probeLit()) {
+      placed.reflectors.push_back(static_cast<int>(i));
+    }
     if (object.material == Material::Glass) placed.glass.push_back(static_cast<int>(i));
   }
   return placed;
@@ -211,9 +214,16 @@ Result<ReferenceFrame> renderReference(const Scene& scene, const MeshLookup& mes
 
   ReferenceFrame frame = emptyFrame(width, height);
   std::vector<Directions> directions(frame.objectIds.size());
-  const Tracer tracer{
-      scene,        world.meshes,        embree, skybox, centres, camera.eye(), options.lobeSamples,
-      options.seed, lobeAlbedosOf(scene)};
+  const Tracer tracer{scene,
+                      world.meshes,
+                      embree,
+                      skybox,
+                      centres,
+                      camera.eye(),
+                      options.lobeSamples,
+                      options.seed,
+                      lobeAlbedosOf(scene),
+                      options.diffuseSamples};
   const PrimaryRays rays(camera, width, height);
   forEachRow(height, options.threads, [&](int y) {
     for (int x = 0; x < width; ++x) {

@@ -51,6 +51,11 @@
 //    GGX lobe (core/ggx.h), estimated by Monte Carlo: lobe rays traced as the mirror's one ray,
 //    from seeded random points (ReferenceOptions), so the frame carries noise that
 //    measureReferenceNoise (reference_noise.h) measures; roughness 0 is the perfect mirror above;
+//  - a probe-lit Phong object (SceneObject::probeLit) seen directly from the eye takes as its
+//    ambient light the cosine-weighted mean of what its point sees (diffuseSamples rays about its
+//    interpolated normal, each traced and shaded as a mirror's ray is, never meeting the object
+//    itself), where the raster reads its probe's irradiance; seen in a mirror, through glass or
+//    in a capture it keeps the constant ambient (one bounce, as the raster);
 //  - the bounce limit: a mirror, glass or cube-textured surface met by a ray that has already
 //    left kMaxBounces such surfaces is not followed further: it shows the background along the
 //    ray.
@@ -79,6 +84,9 @@ struct ReferenceOptions {
   // Lobe rays a pixel's own rough mirror traces: enough that the estimate's noise is well below
   // the errors it judges (docs/rough.md measures it: rough-spheres, 400x400).
   int lobeSamples = 512;
+  // Rays a probe-lit object's pixel averages its diffuse light over (cosine-weighted); its noise
+  // is measured as the lobes' is (docs/rough.md, "Diffuse light from the probe").
+  int diffuseSamples = 1024;
   uint32_t seed = 1;
   int threads = 0;  // <= 0: std::thread::hardware_concurrency()
 };

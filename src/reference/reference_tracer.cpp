@@ -1,6 +1,7 @@
 #include "reference/reference_tracer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -68,9 +69,15 @@ glm::vec3 Tracer::shade(const Hit& hit, const glm::vec3& toViewer, Path path,
   const SceneObject& object = scene.objects[static_cast<size_t>(hit.object)];
   const PhongLight& light = scene.light;
   switch (object.material) {
-    case Material::Phong:  // shaders/phong.frag, unclamped
-      return phongShade(object.colour, hit.position, hit.normal, light.position, eye,
-                        glm::vec4(light.ambient, light.diffuse, light.specular, light.shininess));
+    case Material::Phong: {  // shaders/phong.frag, unclamped
+      const glm::vec4 terms(light.ambient, light.diffuse, light.specular, light.shininess);
+      // Probe light is one bounce: only the eye's own view of the object takes it.
+      if (object.probeLit() && path.depth == 0) {
+        return phongLit(object.colour, hit.position, hit.normal, light.position, eye,
+                        diffuseLight(hit, path), terms);
+      }
+      return phongShade(object.colour, hit.position, hit.normal, light.position, eye, terms);
+    }
     case Material::Mirror:
       return mirror(hit, toViewer, path, dirs);
     case Material::Glass:
@@ -213,6 +220,29 @@ std::optional<glm::vec3> Tracer::transmittedAverage(const Hit& hit, const glm::v
   }
   if (rays == 0) return std::nullopt;
   return sum / static_cast<float>(rays);
+}
+
+// Cosine-weighted directions about the interpolated normal (as phong.frag evaluates the
+// irradiance at it, whichever side faces the eye), from the seeded shifted Hammersley points:
+// u -> (sqrt(u1) cos 2 pi u2, sqrt(u1) sin 2 pi u2, sqrt(1 - u1)). The mean of what they see is
+// E / pi.
+glm::vec3 Tracer::diffuseLight(const Hit& hit, Path path) const {
+  const glm::vec3 n = glm::normalize(hit.normal);
+  const glm::vec3 helper = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::vec3 tangent = glm::normalize(glm::cross(helper, n));
+  const glm::vec3 bitangent = glm::cross(n, tangent);
+  const LobeSampler sampler(seed ^ 0x9e3779b9u, hit.position, n);
+  const uint32_t count = static_cast<uint32_t>(std::max(diffuseSamples, 1));
+  glm::vec3 sum(0.0f);
+  for (uint32_t k = 0; k < count; ++k) {
+    const glm::vec2 u = sampler.point(k, count);
+    const float r = std::sqrt(u.x);
+    const float phi = 6.28318531f * u.y;
+    const glm::vec3 d = r * std::cos(phi) * tangent + r * std::sin(phi) * bitangent +
+                        std::sqrt(std::max(0.0f, 1.0f - u.x)) * n;
+    sum += radiance(hit.object, hit.position, glm::normalize(d), path.next(), nullptr);
+  }
+  return sum / static_cast<float>(count);
 }
 
 // shaders/cube_textured.frag: the ray from the probe centre along the object-space position.

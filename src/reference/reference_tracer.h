@@ -54,6 +54,8 @@ struct Tracer {
   uint32_t seed = 1;
   // Per object: its lobe's albedo (rough mirrors; the others' are empty).
   std::vector<LobeAlbedoTable> lobeAlbedos;
+  // Probe-lit objects: the cosine-weighted rays their diffuse light averages.
+  int diffuseSamples = 1024;
 
   // What a ray sees where it meets nothing: the sky along it, or the clear colour.
   glm::vec3 background(const glm::vec3& dir) const;
@@ -92,6 +94,9 @@ struct Tracer {
   std::optional<glm::vec3> transmittedAverage(const Hit& hit, const glm::vec3& toViewer, float ior,
                                               Path path) const;
   glm::vec3 cubeTextured(const Hit& hit, Path path, Directions* dirs) const;
+  // A probe-lit object's ambient at `hit`: the mean of what diffuseSamples cosine-weighted rays
+  // about its normal see (E / pi), the light phong.frag's probeAmbient approximates.
+  glm::vec3 diffuseLight(const Hit& hit, Path path) const;
 };
 
 }  // namespace reflect

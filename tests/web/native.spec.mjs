@@ -61,7 +61,7 @@ function summary(a, b, mask) {
   return { count, fractionOver: over / Math.max(count, 1), mean: sum / Math.max(3 * count, 1) };
 }
 
-const SCENES = ['ex12-2', 'ex12-2-fresnel', 'glass-sphere', 'two-mirrors', 'shared-probe', 'skybox-grid', 'skybox', 'rough-spheres', 'frosted-glass'];
+const SCENES = ['ex12-2', 'ex12-2-fresnel', 'glass-sphere', 'two-mirrors', 'shared-probe', 'skybox-grid', 'skybox', 'rough-spheres', 'frosted-glass', 'probe-lit'];
 
 for (const scene of SCENES) {
   test(`${scene}: the page draws what the native renderer draws`, async ({ page }) => {

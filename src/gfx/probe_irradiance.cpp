@@ -1,0 +1,105 @@
+#include "gfx/probe_irradiance.h"
+
+#include <algorithm>
+
+#include "gfx/gl.h"
+
+namespace reflect {
+namespace {
+
+constexpr GLsizeiptr kBufferBytes = kIrradianceCoefficients * 4 * sizeof(float);
+constexpr GLuint kProbeUnit = 0;
+
+BufferHandle makeBuffer() {
+  BufferHandle buffer(generateOne<glGenBuffers>());
+  glBindBuffer(GL_UNIFORM_BUFFER, buffer.id());
+  const std::array<float, kIrradianceCoefficients * 4> zeros{};
+  glBufferData(GL_UNIFORM_BUFFER, kBufferBytes, zeros.data(), GL_DYNAMIC_COPY);
+  glBindBuffer(GL_UNIFORM_BUFFER, 0);
+  return buffer;
+}
+
+}  // namespace
+
+Result<ProbeIrradiance> ProbeIrradiance::create() {
+  Result<ShaderProgram> program = ShaderProgram::build(
+      "irradiance_project.vert", "no_fragment.frag", false, "", {"v_coefficient"});
+  if (!program) return Result<ProbeIrradiance>::failure(program.error());
+  ProbeIrradiance p;
+  p.program_ = program.take();
+  p.probeUnit_ = p.program_.uniform("u_probe");
+  p.lod_ = p.program_.uniform("u_lod");
+  p.grid_ = p.program_.uniform("u_grid");
+  p.sampler_ = SamplerHandle(generateOne<glGenSamplers>());
+  glSamplerParameteri(p.sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glSamplerParameteri(p.sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  p.feedback_ = TransformFeedbackHandle(generateOne<glGenTransformFeedbacks>());
+  p.vertexArray_ = VertexArrayHandle(generateOne<glGenVertexArrays>());
+  p.empty_ = makeBuffer();
+  if (!checkGlError("create the irradiance projection")) {
+    return Result<ProbeIrradiance>::failure("GL error while creating the irradiance projection");
+  }
+  return p;
+}
+
+int ProbeIrradiance::levelFor(int faceSize) {
+  int level = 0;
+  while ((faceSize >> level) >= 32) ++level;
+  return level;
+}
+
+void ProbeIrradiance::project(int owner, GLuint cube, int faceSize) {
+  auto it = buffers_.find(owner);
+  if (it == buffers_.end()) it = buffers_.emplace(owner, makeBuffer()).first;
+  const int level = levelFor(faceSize);
+  glUseProgram(program_.id());
+  glUniform1i(probeUnit_, static_cast<GLint>(kProbeUnit));
+  glUniform1f(lod_, static_cast<float>(level));
+  glUniform1i(grid_, std::max(faceSize >> level, 1));
+  glActiveTexture(GL_TEXTURE0 + kProbeUnit);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
+  glBindSampler(kProbeUnit, sampler_.id());
+  glBindVertexArray(vertexArray_.id());
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, feedback_.id());
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, it->second.id());
+  glBeginTransformFeedback(GL_POINTS);
+  glDrawArrays(GL_POINTS, 0, kIrradianceCoefficients);
+  glEndTransformFeedback();
+  // WebGL refuses a buffer bound for transform feedback and read elsewhere: unbound at once.
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+  glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, 0);
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindSampler(kProbeUnit, 0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+  glBindVertexArray(0);
+}
+
+GLuint ProbeIrradiance::buffer(int owner) const {
+  auto it = buffers_.find(owner);
+  return it == buffers_.end() ? 0 : it->second.id();
+}
+
+bool ProbeIrradiance::bindFor(const FramePlan& plan, int object) const {
+  const ProbePlan* probe = plan.irradianceOf(object);
+  const GLuint b = probe ? buffer(probe->reflector) : 0;
+  glBindBufferBase(GL_UNIFORM_BUFFER, kIrradianceBinding, b != 0 ? b : empty_.id());
+  return b != 0;
+}
+
+IrradianceCoefficients ProbeIrradiance::readBack(int owner) const {
+  IrradianceCoefficients c{};
+  const GLuint b = buffer(owner);
+  if (b == 0) return c;
+  glBindBuffer(GL_COPY_READ_BUFFER, b);
+  const void* mapped = glMapBufferRange(GL_COPY_READ_BUFFER, 0, kBufferBytes, GL_MAP_READ_BIT);
+  if (mapped) {
+    const float* f = static_cast<const float*>(mapped);
+    for (size_t i = 0; i < c.size(); ++i) c[i] = glm::vec3(f[4 * i], f[4 * i + 1], f[4 * i + 2]);
+    glUnmapBuffer(GL_COPY_READ_BUFFER);
+  }
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  return c;
+}
+
+}  // namespace reflect

@@ -1,0 +1,160 @@
+// Diffuse light from the live probes in the frame planner (docs/rough.md, "Diffuse light from
+// the probe"): each probe-lit object reads the nearest probe; a probe whose reflector is traced
+// is still captured for its readers (colours only), and its irradiance is projected again only
+// in frames that redraw one of its faces.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/cube_sampling.h"
+#include "core/frame_planner.h"
+#include "core/irradiance.h"
+#include "core/scene_file.h"
+#include "planned_boxes.h"
+
+namespace reflect {
+namespace {
+
+using testing::boxAt;
+using testing::mirrorAt;
+
+PlannedObject litBoxAt(const glm::vec3& p) {
+  PlannedObject o = boxAt(p);
+  o.probeLit = true;
+  return o;
+}
+
+CaptureContext searching(Search search) {
+  CaptureContext c;
+  c.accuracy.search = search;
+  return c;
+}
+
+TEST(ProbeLightPlanning, EachReaderTakesTheNearestProbe) {
+  FramePlanner planner;
+  const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}, 0.0f), mirrorAt({10, 0, 0}, 0.0f),
+                                       litBoxAt({2, 0, 0}), litBoxAt({7, 0, 0}), boxAt({3, 0, 0})},
+                                      searching(Search::Hierarchical), {});
+  ASSERT_EQ(plan.probes.size(), 2u);
+  EXPECT_EQ(plan.probes[0].diffuseReaders, std::vector<int>{2});
+  EXPECT_EQ(plan.probes[1].diffuseReaders, std::vector<int>{3});
+  EXPECT_EQ(plan.irradianceOf(2), &plan.probes[0]);
+  EXPECT_EQ(plan.irradianceOf(3), &plan.probes[1]);
+  EXPECT_EQ(plan.irradianceOf(4), nullptr);  // a Phong object with the constant ambient
+  EXPECT_EQ(plan.irradianceOf(0), nullptr);
+}
+
+TEST(ProbeLightPlanning, ATracedReflectorsProbeStaysCapturedForItsReaders) {
+  FramePlanner planner;
+  const std::vector<PlannedObject> lit{mirrorAt({0, 0, 0}, 0.0f), litBoxAt({3, 0, 0})};
+  const FramePlan plan = planner.plan(lit, searching(Search::Exact), {});
+  ASSERT_EQ(plan.traced.size(), 1u);
+  EXPECT_TRUE(plan.traces(0));
+  ASSERT_EQ(plan.probes.size(), 1u);
+  const ProbePlan& probe = plan.probes[0];
+  EXPECT_TRUE(probe.lightOnly);
+  EXPECT_EQ(probe.faces.size(), 6u);
+  EXPECT_EQ(probe.layers, 1);
+  EXPECT_TRUE(probe.plainLookupSuffices);  // no depths: nothing searches it
+  EXPECT_TRUE(probe.projectIrradiance);
+  EXPECT_EQ(plan.probeOf(0), nullptr);  // the mirror reads its rays, not this cube
+  EXPECT_EQ(plan.layoutOf(0)->reflector, 0);
+  EXPECT_EQ(plan.irradianceOf(1), &probe);
+
+  // Without a reader the traced reflector has no probe at all.
+  FramePlanner alone;
+  const FramePlan plain =
+      alone.plan({mirrorAt({0, 0, 0}, 0.0f), boxAt({3, 0, 0})}, searching(Search::Exact), {});
+  EXPECT_TRUE(plain.probes.empty());
+}
+
+TEST(ProbeLightPlanning, IrradianceIsProjectedOnlyWhenAFaceWasRedrawn) {
+  FramePlanner planner;
+  std::vector<PlannedObject> lit{mirrorAt({0, 0, 0}, 0.0f), litBoxAt({3, 0, 0})};
+  EXPECT_TRUE(planner.plan(lit, searching(Search::Exact), {}).probes[0].projectIrradiance);
+  const FramePlan still = planner.plan(lit, searching(Search::Exact), {});
+  ASSERT_EQ(still.probes.size(), 1u);
+  EXPECT_TRUE(still.probes[0].faces.empty());
+  EXPECT_FALSE(still.probes[0].projectIrradiance);
+  lit[1].model = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 3));  // the reader moves
+  const FramePlan moved = planner.plan(lit, searching(Search::Exact), {});
+  EXPECT_FALSE(moved.probes[0].faces.empty());
+  EXPECT_TRUE(moved.probes[0].projectIrradiance);
+}
+
+TEST(ProbeLightPlanning, TheCostOfATraceCountsTheCaptureItsReadersKeep) {
+  const std::vector<PlannedObject> plain{mirrorAt({0, 0, 0}, 0.0f), boxAt({3, 0, 0})};
+  const std::vector<PlannedObject> lit{mirrorAt({0, 0, 0}, 0.0f), litBoxAt({3, 0, 0})};
+  const PlannerView view{{0, 0, 8}, 400.0f, 800.0f * 800.0f};
+  FramePlanner a, b;
+  a.plan(plain, searching(Search::Planned), {}, view);
+  b.plan(lit, searching(Search::Planned), {}, view);
+  ASSERT_EQ(a.choices().size(), 1u);
+  ASSERT_EQ(b.choices().size(), 1u);
+  EXPECT_DOUBLE_EQ(a.choices()[0].captureMs, b.choices()[0].captureMs);
+  EXPECT_GT(b.choices()[0].traceMs, a.choices()[0].traceMs);
+}
+
+TEST(ProbeLightScene, AmbientKeyAndItsErrors) {
+  const auto parse = [](const std::string& objects) {
+    return parseSceneJson(R"({"objects": [)" + objects + "]}", "lit.json");
+  };
+  Result<Scene> ok = parse(R"({"mesh": "s.obj", "material": {"type": "mirror"}},
+      {"mesh": "a.obj", "ambient": "probe"}, {"mesh": "b.obj", "ambient": "constant"})");
+  ASSERT_TRUE(ok) << ok.error();
+  EXPECT_FALSE(ok.value().objects[0].probeLit());
+  EXPECT_TRUE(ok.value().objects[1].probeLit());
+  EXPECT_EQ(ok.value().objects[2].ambient, Ambient::Constant);
+  EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": "sky"})").error(),
+            "lit.json: objects[0].ambient: expected \"constant\" or \"probe\"");
+  EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": 1})").error(),
+            "lit.json: objects[0].ambient: expected a string");
+  EXPECT_EQ(
+      parse(R"({"mesh": "a.obj", "material": {"type": "mirror"}, "ambient": "probe"})").error(),
+      "lit.json: objects[0].ambient: \"probe\" lights a Phong object only");
+  EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": "probe"})").error(),
+            "lit.json: objects: an object with \"ambient\": \"probe\" needs a live probe to read "
+            "(a mirror, glass or cube-textured object with a live environment)");
+}
+
+// The basis and its band factors: a uniform environment of radiance c gives E / pi = c in every
+// direction; one lit from +Z alone (radiance 1 on the hemisphere z > 0) gives the clamped-cosine
+// convolution, 1 at +Z, 1/2 sideways, 0 at -Z, within order 2's known error there.
+RgbaImage filledFace(int size, uint8_t r, uint8_t g, uint8_t b) {
+  RgbaImage face;
+  face.width = face.height = size;
+  for (int i = 0; i < size * size; ++i) face.pixels.insert(face.pixels.end(), {r, g, b, 255});
+  return face;
+}
+
+TEST(Irradiance, UniformAndHalfLitEnvironments) {
+  constexpr int kFace = 16;
+  CubeFaces uniform, half;
+  for (int f = 0; f < 6; ++f) {
+    uniform[static_cast<size_t>(f)] = filledFace(kFace, 51, 102, 204);
+    half[static_cast<size_t>(f)] = filledFace(kFace, 0, 0, 0);
+    // The hemisphere z > 0 white: texel centres only, as the projection reads them.
+    for (int y = 0; y < kFace; ++y) {
+      for (int x = 0; x < kFace; ++x) {
+        const glm::vec3 d = faceDirection(f, (x + 0.5f) / kFace, (y + 0.5f) / kFace);
+        if (d.z <= 0.0f) continue;
+        uint8_t* texel = &half[static_cast<size_t>(f)].pixels[4 * size_t(y * kFace + x)];
+        texel[0] = texel[1] = texel[2] = 255;
+      }
+    }
+  }
+  const IrradianceCoefficients u = projectIrradiance(uniform);
+  for (const glm::vec3& n : {glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0, -1, 0)}) {
+    const glm::vec3 e = irradianceAt(u, n);
+    EXPECT_NEAR(e.r, 0.2f, 1e-4f);
+    EXPECT_NEAR(e.g, 0.4f, 1e-4f);
+    EXPECT_NEAR(e.b, 0.8f, 1e-4f);
+  }
+  const IrradianceCoefficients h = projectIrradiance(half);
+  EXPECT_NEAR(irradianceAt(h, {0, 0, 1}).r, 1.0f, 0.07f);
+  EXPECT_NEAR(irradianceAt(h, {1, 0, 0}).r, 0.5f, 0.02f);
+  EXPECT_NEAR(irradianceAt(h, {0, 0, -1}).r, 0.0f, 0.07f);
+}
+
+}  // namespace
+}  // namespace reflect
