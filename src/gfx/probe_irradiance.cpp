@@ -87,19 +87,4 @@ bool ProbeIrradiance::bindFor(const FramePlan& plan, int object) const {
   return b != 0;
 }
 
-IrradianceCoefficients ProbeIrradiance::readBack(int owner) const {
-  IrradianceCoefficients c{};
-  const GLuint b = buffer(owner);
-  if (b == 0) return c;
-  glBindBuffer(GL_COPY_READ_BUFFER, b);
-  const void* mapped = glMapBufferRange(GL_COPY_READ_BUFFER, 0, kBufferBytes, GL_MAP_READ_BIT);
-  if (mapped) {
-    const float* f = static_cast<const float*>(mapped);
-    for (size_t i = 0; i < c.size(); ++i) c[i] = glm::vec3(f[4 * i], f[4 * i + 1], f[4 * i + 2]);
-    glUnmapBuffer(GL_COPY_READ_BUFFER);
-  }
-  glBindBuffer(GL_COPY_READ_BUFFER, 0);
-  return c;
-}
-
 }  // namespace reflect

@@ -44,8 +44,6 @@ class ProbeIrradiance {
   // Binds the buffer of the probe probe-lit `object` reads (plan.irradianceOf) to
   // kIrradianceBinding; false when it has none yet (the draw then lights it with zeros).
   bool bindFor(const FramePlan& plan, int object) const;
-  // The coefficients of owner's probe, read back (tests and pick a pixel only: a GPU stall).
-  IrradianceCoefficients readBack(int owner) const;
   // The mip level and grid the projection reads a cube of faceSize at: the level whose faces are
   // the first under 32 texels square (the whole face below that).
   static int levelFor(int faceSize);

@@ -271,7 +271,7 @@ TEST(CliOptions, ErrorsSayWhatIsExpected) {
             "--accuracy-frames: x is not a whole number from 0 to 100000");
   EXPECT_EQ(errorOf({"render", "--scene", "nope"}),
             "--scene nope: no such scene (shipped: ex12-2, ex12-1, ex12-2-fresnel, frosted-glass, "
-            "glass-sphere, rough-spheres, "
+            "glass-sphere, probe-lit, rough-spheres, "
             "shared-probe, skybox, skybox-grid, two-mirrors) and no such .json file");
   EXPECT_EQ(errorOf({"render", "--assets", "/no/such/folder"}),
             "--assets /no/such/folder: not a folder");
