@@ -52,6 +52,9 @@ void ProbeIrradiance::project(int owner, GLuint cube, int faceSize) {
   auto it = buffers_.find(owner);
   if (it == buffers_.end()) it = buffers_.emplace(owner, makeBuffer()).first;
   const int level = levelFor(faceSize);
+  // WebGL refuses transform feedback into a buffer still bound elsewhere: the last probe-lit
+  // draw left one at the uniform binding (and the generic one).
+  glBindBufferBase(GL_UNIFORM_BUFFER, kIrradianceBinding, 0);
   glUseProgram(program_.id());
   glUniform1i(probeUnit_, static_cast<GLint>(kProbeUnit));
   glUniform1f(lod_, static_cast<float>(level));
