@@ -2,8 +2,8 @@
 // (of nine, drawn with the rasteriser off) writes coefficient i, which transform feedback stores
 // in the probe's irradiance buffer, read by phong.frag as a uniform block (AMBIENT_PROBE). No
 // read-back: the coefficients stay on the GPU.
-// The cube is read at the mip level whose faces are u_grid texels square (the box chain the
-// capture generated), one texel centre a sample, each weighed by the solid angle it spans,
+// The cube is read at the mip level whose faces are u_grid texels square (8 for the usual face
+// sizes: the box chain the capture generated), one texel centre a sample, each weighed by the solid angle it spans,
 // dw ~ (2 / grid)^2 / (1 + s^2 + t^2)^(3/2); the weights are then scaled to sum to 4 pi.
 // (#version and precision are prepended by ShaderProgram.)
 uniform samplerCube u_probe;

@@ -57,6 +57,7 @@ std::vector<PlannedObject> Demo::plannedObjects(double seconds) const {
     p.look = object.look();
     p.probed = object.needsLiveProbe();
     p.probeLit = object.probeLit();
+    p.ownsLightProbe = object.ownsLightProbe();
     p.probeGroup = object.probeGroup;
     p.probeCentre = capturePoint(object.probeCentre, accuracy_.captureAtOrigin);
     planned.push_back(p);
@@ -171,13 +172,18 @@ void Demo::capturePass(const FrameRecord& f, bool waitForGpu) {
   GpuTimer& timer = graphics_.timer();
   timer.begin(GpuTimer::kCapture);
   // The prefilter's own time, when the frame waits for the GPU (benches): waits on both sides.
-  std::chrono::steady_clock::time_point filterStart;
-  double filterMs = 0.0;
+  // So is the irradiance projection's.
+  std::chrono::steady_clock::time_point stageStart;
+  double filterMs = 0.0, irradianceMs = 0.0;
   if (waitForGpu) {
-    graphics_.renderer()->setPrefilterTiming([&](bool starting) {
+    graphics_.renderer()->setPrefilterTiming([&](SceneRenderer::AfterCapture stage, bool starting) {
       reflect::waitForGpu();
-      if (starting) filterStart = std::chrono::steady_clock::now();
-      if (!starting) filterMs = millisecondsSince(filterStart);
+      if (starting) {
+        stageStart = std::chrono::steady_clock::now();
+        return;
+      }
+      (stage == SceneRenderer::AfterCapture::Prefilter ? filterMs : irradianceMs) =
+          millisecondsSince(stageStart);
     });
   }
   Result<PassCounts> capture =
@@ -192,6 +198,8 @@ void Demo::capturePass(const FrameRecord& f, bool waitForGpu) {
     stats_.captureTriangles = capture.value().triangles;
     stats_.filterSamples = graphics_.renderer()->lastFilterSamples();
     stats_.filterMs = filterMs;
+    stats_.irradianceMs = irradianceMs;
+    stats_.irradianceProjections = graphics_.renderer()->lastIrradianceProjections();
   }
   graphics_.renderer()->setPrefilterTiming(nullptr);
   if (waitForGpu) reflect::waitForGpu();

@@ -7,6 +7,8 @@ nlohmann::json FrameStats::toJson() const {
                          {"captureMs", captureMs},
                          {"filterSamples", filterSamples},
                          {"filterMs", filterMs},
+                         {"irradianceProjections", irradianceProjections},
+                         {"irradianceMs", irradianceMs},
                          {"timing", timing},
                          {"gpuFrameMs", gpuFrameMs},
                          {"gpuCaptureMs", gpuCaptureMs},

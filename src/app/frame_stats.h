@@ -14,6 +14,10 @@ struct FrameStats {
   // when the frame waits for the GPU (timing "gpu-finish"), its own time.
   double filterSamples = 0;
   double filterMs = 0;
+  // Probe-lit objects' irradiance, part of captureMs: probes projected, and (timing "gpu-finish")
+  // the projection's time.
+  int irradianceProjections = 0;
+  double irradianceMs = 0;
   // "gpu-finish": times wait for the GPU to finish, so they are what the frame took end to end.
   // "cpu-submit": the display loop does not wait for the GPU; times are command submission only.
   const char* timing = "cpu-submit";

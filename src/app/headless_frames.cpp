@@ -65,6 +65,7 @@ std::vector<TimedFrames> timeInBlocks(const std::vector<Demo*>& demos, unsigned 
         out[i].cpuMs.push_back(processCpuMs() - cpuBefore);
         out[i].captureMs.push_back(s.captureMs);
         out[i].filterMs.push_back(s.filterMs);
+        out[i].irradianceMs.push_back(s.irradianceMs);
       }
     }
   }

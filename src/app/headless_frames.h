@@ -36,6 +36,7 @@ Result<BenchResult> benchFrames(Demo& demo, int width, int height, int warmup, i
 struct TimedFrames {
   std::vector<double> ms, cpuMs;
   std::vector<double> captureMs, filterMs;  // the capture's share of ms, and the filter's of it
+  std::vector<double> irradianceMs;         // the irradiance projection's share of captureMs
 };
 std::vector<TimedFrames> timeInBlocks(const std::vector<Demo*>& demos, unsigned framebuffer,
                                       int width, int height, int frames,

@@ -38,6 +38,25 @@ void printFilterCosts(const std::vector<SweepRow>& rows) {
   }
 }
 
+// Probe-lit objects: what projecting their probes' irradiance cost beside the capture it reads
+// (issue 35's target: at most 0.05x the capture's time).
+void printIrradianceCosts(const std::vector<SweepRow>& rows) {
+  bool header = false;
+  for (const SweepRow& r : rows) {
+    if (r.irradianceMs <= 0.0) continue;
+    if (!header) {
+      std::printf(
+          "\nirradiance projection (medians a frame):\n"
+          "setting | capture ms (all before the main pass, less the projection) | projection ms | "
+          "projection / capture\n");
+      header = true;
+    }
+    const double faces = r.captureMs - r.irradianceMs;
+    std::printf("%s | %.3f | %.3f | %.3fx\n", r.setting.name.c_str(), faces, r.irradianceMs,
+                faces > 0.0 ? r.irradianceMs / faces : 0.0);
+  }
+}
+
 // Rough readers: each rough mirror's own reflector PSNR (issue 24's target: >= 35 dB at roughness
 // 0.3 and above under the default).
 void printRoughErrors(const std::vector<SweepRow>& rows) {
@@ -261,6 +280,7 @@ std::string runSweepCommand(const BenchCommandOptions& o, const BenchDemoFactory
       options.tunedTimes.empty() ? "none" : timesText(options.tunedTimes).c_str(),
       sweepTable(rows.value()).c_str());
   printFilterCosts(rows.value());
+  printIrradianceCosts(rows.value());
   printRoughErrors(rows.value());
   const SweepRow* original = nullptr;
   const SweepRow* byDefault = nullptr;

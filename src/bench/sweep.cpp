@@ -153,6 +153,7 @@ Result<std::vector<SweepRow>> runSweep(const SweepDemoFactory& makeDemo,
     row.cpuMs = median(cpu[i]);
     row.captureMs = median(frames[i].captureMs);
     row.filterMs = median(frames[i].filterMs);
+    row.irradianceMs = median(frames[i].irradianceMs);
     double heldOutMse = 0, tunedMse = 0, p95 = 0, angle = 0, offMse = 0, visible = 0;
     std::map<int, double> roughMse;  // by object
     row.worstPsnrDb = kPsnrCapDb;

@@ -43,7 +43,7 @@ struct SweepRow {
   double medianMs = 0, p10Ms = 0, p90Ms = 0;
   double cpuMs = 0;  // median CPU time of the process per frame
   // Medians: the capture (faces and prefilter) and its prefilter pass alone (rough readers).
-  double captureMs = 0, filterMs = 0;
+  double captureMs = 0, filterMs = 0, irradianceMs = 0;
   // Rough mirrors: per reflector of roughness > 0, "roughness R" and its pooled PSNR (held-out
   // times), in scene order.
   std::vector<std::pair<std::string, double>> roughPsnrDb;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "core/irradiance.h"
 #include "core/planner_parts.h"
 #include "core/probe_layout.h"
 
@@ -15,6 +16,18 @@ namespace reflect {
 using planner::contains;
 
 namespace {
+
+// A probe that only lights its diffuse readers stores colours alone: one layer, no depths for a
+// search, no rough levels. A probe-lit object's own probe is one, at kIrradianceFaceSize.
+void keepColoursOnly(ProbePlan& probe, const std::vector<PlannedObject>& objects) {
+  probe.lightOnly = true;
+  probe.layers = 1;
+  probe.plainLookupSuffices = true;
+  probe.roughLevels.clear();
+  if (objects[static_cast<size_t>(probe.reflector)].ownsLightProbe) {
+    probe.faceSize = kIrradianceFaceSize;
+  }
+}
 
 bool sameLevels(const std::vector<PlannedLevel>& a, const std::vector<PlannedLevel>& b) {
   if (a.size() != b.size()) return false;
@@ -26,10 +39,10 @@ bool sameLevels(const std::vector<PlannedLevel>& a, const std::vector<PlannedLev
 
 bool sameState(const PlannedObject& a, const PlannedObject& b) {
   return a.model == b.model && a.colour == b.colour && a.look == b.look &&
-         a.probeLit == b.probeLit && a.probeCentre == b.probeCentre &&
-         a.meshRevision == b.meshRevision && a.probed == b.probed &&
-         a.localBounds.min == b.localBounds.min && a.localBounds.max == b.localBounds.max &&
-         sameLevels(a.levels, b.levels);
+         a.probeLit == b.probeLit && a.ownsLightProbe == b.ownsLightProbe &&
+         a.probeCentre == b.probeCentre && a.meshRevision == b.meshRevision &&
+         a.probed == b.probed && a.localBounds.min == b.localBounds.min &&
+         a.localBounds.max == b.localBounds.max && sameLevels(a.levels, b.levels);
 }
 
 }  // namespace
@@ -43,6 +56,7 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
     planner::decideStorage(laid, objects, context);
     laid.roughLevels = planner::roughLevelsOf(laid, objects, context);
     laid.filterFaces = 0;  // which levels there are; nothing is filtered here
+    if (objects[static_cast<size_t>(laid.reflector)].ownsLightProbe) keepColoursOnly(laid, objects);
   }
   std::vector<int> skyLevels;  // which levels there are; nothing is filtered here
   uint64_t skyContent = 0;
@@ -159,10 +173,18 @@ FramePlanner::FaceDraws FramePlanner::faceDraws(const ProbePlan& probe,
                                                 const std::vector<PlannedObject>& objects,
                                                 const CaptureContext& context,
                                                 const PlannerSettings& settings) const {
+  // A probe kept for its diffuse readers alone leaves them out too (a reader would otherwise
+  // light itself with its own image), and is drawn at its own face size.
+  std::vector<int> left = probe.members;
+  if (probe.lightOnly) {
+    left.insert(left.end(), probe.diffuseReaders.begin(), probe.diffuseReaders.end());
+  }
+  CaptureContext sized = context;
+  if (probe.faceSize > 0) sized.faceSize = probe.faceSize;
   FaceDraws draws;
   for (int face = 0; face < 6; ++face) {
     draws[static_cast<size_t>(face)] =
-        drawsFor(objects, probe.members, probe.centre, face, context,
+        drawsFor(objects, left, probe.centre, face, sized,
                  settings.policy == UpdatePolicy::EveryFrame, settings.captureLod);
   }
   return draws;
@@ -215,6 +237,8 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   for (ProbePlan& probe : planner::probesWithReaders(objects)) {
     planner::decideStorage(probe, objects, context);
     probe.roughLevels = planner::roughLevelsOf(probe, objects, context);
+    const bool own = objects[static_cast<size_t>(probe.reflector)].ownsLightProbe;
+    if (own) keepColoursOnly(probe, objects);
     ProbeMemory& memory = memoryOf(probe.reflector);
     // Culled once, for the cost and the capture; the exact mode traces without weighing.
     FaceDraws draws;
@@ -231,16 +255,15 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       if (!readers) continue;
       // Kept alive for its diffuse readers: the colours they take their light from, nothing
       // more. (Its reflectors see their own rays, so their looks do not change with it.)
-      probe.lightOnly = true;
-      probe.layers = 1;
-      probe.plainLookupSuffices = true;
-      probe.roughLevels.clear();
+      keepColoursOnly(probe, objects);
+      draws = faceDraws(probe, objects, context, settings);
       planCapture(probe, std::move(draws), objects, context, settings, memory);
       probe.projectIrradiance = !probe.faces.empty();
       plan.probes.push_back(std::move(probe));
       continue;
     }
-    if (planCapture(probe, std::move(draws), objects, context, settings, memory)) {
+    // What an object's own light probe holds changes no one's look (probe light is one bounce).
+    if (planCapture(probe, std::move(draws), objects, context, settings, memory) && !own) {
       recapturedForRealChange.insert(recapturedForRealChange.end(), probe.members.begin(),
                                      probe.members.end());
     }

@@ -61,10 +61,11 @@ struct PlannedObject {
   Bounds localBounds;
   glm::mat4 model{1.0f};
   glm::vec3 colour{1.0f};
-  SceneObject::Look look{};   // its material, as other probes' captures show it
-  uint32_t meshRevision = 0;  // the generation of the object's mesh: new when it is replaced
-  bool probed = false;        // samples a live probe of its own (mirror, glass, cube-textured)
-  bool probeLit = false;      // Phong lit by the nearest live probe's irradiance (Ambient::Probe)
+  SceneObject::Look look{};     // its material, as other probes' captures show it
+  uint32_t meshRevision = 0;    // the generation of the object's mesh: new when it is replaced
+  bool probed = false;          // samples a live probe of its own (mirror, glass, cube-textured)
+  bool probeLit = false;        // Phong lit by the nearest live probe's irradiance (Ambient::Probe)
+  bool ownsLightProbe = false;  // ... by an irradiance probe of its own (Ambient::OwnProbe)
   // Probed objects with the same group >= 0 share one probe at the centre of their joint bounds
   // (cheaper, less exact: they do not see each other); -1 = a probe of its own.
   int probeGroup = -1;
@@ -144,6 +145,8 @@ struct ProbePlan : ProbeLayout {
   // Captured for its diffuse readers alone: its reflectors' rays are traced (FramePlan::traced),
   // so nothing searches or filters it; it stores colours only (one layer, no depths).
   bool lightOnly = false;
+  // Its faces' size when it is not the scene's (a probe-lit object's own: kIrradianceFaceSize).
+  int faceSize = 0;
 };
 
 // The plain lookup (the cube map along the ray's direction d) is off by the parallax angle

@@ -13,6 +13,10 @@
 namespace reflect {
 
 inline constexpr int kIrradianceCoefficients = 9;
+// The face size of a probe-lit object's own probe (Ambient::OwnProbe): order 2 keeps nothing
+// narrower than about a radian, so 32 texels a face (the projection reads 8 x 8) lose nothing it
+// keeps (64 gave mario the same PSNR within 0.6 dB, ProbeLit.FiguresAgainstTheReference).
+inline constexpr int kIrradianceFaceSize = 32;
 using IrradianceCoefficients = std::array<glm::vec3, kIrradianceCoefficients>;
 
 // Y_i(n), i = 0..8 in the order (l, m) = (0, 0), (1, -1), (1, 0), (1, 1), (2, -2), (2, -1),

@@ -20,8 +20,10 @@ std::vector<ProbeLayout> probesOf(const std::vector<PlannedObject>& objects) {
   std::vector<ProbeCandidate> candidates;
   candidates.reserve(objects.size());
   for (const PlannedObject& o : objects) {
-    candidates.push_back(ProbeCandidate{o.probed, o.probeGroup, o.probeCentre,
-                                        transformBounds(o.localBounds, o.model)});
+    // A probe-lit object with a probe of its own owns one, at its bounds' centre.
+    candidates.push_back(ProbeCandidate{
+        o.probed || o.ownsLightProbe, o.ownsLightProbe ? -1 : o.probeGroup,
+        o.ownsLightProbe ? std::nullopt : o.probeCentre, transformBounds(o.localBounds, o.model)});
   }
   return layoutProbes(candidates);
 }
@@ -31,7 +33,10 @@ std::vector<ProbePlan> probesWithReaders(const std::vector<PlannedObject>& objec
   std::vector<ProbePlan> probes(layouts.size());
   for (size_t i = 0; i < objects.size(); ++i) {
     if (!objects[i].probeLit) continue;
-    const int nearest = nearestProbe(layouts, worldCentreOf(objects[i]));
+    int nearest = nearestProbe(layouts, worldCentreOf(objects[i]));
+    for (size_t p = 0; p < layouts.size() && objects[i].ownsLightProbe; ++p) {
+      if (layouts[p].reflector == static_cast<int>(i)) nearest = static_cast<int>(p);
+    }
     if (nearest >= 0)
       probes[static_cast<size_t>(nearest)].diffuseReaders.push_back(static_cast<int>(i));
   }

@@ -40,6 +40,7 @@ enum class Environment {
 enum class Ambient {
   Constant,  // the course: the light's ambient constant, the same from every direction
   Probe,     // what the nearest live probe sees, as irradiance (docs/rough.md, "Diffuse light")
+  OwnProbe,  // the same from a small probe of its own, at its centre, that leaves it out
 };
 
 enum class Motion {
@@ -73,7 +74,9 @@ struct SceneObject {
   std::optional<glm::vec3> probeCentre;
   // Phong: its ambient light. Probe: the irradiance the nearest live probe's capture gives its
   // normal (order-2 spherical harmonics), in place of the light's ambient constant, in the main
-  // pass; what mirrors and captures show of it keeps the constant (one bounce).
+  // pass; what mirrors and captures show of it keeps the constant (one bounce). OwnProbe: the
+  // same from a probe of its own (kIrradianceFaceSize texels a face, at its bounds' centre,
+  // without itself in it).
   Ambient ambient = Ambient::Constant;
 
   bool usesEnvironment() const { return material != Material::Phong; }
@@ -94,7 +97,9 @@ struct SceneObject {
   Look look() const { return {material, environment, reflection, base, ior, fresnel, roughness}; }
   bool rough() const { return look().rough(); }
   bool needsLiveProbe() const { return usesEnvironment() && environment == Environment::LiveProbe; }
-  bool probeLit() const { return material == Material::Phong && ambient == Ambient::Probe; }
+  bool probeLit() const { return material == Material::Phong && ambient != Ambient::Constant; }
+  // A probe-lit object with an irradiance probe of its own (Ambient::OwnProbe).
+  bool ownsLightProbe() const { return probeLit() && ambient == Ambient::OwnProbe; }
 };
 
 struct CaptureSettings {

@@ -124,11 +124,11 @@ SceneObject readObject(const JsonReader& r, std::vector<std::string>& probeGroup
   if (r.has("ambient")) {
     const JsonReader a = r["ambient"];
     const std::string ambient = a.string("");
-    if (ambient == "probe") {
-      o.ambient = Ambient::Probe;
-      if (o.material != Material::Phong) a.fail("\"probe\" lights a Phong object only");
+    if (ambient == "probe" || ambient == "own-probe") {
+      o.ambient = ambient == "probe" ? Ambient::Probe : Ambient::OwnProbe;
+      if (o.material != Material::Phong) a.fail("\"" + ambient + "\" lights a Phong object only");
     } else if (ambient != "constant" && a.ok()) {
-      a.fail("expected \"constant\" or \"probe\"");
+      a.fail("expected \"constant\", \"probe\" or \"own-probe\"");
     }
   }
   if (r.has("probe")) {
@@ -233,7 +233,11 @@ Result<Scene> parseSceneJson(const std::string& text, const std::string& source)
         return std::any_of(scene.objects.begin(), scene.objects.end(),
                            [&](const SceneObject& o) { return (o.*what)(); });
       };
-      if (error.empty() && has(&SceneObject::probeLit) && !has(&SceneObject::needsLiveProbe)) {
+      const auto readsNearest = [](const SceneObject& o) { return o.ambient == Ambient::Probe; };
+      const bool nearestReader =
+          std::any_of(scene.objects.begin(), scene.objects.end(), readsNearest);
+      if (error.empty() && nearestReader && !has(&SceneObject::needsLiveProbe) &&
+          !has(&SceneObject::ownsLightProbe)) {
         objects.fail(
             "an object with \"ambient\": \"probe\" needs a live probe to read (a mirror, glass "
             "or cube-textured object with a live environment)");

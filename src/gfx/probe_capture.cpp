@@ -86,7 +86,7 @@ Result<CubeCaptureTarget*> ProbeCapture::targetFor(const Scene& scene, const Pro
                                                    const AccuracySettings& accuracy) {
   // Depths only for a probe whose reflectors search them.
   const bool depths = capturesDepths(probe, accuracy);
-  CaptureFormat format{scene.capture.faceSize,
+  CaptureFormat format{probe.faceSize > 0 ? probe.faceSize : scene.capture.faceSize,
                        accuracy.halfFloat,
                        accuracy.depthBits,
                        accuracy.mipmaps,

@@ -44,7 +44,7 @@ Result<ProbeIrradiance> ProbeIrradiance::create() {
 
 int ProbeIrradiance::levelFor(int faceSize) {
   int level = 0;
-  while ((faceSize >> level) >= 32) ++level;
+  while ((faceSize >> level) >= 16) ++level;
   return level;
 }
 

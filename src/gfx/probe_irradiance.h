@@ -44,8 +44,9 @@ class ProbeIrradiance {
   // Binds the buffer of the probe probe-lit `object` reads (plan.irradianceOf) to
   // kIrradianceBinding; false when it has none yet (the draw then lights it with zeros).
   bool bindFor(const FramePlan& plan, int object) const;
-  // The mip level and grid the projection reads a cube of faceSize at: the level whose faces are
-  // the first under 32 texels square (the whole face below that).
+  // The mip level the projection reads a cube of faceSize at: the first whose faces are under 16
+  // texels square (8 x 8 for 256- and 32-texel faces; the whole face below 16). Order 2 keeps
+  // nothing narrower than about a radian; 16 x 16 cost twice as much for the same pixels.
   static int levelFor(int faceSize);
   // Probes with a buffer, for tests.
   size_t buffers() const { return buffers_.size(); }

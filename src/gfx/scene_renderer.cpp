@@ -43,15 +43,17 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, const FramePlan& p
   Result<ProbeCapture::Outcome> captured = capture_.capture(request, drawer);
   if (!captured) return Result<PassCounts>::failure(captured.error());
   if (captured.value().finished) {
-    if (prefilterTiming_) prefilterTiming_(true);
+    if (prefilterTiming_) prefilterTiming_(AfterCapture::Prefilter, true);
     Result<double> filtered = rough_.filter(
         plan, [this](int owner) { return capture_.target(owner); }, skybox_.get(), accuracy_);
-    if (prefilterTiming_) prefilterTiming_(false);
+    if (prefilterTiming_) prefilterTiming_(AfterCapture::Prefilter, false);
     if (!filtered) return Result<PassCounts>::failure(filtered.error());
+    if (prefilterTiming_) prefilterTiming_(AfterCapture::Irradiance, true);
     lastProjections_ = irradiance_.update(plan, [this](int owner) {
       const CubeCaptureTarget* t = capture_.target(owner);
       return std::pair<GLuint, int>(t ? t->texture() : 0, t ? t->faceSize() : 0);
     });
+    if (prefilterTiming_) prefilterTiming_(AfterCapture::Irradiance, false);
   }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);

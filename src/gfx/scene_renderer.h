@@ -83,9 +83,11 @@ class SceneRenderer {
   // the last capture: for tests and the frame's stats.
   const ProbeIrradiance& irradiance() const { return irradiance_; }
   int lastIrradianceProjections() const { return lastProjections_; }
-  // Told just before (true) and after (false) each capture's prefilter pass, so that the caller
-  // can time it on its own clock (Demo's stats); unset (the default), nothing is called.
-  using PrefilterTiming = std::function<void(bool starting)>;
+  // Told just before (true) and after (false) each capture's prefilter pass and its irradiance
+  // projection, so that the caller can time them on its own clock (Demo's stats); unset (the
+  // default), nothing is called.
+  enum class AfterCapture { Prefilter, Irradiance };
+  using PrefilterTiming = std::function<void(AfterCapture stage, bool starting)>;
   void setPrefilterTiming(PrefilterTiming timing) { prefilterTiming_ = std::move(timing); }
   // Glass interior maps made so far (one per non-sphere glass mesh in use), for tests.
   size_t glassInteriorMaps() const { return glass_.count(); }

@@ -86,7 +86,7 @@ struct ReferenceOptions {
   int lobeSamples = 512;
   // Rays a probe-lit object's pixel averages its diffuse light over (cosine-weighted); its noise
   // is measured as the lobes' is (docs/rough.md, "Diffuse light from the probe").
-  int diffuseSamples = 1024;
+  int diffuseSamples = 4096;
   uint32_t seed = 1;
   int threads = 0;  // <= 0: std::thread::hardware_concurrency()
 };

@@ -55,7 +55,7 @@ struct Tracer {
   // Per object: its lobe's albedo (rough mirrors; the others' are empty).
   std::vector<LobeAlbedoTable> lobeAlbedos;
   // Probe-lit objects: the cosine-weighted rays their diffuse light averages.
-  int diffuseSamples = 1024;
+  int diffuseSamples = 4096;  // ReferenceOptions's
 
   // What a ray sees where it meets nothing: the sky along it, or the clear colour.
   glm::vec3 background(const glm::vec3& dir) const;

@@ -70,16 +70,39 @@ TEST(ProbeLightPlanning, ATracedReflectorsProbeStaysCapturedForItsReaders) {
 
 TEST(ProbeLightPlanning, IrradianceIsProjectedOnlyWhenAFaceWasRedrawn) {
   FramePlanner planner;
-  std::vector<PlannedObject> lit{mirrorAt({0, 0, 0}, 0.0f), litBoxAt({3, 0, 0})};
+  std::vector<PlannedObject> lit{mirrorAt({0, 0, 0}, 0.0f), litBoxAt({3, 0, 0}), boxAt({0, 0, 3})};
   EXPECT_TRUE(planner.plan(lit, searching(Search::Exact), {}).probes[0].projectIrradiance);
   const FramePlan still = planner.plan(lit, searching(Search::Exact), {});
   ASSERT_EQ(still.probes.size(), 1u);
   EXPECT_TRUE(still.probes[0].faces.empty());
   EXPECT_FALSE(still.probes[0].projectIrradiance);
-  lit[1].model = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 3));  // the reader moves
+  // The reader is not in the probe it reads: moving it redraws nothing.
+  lit[1].model = glm::translate(glm::mat4(1.0f), glm::vec3(3, 1, 0));
+  EXPECT_FALSE(planner.plan(lit, searching(Search::Exact), {}).probes[0].projectIrradiance);
+  lit[2].model = glm::translate(glm::mat4(1.0f), glm::vec3(0, 1, 3));  // what it sees moves
   const FramePlan moved = planner.plan(lit, searching(Search::Exact), {});
   EXPECT_FALSE(moved.probes[0].faces.empty());
   EXPECT_TRUE(moved.probes[0].projectIrradiance);
+}
+
+TEST(ProbeLightPlanning, AnObjectsOwnProbeIsSmallAndLeavesItOut) {
+  FramePlanner planner;
+  PlannedObject own = litBoxAt({3, 0, 0});
+  own.ownsLightProbe = true;
+  const FramePlan plan = planner.plan({mirrorAt({0, 0, 0}, 0.0f), own, boxAt({3, 0, 3})},
+                                      searching(Search::Exact), {});
+  ASSERT_EQ(plan.probes.size(), 1u);  // the mirror is traced and has no reader
+  const ProbePlan& probe = plan.probes[0];
+  EXPECT_EQ(probe.reflector, 1);
+  EXPECT_EQ(probe.diffuseReaders, std::vector<int>{1});
+  EXPECT_TRUE(probe.lightOnly);
+  EXPECT_EQ(probe.faceSize, kIrradianceFaceSize);
+  EXPECT_EQ(probe.centre, glm::vec3(3, 0, 0));
+  for (const FacePlan& face : probe.faces) {
+    for (const DrawItem& d : face.draws) EXPECT_NE(d.object, 1);  // never itself
+  }
+  EXPECT_EQ(plan.probeOf(1), nullptr);
+  EXPECT_EQ(plan.irradianceOf(1), &probe);
 }
 
 TEST(ProbeLightPlanning, TheCostOfATraceCountsTheCaptureItsReadersKeep) {
@@ -105,8 +128,11 @@ TEST(ProbeLightScene, AmbientKeyAndItsErrors) {
   EXPECT_FALSE(ok.value().objects[0].probeLit());
   EXPECT_TRUE(ok.value().objects[1].probeLit());
   EXPECT_EQ(ok.value().objects[2].ambient, Ambient::Constant);
+  Result<Scene> own = parse(R"({"mesh": "a.obj", "ambient": "own-probe"})");
+  ASSERT_TRUE(own) << own.error();  // its own probe is the live probe it reads
+  EXPECT_TRUE(own.value().objects[0].ownsLightProbe());
   EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": "sky"})").error(),
-            "lit.json: objects[0].ambient: expected \"constant\" or \"probe\"");
+            "lit.json: objects[0].ambient: expected \"constant\", \"probe\" or \"own-probe\"");
   EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": 1})").error(),
             "lit.json: objects[0].ambient: expected a string");
   EXPECT_EQ(
