@@ -66,6 +66,9 @@ const PEER_PAGES = [
   // The scene file --scene names (sceneFile); without --scene it runs only when --pages names it.
   { key: 'pmrem', label: 'three.js CubeCamera + PMREM', path: 'peers/index.html', query: 'rendition=pmrem', peer: true,
     sceneFile: true },
+  // Probe-lit figures (scene files with "ambient"): a CubeCamera and LightProbeGenerator a figure.
+  { key: 'probelit', label: 'three.js CubeCamera + LightProbeGenerator', path: 'peers/index.html',
+    query: 'rendition=probelit', peer: true, sceneFile: true },
 ];
 // With --against DIR, another build of the project's page (e.g. the last landing's
 // build/web/site) is served under base/ and its configurations join as base-KEY.

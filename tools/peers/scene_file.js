@@ -25,7 +25,7 @@ function placementOf(o) {
 }
 
 // One object: { mesh, placement, colour, motion: null | { orbit, axis, degreesPerSecond },
-// mirror: null | { reflection, base, roughness } }.
+// mirror: null | { reflection, base, roughness }, ambient: 'constant' | 'probe' | 'own-probe' }.
 function objectOf(o, index) {
   const where = `objects[${index}] (${o.mesh})`;
   const material = typeof o.material === 'string' ? { type: o.material } : o.material || { type: 'phong' };
@@ -44,6 +44,7 @@ function objectOf(o, index) {
     motion: a ? { orbit: a.type === 'orbit', axis: new Vector3(...(a.axis || [0, 1, 0])).normalize(),
                   degreesPerSecond: a.degreesPerSecond ?? 27 } : null,
     mirror: material.type === 'mirror' ? { ...DEFAULTS.mirror, ...material } : null,
+    ambient: o.ambient || 'constant',
   };
 }
 
