@@ -69,6 +69,9 @@ const PEER_PAGES = [
   // Probe-lit figures (scene files with "ambient"): a CubeCamera and LightProbeGenerator a figure.
   { key: 'probelit', label: 'three.js CubeCamera + LightProbeGenerator', path: 'peers/index.html',
     query: 'rendition=probelit', peer: true, sceneFile: true },
+  // Frosted glass (scene files with glass): three's MeshPhysicalMaterial transmission.
+  { key: 'frosted', label: 'three.js MeshPhysicalMaterial transmission', path: 'peers/index.html',
+    query: 'rendition=frosted', peer: true, sceneFile: true },
 ];
 // With --against DIR, another build of the project's page (e.g. the last landing's
 // build/web/site) is served under base/ and its configurations join as base-KEY.

@@ -9,7 +9,8 @@ import { loadGeometry } from './scene.js';
 import { modelMatrixAt } from './scene_file.js';
 
 // `facts` from loadSceneFile; `prefix` the models' folder (a URL ending in '/');
-// `mirrorMaterialFor(fact, index)` the rendition's material for each mirror.
+// `mirrorMaterialFor(fact, index)` the rendition's material for each mirror (and glass, where the
+// file was read with glass: `mirrors` holds both).
 export async function buildFileWorld(facts, prefix, mirrorMaterialFor) {
   const names = [...new Set(facts.objects.map((o) => o.mesh))];
   const geometries = await Promise.all(names.map((n) => loadGeometry(new URL(n, prefix).href)));
@@ -20,14 +21,15 @@ export async function buildFileWorld(facts, prefix, mirrorMaterialFor) {
 
   const scene = new Scene();
   const objects = facts.objects.map((fact, index) => {
-    const material = fact.mirror ? mirrorMaterialFor(fact, index) : phongMaterial(fact.colour, facts.light);
+    const reflector = fact.mirror || fact.glass;
+    const material = reflector ? mirrorMaterialFor(fact, index) : phongMaterial(fact.colour, facts.light);
     const mesh = new Mesh(geometryOf.get(fact.mesh), material);
     mesh.fact = fact;
     mesh.matrixAutoUpdate = false;  // the file's model matrices, set by pose()
     scene.add(mesh);
     return mesh;
   });
-  const mirrors = objects.filter((mesh) => mesh.fact.mirror);
+  const mirrors = objects.filter((mesh) => mesh.fact.mirror || mesh.fact.glass);
   // The probe captures from the centre of the mirror's bounds, placed (as the project's
   // layoutProbes for a probe of one member).
   for (const mesh of mirrors) {

@@ -81,5 +81,7 @@ export function worldMaterial(fragmentShader, uniforms) {
 }
 
 export function setWorldNormalMatrix(mesh) {
+  // three's own materials (the frosted peer's glass) take their normals from three.
+  if (!mesh.material.uniforms?.worldNormalMatrix) return;
   mesh.material.uniforms.worldNormalMatrix.value.getNormalMatrix(mesh.matrixWorld);
 }

@@ -2,7 +2,8 @@
 // read into the numbers a peer draws, as src/core/scene_file.cpp reads it: placement
 // T * R * S, an orbit R(axis, rate t) * placement, a spin placement * R(axis, rate t), mirrors'
 // reflection, base and roughness with SceneObject's defaults. What the peers do not draw
-// (skyboxes, glass, cube-textured objects, shared probes, Fresnel) is refused, not ignored.
+// (skyboxes, cube-textured objects, shared probes, Fresnel mirrors; glass but for the frosted
+// peer, which asks for it) is refused, not ignored.
 import { MathUtils, Matrix4, Vector3 } from 'three';
 
 const DEFAULTS = {
@@ -26,15 +27,16 @@ function placementOf(o) {
 
 // One object: { mesh, placement, colour, motion: null | { orbit, axis, degreesPerSecond },
 // mirror: null | { reflection, base, roughness }, ambient: 'constant' | 'probe' | 'own-probe' }.
-function objectOf(o, index) {
+function objectOf(o, index, acceptGlass) {
   const where = `objects[${index}] (${o.mesh})`;
   const material = typeof o.material === 'string' ? { type: o.material } : o.material || { type: 'phong' };
-  if (material.type !== 'phong' && material.type !== 'mirror') {
+  const glass = material.type === 'glass' && acceptGlass;
+  if (material.type !== 'phong' && material.type !== 'mirror' && !glass) {
     throw new Error(`${where}: a ${material.type} material is not drawn by the peers`);
   }
   if (o.probe !== undefined || o.probeCentre !== undefined) throw new Error(`${where}: shared or placed probes are not drawn by the peers`);
-  if (material.fresnel || (material.environment && material.environment !== 'live')) {
-    throw new Error(`${where}: Fresnel and skybox environments are not drawn by the peers`);
+  if ((material.fresnel && !glass) || (material.environment && material.environment !== 'live')) {
+    throw new Error(`${where}: Fresnel mirrors and skybox environments are not drawn by the peers`);
   }
   const a = o.animation;
   return {
@@ -44,6 +46,7 @@ function objectOf(o, index) {
     motion: a ? { orbit: a.type === 'orbit', axis: new Vector3(...(a.axis || [0, 1, 0])).normalize(),
                   degreesPerSecond: a.degreesPerSecond ?? 27 } : null,
     mirror: material.type === 'mirror' ? { ...DEFAULTS.mirror, ...material } : null,
+    glass: glass ? { ior: 1.52, roughness: 0, fresnel: false, ...material } : null,
     ambient: o.ambient || 'constant',
   };
 }
@@ -58,7 +61,9 @@ export function modelMatrixAt(object, seconds, out) {
 }
 
 // { name, camera, light, background, capture, objects } from scenes/NAME.json.
-export async function loadSceneFile(name, base = new URL('../scenes/', import.meta.url)) {
+// `acceptGlass`: glass objects are read (as `glass`), not refused (the frosted peer).
+export async function loadSceneFile(name, base = new URL('../scenes/', import.meta.url),
+                                    acceptGlass = false) {
   const url = new URL(`${name}.json`, base);
   const response = await fetch(url);
   if (!response.ok) throw new Error(`${url}: ${response.status} ${response.statusText}`);
@@ -70,6 +75,6 @@ export async function loadSceneFile(name, base = new URL('../scenes/', import.me
     light: { ...DEFAULTS.light, ...file.light },
     background: file.background || DEFAULTS.background,
     capture: { ...DEFAULTS.capture, ...file.capture },
-    objects: file.objects.map(objectOf),
+    objects: file.objects.map((o, i) => objectOf(o, i, acceptGlass)),
   };
 }
