@@ -3,9 +3,11 @@
 // transmission 1, the file's index and roughness, thickness its diameter and a white colour (the
 // project's Fresnel glass takes no base colour), and no lights (the project's glass shows its
 // environment alone). Each frame:
-//   1. every sphere's CubeCamera, at its centre, draws the scene (that sphere hidden; the other
-//      spheres as they are) into its own RGBA8 cube of the file's capture face size, and one
-//      PMREMGenerator turns it into the sphere's envMap: its reflection, blurred by roughness;
+//   1. every sphere's CubeCamera, at its centre, draws the scene (every sphere hidden: a
+//      transmissive object in view makes three run its transmission pass for each cube face,
+//      which took SwiftShader's GPU process down) into its own RGBA8 cube of the file's capture
+//      face size, and one PMREMGenerator turns it into the sphere's envMap: its reflection,
+//      blurred by roughness;
 //   2. the main pass: three draws the opaque objects into its transmission target (mipmapped,
 //      from the main camera) and each sphere reads what it lets through from there, refracted by
 //      its index and thickness and blurred by its roughness: a screen-space refraction, not a
@@ -31,7 +33,7 @@ function glassMaterialFor(fact) {
   });
 }
 
-function makeProbe(mesh, capture, generator) {
+function makeProbe(mesh, capture, generator, glass) {
   const target = new WebGLCubeRenderTarget(capture.faceSize, {
     format: RGBAFormat, type: UnsignedByteType, minFilter: LinearFilter, magFilter: LinearFilter,
     generateMipmaps: false, depthBuffer: true,
@@ -41,9 +43,9 @@ function makeProbe(mesh, capture, generator) {
   return {
     capture(renderer, scene) {
       camera.position.copy(mesh.probeCentre);
-      mesh.visible = false;
+      for (const g of glass) g.visible = false;
       camera.update(renderer, scene);
-      mesh.visible = true;
+      for (const g of glass) g.visible = true;
     },
     prefilter() {
       const first = !pmrem;
@@ -61,7 +63,7 @@ startPeer({
   },
   makeRendition({ renderer, world }) {
     const generator = new PMREMGenerator(renderer);
-    const probes = world.mirrors.map((mesh) => makeProbe(mesh, world.capture, generator));
+    const probes = world.mirrors.map((mesh) => makeProbe(mesh, world.capture, generator, world.mirrors));
     return {
       draw(phase) {
         for (const probe of probes) probe.capture(renderer, world.scene);
