@@ -1,16 +1,14 @@
 // Rendition A: the course's method with three.js's own parts. Each frame a CubeCamera at the
 // sphere's centre draws the scene (the sphere hidden) into a 256-pixel RGBA8 cube, linear
 // filtering and no mipmaps, then the main pass looks the reflected view ray up in it.
-import { CubeCamera, LinearFilter, RGBAFormat, UnsignedByteType, Vector3, WebGLCubeRenderTarget } from 'three';
+import { CubeCamera, Vector3 } from 'three';
+import { captureTarget } from './capture_target.js';
 import { worldMaterial } from './phong.js';
 import { startPeer } from './peer_page.js';
 import { SCENE } from './scene_facts.js';
 
 const { capture, mirror } = SCENE;
-const target = new WebGLCubeRenderTarget(capture.faceSize, {
-  format: RGBAFormat, type: UnsignedByteType, minFilter: LinearFilter, magFilter: LinearFilter,
-  generateMipmaps: false, depthBuffer: true,
-});
+const target = captureTarget(capture.faceSize);
 
 // three's cube cameras (negative field of view) leave a render target's faces in GL's cube-map
 // convention, so the world direction is the lookup direction as it is: the x flip three applies

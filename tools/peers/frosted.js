@@ -14,8 +14,8 @@
 //      cube map or a ray through the sphere.
 // The nearest three.js has to the project's frosted glass, not the same model: its reflection and
 // transmission are three's physically based ones (GGX, split-sum DFG, Fresnel at the index).
-import { CubeCamera, LinearFilter, MeshPhysicalMaterial, PMREMGenerator, RGBAFormat,
-         UnsignedByteType, WebGLCubeRenderTarget } from 'three';
+import { CubeCamera, MeshPhysicalMaterial, PMREMGenerator } from 'three';
+import { captureTarget } from './capture_target.js';
 import { buildFileWorld } from './file_world.js';
 import { startPeer } from './peer_page.js';
 import { loadSceneFile } from './scene_file.js';
@@ -34,10 +34,7 @@ function glassMaterialFor(fact) {
 }
 
 function makeProbe(mesh, capture, generator, glass) {
-  const target = new WebGLCubeRenderTarget(capture.faceSize, {
-    format: RGBAFormat, type: UnsignedByteType, minFilter: LinearFilter, magFilter: LinearFilter,
-    generateMipmaps: false, depthBuffer: true,
-  });
+  const target = captureTarget(capture.faceSize);
   const camera = new CubeCamera(capture.near, capture.far, target);
   let pmrem = null;
   return {

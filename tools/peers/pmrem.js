@@ -18,8 +18,8 @@
 // ShaderMaterial keeps three's prefilter and its level choice and nothing else of it.
 // ?mask draws the mirrors white (told apart by their green) and everything else black: the
 // reflector mask of tools/peer_bench.mjs --reference.
-import { CubeCamera, LinearFilter, PMREMGenerator, RGBAFormat, UnsignedByteType, Vector3,
-         WebGLCubeRenderTarget } from 'three';
+import { CubeCamera, PMREMGenerator, Vector3 } from 'three';
+import { captureTarget } from './capture_target.js';
 import { buildFileWorld } from './file_world.js';
 import { worldMaterial } from './phong.js';
 import { startPeer } from './peer_page.js';
@@ -83,10 +83,7 @@ function mirrorMaterialFor(facts) {
 
 // One mirror's probe: its cube, its camera and its PMREM.
 function makeProbe(mesh, capture, generator) {
-  const target = new WebGLCubeRenderTarget(capture.faceSize, {
-    format: RGBAFormat, type: UnsignedByteType, minFilter: LinearFilter, magFilter: LinearFilter,
-    generateMipmaps: false, depthBuffer: true,
-  });
+  const target = captureTarget(capture.faceSize);
   const camera = new CubeCamera(capture.near, capture.far, target);
   let pmrem = null;
   return {

@@ -17,8 +17,8 @@
 //      shaders/irradiance.glsl term by term.
 // Not MeshLambertMaterial + LightProbe: three's lights would bring its own Phong and light units;
 // this ShaderMaterial keeps three's capture and projection and the project's Phong.
-import { CubeCamera, LinearFilter, RGBAFormat, SphericalHarmonics3, UnsignedByteType, Vector3,
-         WebGLCubeRenderTarget } from 'three';
+import { CubeCamera, SphericalHarmonics3, Vector3 } from 'three';
+import { captureTarget } from './capture_target.js';
 import { buildFileWorld } from './file_world.js';
 import { phongGlsl, phongMaterial, worldMaterial } from './phong.js';
 import { startPeer } from './peer_page.js';
@@ -28,10 +28,6 @@ const params = new URLSearchParams(location.search);
 const sceneName = params.get('scene') || 'probe-lit';
 const OWN_PROBE_FACE = 32;  // core/irradiance.h kIrradianceFaceSize
 
-const cubeTarget = (size) => new WebGLCubeRenderTarget(size, {
-  format: RGBAFormat, type: UnsignedByteType, minFilter: LinearFilter, magFilter: LinearFilter,
-  generateMipmaps: false, depthBuffer: true,
-});
 
 const MIRROR_FRAGMENT_GLSL = /* glsl */`
 uniform vec3 eye;
@@ -145,11 +141,11 @@ startPeer({
       });
       mesh.material = mesh.litMaterial;
       const size = mesh.fact.ambient === 'own-probe' ? OWN_PROBE_FACE : capture.faceSize;
-      mesh.probeTarget = cubeTarget(size);
+      mesh.probeTarget = captureTarget(size);
       mesh.probeCamera = new CubeCamera(capture.near, capture.far, mesh.probeTarget);
     }
     const mirrorProbes = world.mirrors.map((mesh) => {
-      const target = cubeTarget(capture.faceSize);
+      const target = captureTarget(capture.faceSize);
       mesh.material.uniforms.environment.value = target.texture;
       return { mesh, target, camera: new CubeCamera(capture.near, capture.far, target) };
     });
