@@ -47,20 +47,28 @@ vec3 surfaceColour(vec3 p, int layer) {
 }
 #endif
 
-// The colour the environment shows for the ray from world point `origin` along `d`, and in
-// `direction` the direction it was looked up along.
-vec3 environmentAlong(vec3 origin, vec3 d, out vec3 direction) {
+// The colour the environment shows for the ray from world point `origin` along `d`; in
+// `direction` the direction it was looked up along, and in `hitDistance` how far from `origin`
+// the search met a stored surface (world units; -1 where it met none or does not search).
+vec3 environmentMet(vec3 origin, vec3 d, out vec3 direction, out float hitDistance) {
   direction = d;
+  hitDistance = -1.0;
 #if SEARCH == SEARCH_LINEAR
   direction = linearSearch(origin, d);
 #elif SEARCH == SEARCH_HIERARCHICAL
   SearchResult found = searchDepths((origin - u_probeCentre) / u_distanceUnit, d);
   if (found.layer != 0) {
     direction = found.point;
+    hitDistance = length(u_probeCentre + found.point * u_distanceUnit - origin);
     return surfaceColour(found.point, found.layer);
   }
 #endif
   return texture(u_environment, direction).rgb;
+}
+
+vec3 environmentAlong(vec3 origin, vec3 d, out vec3 direction) {
+  float hitDistance;
+  return environmentMet(origin, d, direction, hitDistance);
 }
 
 // Glass seen through both surfaces: the refracted ray crosses the sphere and leaves it at the
@@ -85,7 +93,122 @@ void leaveGlassSphere(inout vec3 origin, inout vec3 d) {
   }
 }
 
-#if ROUGH == 1
+#if ROUGH == 1 && ROUGH_TAPS == 1
+// Rough mirrors and frosted glass reading a live probe (docs/rough.md, "Lobe taps"): the lobe is
+// sampled where the pixel sees it, for its real view, from the capture's own box chain.
+uniform samplerCube u_lobeSource;  // the probe's colour cube with its box chain, read trilinearly
+uniform int u_lobeTaps;            // AccuracySettings::lobeTaps
+uniform float u_refractAlpha;      // rough glass: the light through's lobe alpha (core/ggx.h
+                                   // transmissionRoughness, squared)
+
+// The taps read a level this much finer than their share of the lobe covers: the box chain's
+// texels are wider than a GGX tap's footprint (measured on rough-spheres at t = 1.5 and 3.5 s,
+// 16 taps: -1, -0.5, -0.25, 0, 0.5, 1 and 1.5 tried; -0.5 best at roughness 0.75 and 1, within
+// 0.2 dB of the best elsewhere).
+const float kLobeTapLodBias = -0.5;
+// One tap for a whole lobe of alpha reads level log2(faceTexels alpha sqrt(6)): there a texel's
+// solid angle, 4 pi / (6 faceTexels^2), is the lobe's at its peak, 1 / pdf(h = n) = 4 pi alpha^2.
+const float kLobeWidthTexels = 2.449;
+
+// The lobe of alpha around normal n, seen from direction v, at world point `origin`: sum(w L) /
+// sum(w) over u_lobeTaps fixed Hammersley half vectors (core/ggx.h's weights, as the exact mode's
+// lobe rays and the reference), each tap read from the box chain at the level whose texel covers
+// its share of the lobe, 1 / (taps pdf) (filtered importance sampling). `hitDistance` (world
+// units; <= 0: nothing met) is how far the search's central ray went: every tap is taken to
+// meet the scene as far from `origin`, so it is looked up from the probe centre towards that
+// point, and its footprint shrinks as the probe centre sees it from farther away.
+vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, float hitDistance) {
+  float faceTexels = float(textureSize(u_lobeSource, 0).x);
+  float texelSolidAngle = 4.0 * kGgxPi / (6.0 * faceTexels * faceTexels);
+  float nDotV = max(dot(n, v), 0.0);
+  mat3 frame = frameAround(n);
+  vec3 offset = origin - u_probeCentre;
+  float a2 = alpha * alpha;
+  uint taps = uint(max(u_lobeTaps, 1));
+  vec3 sum = vec3(0.0);
+  float weights = 0.0;
+  for (uint k = 0u; k < taps; ++k) {
+    vec2 u = hammersley(k, taps);
+    float phi = 2.0 * kGgxPi * u.x;
+    float nDotH = sqrt((1.0 - u.y) / (1.0 + (a2 - 1.0) * u.y));
+    float sinTheta = sqrt(max(1.0 - nDotH * nDotH, 0.0));
+    vec3 h = frame * vec3(sinTheta * cos(phi), sinTheta * sin(phi), nDotH);
+    vec3 l = reflect(-v, h);
+    float vDotH = dot(v, h);
+    float w = lobeSampleWeight(nDotV, dot(n, l), nDotH, vDotH, alpha);
+    if (w <= 0.0) continue;
+    // The tap's share of the lobe: its density is D (n.h) / (4 v.h) over directions l.
+    float share = 4.0 * vDotH / (float(taps) * ggxDistribution(nDotH, alpha) * nDotH);
+    vec3 towards = l;
+    if (hitDistance > 0.0) {
+      towards = offset + l * hitDistance;
+      share *= hitDistance * hitDistance / dot(towards, towards);
+    }
+    float lod = max(0.5 * log2(share / texelSolidAngle) + kLobeTapLodBias, 0.0);
+    sum += w * textureLod(u_lobeSource, towards, lod).rgb;
+    weights += w;
+  }
+  // No lobe above the surface (seen edge on): what the central ray met.
+  return weights > 0.0 ? sum / weights : textureLod(u_lobeSource, reflect(-v, n), 0.0).rgb;
+}
+
+// A rough reflector drawn into another probe's capture is a second bounce, seen small: one tap
+// along its lobe's dominant direction `d`, at the level the whole lobe covers.
+vec3 lobeSeenOnce(vec3 d, float alpha) {
+  float faceTexels = float(textureSize(u_lobeSource, 0).x);
+  return textureLod(u_lobeSource, d, log2(max(faceTexels * alpha * kLobeWidthTexels, 1.0))).rgb;
+}
+
+#if REFRACTS == 1 && CAPTURE_OUTPUT == 0
+// Frosted glass's light through (core/ggx.h says what it is): the mean, over u_lobeTaps of the
+// lobe's microfacet normals h around n (the Hammersley set), of what the view ray I refracted
+// through h sees once out of the object (its far side crossed as polished glass), each read from
+// the box chain at the level its share of the light through covers (transmissionRoughness's
+// lobe, split among the taps), towards where the central refracted ray's search met the scene
+// (hitDistance from the exit). A normal the ray cannot enter through is left out; none:
+// `central`, what the smooth surface's refracted ray sees.
+vec3 transmittedTaps(vec3 origin, vec3 I, vec3 n, float hitDistance, vec3 central) {
+  float faceTexels = float(textureSize(u_lobeSource, 0).x);
+  uint taps = uint(max(u_lobeTaps, 1));
+  float lod = log2(max(faceTexels * u_refractAlpha * kLobeWidthTexels, 1.0)) -
+              0.5 * log2(float(taps)) + kLobeTapLodBias;
+  mat3 frame = frameAround(n);
+  float a2 = u_roughAlpha * u_roughAlpha;
+  vec3 sum = vec3(0.0);
+  float rays = 0.0;
+  for (uint k = 0u; k < taps; ++k) {
+    vec2 u = hammersley(k, taps);
+    float phi = 2.0 * kGgxPi * u.x;
+    float nDotH = sqrt((1.0 - u.y) / (1.0 + (a2 - 1.0) * u.y));
+    float sinTheta = sqrt(max(1.0 - nDotH * nDotH, 0.0));
+    vec3 h = frame * vec3(sinTheta * cos(phi), sinTheta * sin(phi), nDotH);
+    vec3 t = refract(I, h, u_eta);
+    if (dot(t, t) == 0.0 || dot(t, n) >= 0.0) continue;
+    t = normalize(t);
+    vec3 exitPoint = origin;
+#if GLASS_EXIT == 1
+    if (u_twoSurfaces == 1) leaveGlassMesh(exitPoint, t);
+#else
+    if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, t);
+#endif
+    vec3 towards = hitDistance > 0.0 ? exitPoint - u_probeCentre + t * hitDistance : t;
+    sum += textureLod(u_lobeSource, towards, max(lod, 0.0)).rgb;
+    rays += 1.0;
+  }
+  return rays > 0.0 ? sum / rays : central;
+}
+#endif
+
+// What a rough surface at `origin` with normal n, seen from the view direction v, reflects (R:
+// its lobe's dominant direction; hitDistance: how far the search's ray along R went).
+vec3 roughReflected(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, float hitDistance) {
+#if CAPTURE_OUTPUT == 1
+  return lobeSeenOnce(R, alpha);
+#else
+  return lobeSeen(origin, n, v, alpha, hitDistance);
+#endif
+}
+#elif ROUGH == 1
 uniform samplerCube u_prefiltered;  // the probe's rough levels (gfx/probe_prefilter.h)
 uniform float u_roughLod;    // roughness x roughLevels: the rough level the reflection reads
 uniform float u_refractLod;  // rough glass: the level the light through reads (core/ggx.h
@@ -107,8 +230,14 @@ vec3 roughSeen(vec3 sharp, vec3 centre, float lod) {
 // The mirror's reflected ray from `origin` along `R`: what it sees, and in `measured` the
 // direction it was looked up along.
 vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
-  vec3 seen = environmentAlong(origin, R, measured);
-#if ROUGH == 1
+  float hitDistance;
+  vec3 seen = environmentMet(origin, R, measured, hitDistance);
+#if ROUGH == 1 && ROUGH_TAPS == 1
+  vec3 v = normalize(u_viewPosition - origin);
+  vec3 n = normalize(v_worldNormal);
+  if (dot(n, v) < 0.0) n = -n;  // both sides of a triangle are shaded alike
+  seen = roughReflected(origin, n, v, R, u_roughAlpha, hitDistance);
+#elif ROUGH == 1
   seen = roughSeen(seen, measured, u_roughLod);
 #endif
   return seen;
@@ -118,16 +247,20 @@ vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
 // reflected ray sees, and what the refracted one sees once out of the object (the reflected
 // one's at total internal reflection, where all the light is reflected: a zero vector is no
 // direction to look a cube map up along). `measured`: the direction of the last lookup. Rough
-// (frosted) glass reads both from the prefiltered levels: the reflection as a rough mirror's, the
-// light through around the ray refracted by the smooth surface, at its own, narrower level.
+// (frosted) glass blurs both: the reflection as a rough mirror's, the light through around the
+// ray refracted by the smooth surface, narrower (core/ggx.h transmissionRoughness); from lobe taps
+// (the light through as a lobe seen along its own axis) or from the prefiltered levels.
 void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 reflected,
                       out vec3 refracted, out vec3 measured) {
   vec3 R = reflect(I, N);
 #if ROUGH == 1
   R = specularDominantDirection(N, R, u_roughAlpha);
 #endif
-  reflected = environmentAlong(origin, R, measured);
-#if ROUGH == 1
+  float hitDistance;
+  reflected = environmentMet(origin, R, measured, hitDistance);
+#if ROUGH == 1 && ROUGH_TAPS == 1
+  reflected = roughReflected(origin, N, -I, R, u_roughAlpha, hitDistance);
+#elif ROUGH == 1
   reflected = roughSeen(reflected, measured, u_roughLod);
 #endif
   refracted = reflected;
@@ -138,8 +271,12 @@ void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 
 #else
   if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, T);
 #endif
-  refracted = environmentAlong(exitPoint, T, measured);
-#if ROUGH == 1
+  refracted = environmentMet(exitPoint, T, measured, hitDistance);
+#if ROUGH == 1 && ROUGH_TAPS == 1 && CAPTURE_OUTPUT == 1
+  refracted = lobeSeenOnce(T, u_refractAlpha);
+#elif ROUGH == 1 && ROUGH_TAPS == 1
+  refracted = transmittedTaps(origin, I, N, hitDistance, refracted);
+#elif ROUGH == 1
   refracted = roughSeen(refracted, measured, u_refractLod);
 #endif
 }

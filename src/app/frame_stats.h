@@ -10,8 +10,9 @@ namespace reflect {
 struct FrameStats {
   double frameMs = 0;    // capture + main pass
   double captureMs = 0;  // the planned cube faces (and the rough levels filtered after them)
-  // Rough mirrors' prefilter pass, part of captureMs: GGX samples taken (texels x samples) and,
-  // when the frame waits for the GPU (timing "gpu-finish"), its own time.
+  // Rough mirrors' filtering, part of captureMs: the prefilter pass's GGX samples taken (texels x
+  // samples) and, when the frame waits for the GPU (timing "gpu-finish"), the time of that pass
+  // and of the box chains the lobe taps read.
   double filterSamples = 0;
   double filterMs = 0;
   // Probe-lit objects' irradiance, part of captureMs: probes projected, and (timing "gpu-finish")

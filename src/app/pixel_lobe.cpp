@@ -74,6 +74,13 @@ std::string howRead(const LobeExplanation& lobe) {
           "  lobe: traced with %d lobe rays (lobeRays) around the reflected ray, each weighed "
           "by the GGX reflectance (search: exact, or planned found tracing cheaper)",
           lobe.lobeRays);
+    case Source::LobeTaps:
+      return formatLine(
+          "  lobe: %d lobe taps (lobeTaps) around the reflected ray for this view, each weighed "
+          "by the GGX reflectance and read from the probe's capture (%dx%d faces, its box chain) "
+          "at the level its share of the lobe covers, towards where the search's ray met the "
+          "scene",
+          lobe.lobeTaps, lobe.tapFaceSize, lobe.tapFaceSize);
     case Source::PrefilteredSky:
       return formatLine(
                  "  lobe: read from the static skybox's prefiltered levels (filtered once): "
@@ -111,7 +118,14 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
     lobe.source = LobeExplanation::Source::Traced;
   } else if (o.environment == Environment::Skybox) {
     readPrefilteredSky(demo, lobe);
-  } else if (const ProbePlan* probe = demo.lastPlan().probeOf(object)) {
+  } else if (const ProbePlan* probe = demo.lastPlan().probeOf(object);
+             probe && probe->lobeTapReaders) {
+    const CubeCaptureTarget* target =
+        demo.renderer() ? demo.renderer()->probeTarget(probe->reflector) : nullptr;
+    lobe.source = target ? LobeExplanation::Source::LobeTaps : LobeExplanation::Source::NotFiltered;
+    lobe.lobeTaps = demo.accuracySettings().lobeTaps;
+    lobe.tapFaceSize = target ? target->faceSize() : 0;
+  } else if (probe) {
     readPrefiltered(demo, *probe, lobe);
   } else {
     lobe.source = LobeExplanation::Source::NotFiltered;
@@ -141,6 +155,12 @@ std::vector<std::string> lobeLines(const LobeExplanation& lobe, bool raysShown) 
         "  light through: read around the refracted ray at level %.2f (transmission roughness "
         "%.2f x %d levels: core/ggx.h transmissionRoughness)",
         lobe.throughLevel, lobe.throughRoughness, lobe.usableLevels));
+  }
+  if (lobe.glass && lobe.source == LobeExplanation::Source::LobeTaps) {
+    lines.push_back(formatLine(
+        "  light through: %d lobe taps of its own, around the refracted ray (alpha %.4f: "
+        "transmission roughness %.2f squared, core/ggx.h transmissionRoughness)",
+        lobe.lobeTaps, lobe.throughRoughness * lobe.throughRoughness, lobe.throughRoughness));
   }
   if (lobe.glass && lobe.source == LobeExplanation::Source::Traced) {
     lines.push_back(formatLine(

@@ -1,7 +1,7 @@
 // Pick a pixel on a rough mirror or frosted glass (docs/rough.md): which GGX lobe the pixel
-// averages and how the frame drew it: read from the probe's prefiltered levels (which two, at what
-// face sizes) or traced with lobe rays; a reader of the static skybox from the sky's own
-// prefiltered levels. The explanation's rays and
+// averages and how the frame drew it: sampled with lobe taps from the probe's capture, read from
+// its prefiltered levels (which two, at what face sizes) or traced with lobe rays; a reader of the
+// static skybox from the sky's own prefiltered levels. The explanation's rays and
 // lookups follow the lobe's centre (the reflected ray); these lines say what lies around it. The
 // facts are the renderer's own: the accuracy settings, the frame plan and the probe's cube as
 // captured.
@@ -22,6 +22,7 @@ struct LobeExplanation {
     Traced,          // traced with lobeRays rays (search: exact, or planned found tracing cheaper)
     NotFiltered,     // a probe without the levels this roughness reads (none captured this frame)
     PrefilteredSky,  // read from the static skybox's prefiltered levels (environment: skybox)
+    LobeTaps,        // sampled with lobeTaps taps from the probe's capture (its box chain)
   };
   Source source = Source::None;
   float roughness = 0.0f;
@@ -34,6 +35,8 @@ struct LobeExplanation {
   int lowerFaceSize = 0;
   int upperFaceSize = 0;
   int lobeRays = 0;  // traced: AccuracySettings::lobeRays
+  int lobeTaps = 0;  // lobe taps: AccuracySettings::lobeTaps, from faces of tapFaceSize
+  int tapFaceSize = 0;
   // Frosted glass: the light through it is a lobe too, read prefiltered at its own level
   // (transmissionRoughness x usableLevels, as the renderer's u_refractLod).
   bool glass = false;

@@ -28,7 +28,8 @@ void printFilterCosts(const std::vector<SweepRow>& rows) {
     if (r.filterMs <= 0.0) continue;
     if (!header) {
       std::printf(
-          "\nprefilter pass (medians a frame; the capture without it is the same faces):\n"
+          "\nfiltering: the prefilter pass, or the box chains lobe taps read (medians a frame; the "
+          "capture without it is the same faces):\n"
           "setting | capture ms (faces) | filter ms | filter / capture\n");
       header = true;
     }

@@ -17,18 +17,27 @@ namespace reflect {
 namespace {
 
 // Rough mirrors (the rough-spheres scene; docs/rough.md): one knob at a time around the default,
-// at the scene's own face size: the prefilter's samples, its levels, the face size, and the
-// traced lobe's rays (the exact mode) against the prefiltered probe.
+// at the scene's own face size: the lobe taps; the prefiltered levels instead (the split sum, the
+// default before lobe taps), with their samples and levels; the face size; and the traced lobe's
+// rays (the exact mode).
 void appendRoughSettings(std::vector<SweepSetting>& s) {
   const AccuracySettings shipped;
   s.push_back({"rough-default", shipped, 0});
-  for (int n : {4, 8, 16, 64, 128}) {
+  for (int n : {4, 8, 32}) {
     AccuracySettings a = shipped;
+    a.lobeTaps = n;
+    s.push_back({"rough-taps-" + std::to_string(n), a, 0});
+  }
+  AccuracySettings prefiltered = shipped;
+  prefiltered.lobeTaps = 0;
+  s.push_back({"rough-prefiltered", prefiltered, 0});
+  for (int n : {4, 8, 16, 64, 128}) {
+    AccuracySettings a = prefiltered;
     a.filterSamples = n;
     s.push_back({"rough-samples-" + std::to_string(n), a, 0});
   }
   for (int n : {1, 2, 3, 8}) {
-    AccuracySettings a = shipped;
+    AccuracySettings a = prefiltered;
     a.roughLevels = n;
     s.push_back({"rough-levels-" + std::to_string(n), a, 0});
   }

@@ -38,6 +38,7 @@ std::string AccuracySettings::describe() const {
   s += mediump ? ", mediump" : ", highp";
   // Rough mirrors' knobs, where they differ from the defaults (most scenes have no rough mirror).
   const AccuracySettings defaults;
+  if (lobeTaps != defaults.lobeTaps) s += ", lobe taps " + std::to_string(lobeTaps);
   if (filterSamples != defaults.filterSamples) {
     s += ", filter samples " + std::to_string(filterSamples);
   }

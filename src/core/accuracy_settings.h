@@ -53,9 +53,12 @@ struct AccuracySettings {
   bool mipmaps = false;    // trilinear lookup from a mip chain rebuilt after each capture
   bool halfFloat = false;  // RGBA16F capture colour instead of RGBA8
   bool mediump = false;    // fragment shaders at mediump instead of highp
-  // Rough mirrors (core/ggx.h, docs/rough.md): the prefilter pass's GGX samples per texel, the
-  // number of prefiltered mip levels (level m holds roughness m / roughLevels), and the fixed
-  // lobe rays a traced pixel casts.
+  // Rough mirrors (core/ggx.h, docs/rough.md): the lobe taps a pixel of a captured rough mirror
+  // or frosted glass reads from its probe's box chain (0: the prefiltered levels instead, the split
+  // sum, which the static sky's readers always read); the prefilter pass's GGX samples per
+  // texel, the number of prefiltered mip levels (level m holds roughness m / roughLevels), and
+  // the fixed lobe rays a traced pixel casts.
+  int lobeTaps = 16;
   int filterSamples = 32;
   int roughLevels = 5;
   int lobeRays = 16;

@@ -24,6 +24,7 @@ void keepColoursOnly(ProbePlan& probe, const std::vector<PlannedObject>& objects
   probe.layers = 1;
   probe.plainLookupSuffices = true;
   probe.roughLevels.clear();
+  probe.lobeTapReaders = false;
   if (objects[static_cast<size_t>(probe.reflector)].ownsLightProbe) {
     probe.faceSize = kIrradianceFaceSize;
   }
@@ -55,6 +56,7 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
     ProbePlan& laid = plan.probes.back();
     planner::decideStorage(laid, objects, context);
     laid.roughLevels = planner::roughLevelsOf(laid, objects, context);
+    laid.lobeTapReaders = planner::readsLobeTaps(laid, objects, context);
     laid.filterFaces = 0;  // which levels there are; nothing is filtered here
     if (objects[static_cast<size_t>(laid.reflector)].ownsLightProbe) keepColoursOnly(laid, objects);
   }
@@ -237,6 +239,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   for (ProbePlan& probe : planner::probesWithReaders(objects)) {
     planner::decideStorage(probe, objects, context);
     probe.roughLevels = planner::roughLevelsOf(probe, objects, context);
+    probe.lobeTapReaders = planner::readsLobeTaps(probe, objects, context);
     const bool own = objects[static_cast<size_t>(probe.reflector)].ownsLightProbe;
     if (own) keepColoursOnly(probe, objects);
     ProbeMemory& memory = memoryOf(probe.reflector);

@@ -137,6 +137,9 @@ struct ProbePlan : ProbeLayout {
   // face edges) or the levels needed changed, else none.
   std::vector<int> roughLevels{};
   unsigned filterFaces = 0;
+  // Rough readers that sample their lobes from the capture itself (AccuracySettings::lobeTaps):
+  // the probe keeps its colours' box chain, and has no prefiltered levels.
+  bool lobeTapReaders = false;
   // Diffuse light (Ambient::Probe): the probe-lit objects nearest this probe, which take their
   // ambient from its irradiance (nearestProbe, core/probe_layout.h), and whether that irradiance
   // is projected again this frame (it has readers and a face was redrawn).

@@ -64,6 +64,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
   c.capture.texels *= share;
   c.capture.pixels = probe.plainLookupSuffices ? 0.0 : c.trace.pixels;
   c.trace.lobeRays = context.accuracy.lobeRays;
+  if (probe.lobeTapReaders) c.capture.lobeTaps = c.trace.lobePixels * context.accuracy.lobeTaps;
   if (c.capture.faces > 0.0) {
     c.capture.filterSamples = share * planner::filterSamplesFor(probe.roughLevels, context.faceSize,
                                                                 context.accuracy.filterSamples);
@@ -77,6 +78,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
     if (colours.faces > 0.0) colours.texels = colours.faces * texels;
     colours.pixels = 0.0;
     colours.filterSamples = 0.0;
+    colours.lobeTaps = 0.0;
     c.traceMs += captureCost(colours, costs_);
   }
   return c;

@@ -37,6 +37,9 @@ MethodCosts MethodCosts::softwareRenderer() {
   // probes (128-texel faces, 32 samples; `reflect bench --sweep --scene rough-spheres`, its
   // filter table; docs/bench/sweep-rough.txt).
   c.filterSample = 3.6e-5;
+  // A lobe tap is the same trilinear cube read and GGX weight as a filter sample, paid per
+  // pixel instead of per texel.
+  c.lobeTap = 3.6e-5;
   return c;
 }
 
@@ -49,7 +52,8 @@ double traceCost(const TraceWork& work, const MethodCosts& costs) {
 
 double captureCost(const CaptureWork& work, const MethodCosts& costs) {
   return work.faces * costs.face + work.triangles * costs.triangle + work.texels * costs.texel +
-         work.pixels * costs.searchPixel + work.filterSamples * costs.filterSample;
+         work.pixels * costs.searchPixel + work.filterSamples * costs.filterSample +
+         work.lobeTaps * costs.lobeTap;
 }
 
 Method chooseMethod(double trace, double capture, Method current, const MethodCosts& costs) {

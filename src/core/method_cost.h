@@ -36,6 +36,8 @@ struct CaptureWork {
   // Rough readers: the prefilter pass's texels times its samples a frame (all six faces of each
   // level kept, when a face was redrawn).
   double filterSamples = 0.0;
+  // Rough readers with lobe taps: their pixels times the taps each reads a frame.
+  double lobeTaps = 0.0;
 };
 
 struct MethodCosts {
@@ -47,6 +49,7 @@ struct MethodCosts {
   double texel = 0.0;            // ms per face texel drawn
   double searchPixel = 0.0;      // ms per mirror pixel's search
   double filterSample = 0.0;     // ms per filtered texel per GGX sample (the prefilter pass)
+  double lobeTap = 0.0;          // ms per lobe tap a rough pixel reads
   // Switch methods only when the other is cheaper by this factor, so a reflector near the
   // balance does not flip (and recapture) from frame to frame.
   double hysteresis = 1.2;

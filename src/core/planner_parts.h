@@ -60,7 +60,11 @@ inline bool faceStoresTwoLayers(int probeLayers, size_t shown, const CaptureCont
   return probeLayers == 2 && faceCanHide(shown, context);
 }
 
-// The prefiltered levels a probe's rough readers need (ProbePlan::roughLevels), sorted.
+// Whether a probe's rough readers sample their lobes from its capture (ProbePlan::lobeTapReaders).
+bool readsLobeTaps(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,
+                   const CaptureContext& context);
+// The prefiltered levels a probe's rough readers need (ProbePlan::roughLevels), sorted; none
+// where they take lobe taps.
 std::vector<int> roughLevelsOf(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,
                                const CaptureContext& context);
 

@@ -1,7 +1,9 @@
 // Which prefiltered levels a captured probe keeps for its rough readers, and when they are
 // filtered: the planner owns this decision as it owns the capture's. A probe read only by perfect
-// mirrors (or polished glass, or a cube-textured object) keeps no level and is never filtered.
-// The static skybox's rough readers get the sky's levels the same way, filtered once.
+// mirrors (or polished glass, or a cube-textured object) keeps no level and is never filtered;
+// nor is one whose rough readers take lobe taps from the capture itself (the default), which
+// keeps its box chain instead. The static skybox's rough readers get the sky's levels the same
+// way, filtered once.
 #include <algorithm>
 
 #include "core/frame_planner.h"
@@ -33,9 +35,18 @@ void addLevelsOf(const SceneObject::Look& look, int roughLevels, int faceSize,
 
 }  // namespace
 
+bool readsLobeTaps(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,
+                   const CaptureContext& context) {
+  return context.accuracy.lobeTaps > 0 &&
+         std::any_of(probe.members.begin(), probe.members.end(), [&](int m) {
+           return objects[static_cast<size_t>(m)].look.rough();
+         });
+}
+
 std::vector<int> roughLevelsOf(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,
                                const CaptureContext& context) {
   std::vector<int> levels;
+  if (context.accuracy.lobeTaps > 0) return levels;  // its readers sample the capture itself
   for (int m : probe.members) {
     addLevelsOf(objects[static_cast<size_t>(m)].look, context.accuracy.roughLevels,
                 context.faceSize, levels);

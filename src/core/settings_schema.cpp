@@ -241,6 +241,12 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
       {flag("mipmaps", "mipmaps", "trilinear lookup from a mip chain rebuilt after each capture"),
        [](const A& s) { return json(s.mipmaps); },
        [](A& s, const json& v) { s.mipmaps = v.get<bool>(); }},
+      {integer("lobeTaps", "lobe taps",
+               "rough mirrors and frosted glass, captured: the lobe samples each pixel reads from "
+               "the probe's box chain for its own view (0: the prefiltered levels instead)",
+               0, 64),
+       [](const A& s) { return json(s.lobeTaps); },
+       [](A& s, const json& v) { s.lobeTaps = v.get<int>(); }},
       {integer("filterSamples", "filter samples",
                "rough mirrors: GGX samples per texel of the probe's prefilter pass", 1,
                kMaxFilterSamples),

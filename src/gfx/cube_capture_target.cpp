@@ -199,13 +199,20 @@ void CubeCaptureTarget::finish(const DepthPyramidPrograms& programs, unsigned fa
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, topLevel_);
     glBindTexture(GL_TEXTURE_2D, 0);
   }
-  if (format_.mipmaps || format_.boxChain) {
+  if (format_.mipmaps) {
     for (int layer = 0; layer < format_.layers; ++layer) {
       glBindTexture(GL_TEXTURE_CUBE_MAP, colour_[static_cast<size_t>(layer)].id());
       glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
     }
     glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   }
+}
+
+void CubeCaptureTarget::buildBoxChain() const {
+  if (!format_.boxChain || format_.mipmaps) return;
+  glBindTexture(GL_TEXTURE_CUBE_MAP, colour_[0].id());
+  glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
 }
 
 }  // namespace reflect

@@ -32,8 +32,9 @@ struct CaptureFormat {
   bool halfFloat = false;
   int depthBits = 24;
   bool mipmaps = false;
-  // The colour mip chain is rebuilt after each capture for the irradiance projection
-  // (probe_irradiance.h) while lookups still read level 0 alone (LINEAR), unless `mipmaps`.
+  // The first layer's colour mip chain is rebuilt after each capture (buildBoxChain) for the
+  // irradiance projection (probe_irradiance.h) and lobe taps, which read it through samplers of
+  // their own, while lookups still read level 0 alone (LINEAR), unless `mipmaps`.
   bool boxChain = false;
   bool depthChain = false;  // the hierarchical search's depths and pyramids
   int layers = 1;           // 1 or 2 (a second layer needs the depths)
@@ -59,9 +60,11 @@ class CubeCaptureTarget {
   static void endBackPass();
   // After the faces are drawn: rebuilds the pyramid's tiles of the faces in `faces` (bit f for
   // face f: the faces drawn this frame; the others' tiles still bound their unchanged depths)
-  // from the layers' faces (and, for the first layer, the backs), then the colour mip chain when
-  // the format asks for one. Leaves the depth test off.
+  // from the layers' faces (and, for the first layer, the backs), then every layer's colour mip
+  // chain when the format asks for `mipmaps`. Leaves the depth test off.
   void finish(const DepthPyramidPrograms& programs, unsigned faces) const;
+  // The first layer's box chain (CaptureFormat::boxChain, where `mipmaps` has not built it).
+  void buildBoxChain() const;
 
   GLuint texture(int layer = 0) const { return colour_[static_cast<size_t>(layer)].id(); }
   GLuint faceDepths(int layer = 0) const { return faceDepths_[static_cast<size_t>(layer)].id(); }

@@ -40,6 +40,9 @@ ProgramKey EnvironmentBinding::keyFor(const Scene& scene, const FramePlan& plan,
   // pixel off by more than 32 levels a frame; tools/scene_accuracy.sh).
   const bool searches = pass.layer == 0 && searchesFor(scene, plan, item.object);
   key.search = searches ? capturedSearch(s_.accuracy.search) : Search::Plain;
+  // The static sky has no box chain: its rough readers read its prefiltered levels.
+  key.roughTaps = key.rough && s_.accuracy.lobeTaps > 0 &&
+                  object.environment != Environment::Skybox && plan.probeOf(item.object) != nullptr;
   key.glassExit = key.refracts && s_.glass.exitOf(object, plan.modelOf(item.object), s_.meshes,
                                                   s_.accuracy) != nullptr;
   return key;
@@ -125,7 +128,12 @@ void EnvironmentBinding::bind(const EnvironmentUniforms& u, const ProgramKey& ke
   bindTexture(kEnvironmentUnit, GL_TEXTURE_CUBE_MAP, t.colour);
   bindTexture(kEnvironment2Unit, GL_TEXTURE_CUBE_MAP, t.colour2 ? t.colour2 : t.colour);
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, t.pyramid);
-  if (key.rough) {
+  if (key.roughTaps) {
+    bindTexture(kLobeUnit, GL_TEXTURE_CUBE_MAP, t.colour);
+    u.lobeTaps.set(s_.accuracy.lobeTaps);
+    u.roughAlpha.set(ggxAlpha(object.roughness));
+    u.refractAlpha.set(ggxAlpha(transmissionRoughness(object.roughness, object.ior)));
+  } else if (key.rough) {
     bindTexture(kPrefilteredUnit, GL_TEXTURE_CUBE_MAP, t.prefiltered);
     const float levels =
         static_cast<float>(usableRoughLevels(s_.accuracy.roughLevels, t.filteredFaceSize));

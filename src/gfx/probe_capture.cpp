@@ -49,6 +49,12 @@ Result<ProbeCapture> ProbeCapture::create() {
   }
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, c.emptyPyramid_.id());
   glActiveTexture(GL_TEXTURE0);
+  c.lobeSampler_ = SamplerHandle(generateOne<glGenSamplers>());
+  glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindSampler(kLobeUnit, c.lobeSampler_.id());
   c.emptyVertexArray_ = VertexArrayHandle(genVertexArray());
   if (!checkGlError("create probe capture")) {
     return Result<ProbeCapture>::failure("GL error while creating the probe capture");
@@ -82,6 +88,13 @@ struct ProbeCapture::Job {
   bool stopAfterStep() { return afterStep != nullptr && !(*afterStep)(nextStep++); }
 };
 
+void ProbeCapture::buildBoxChains(const FramePlan& plan) const {
+  for (const ProbePlan& probe : plan.probes) {
+    if (probe.faces.empty()) continue;
+    if (const CubeCaptureTarget* t = target(probe.reflector)) t->buildBoxChain();
+  }
+}
+
 Result<CubeCaptureTarget*> ProbeCapture::targetFor(const Scene& scene, const ProbePlan& probe,
                                                    const AccuracySettings& accuracy) {
   // Depths only for a probe whose reflectors search them.
@@ -93,7 +106,8 @@ Result<CubeCaptureTarget*> ProbeCapture::targetFor(const Scene& scene, const Pro
                        false,
                        depths,
                        depths ? probe.layers : 1};
-  format.boxChain = !probe.diffuseReaders.empty();
+  // The chain of box-filtered mips: what irradiance projects and lobe taps read.
+  format.boxChain = !probe.diffuseReaders.empty() || probe.lobeTapReaders;
   auto target = targets_.find(probe.reflector);
   if (target == targets_.end() || !(target->second.format() == format)) {
     Result<CubeCaptureTarget> created = CubeCaptureTarget::create(format);

@@ -47,6 +47,9 @@ class ProbeCapture {
     bool finished = true;  // false: the step observer stopped it
   };
   Result<Outcome> capture(const CaptureRequest& request, const PassDrawer& drawer);
+  // After the captures: the box chain of each probe that has one and was redrawn this frame (the
+  // renderer times it with the filters: it is what the lobe taps read).
+  void buildBoxChains(const FramePlan& plan) const;
   // The cube captured for the probe owned by object `owner` (null before its first capture).
   const CubeCaptureTarget* target(int owner) const;
   // Bound to the pyramid unit where a reflector has no depth chain (environment_binding.h).
@@ -72,6 +75,7 @@ class ProbeCapture {
   // pass renders into (a feedback loop WebGL refuses to draw).
   TextureHandle emptyDepths_;
   TextureHandle emptyPyramid_;
+  SamplerHandle lobeSampler_;  // kLobeUnit's: the lobe taps read the box chain trilinearly
   VertexArrayHandle emptyVertexArray_;  // the reduction's fullscreen triangle has no attributes
 };
 

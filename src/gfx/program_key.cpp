@@ -46,6 +46,8 @@ std::string ProgramKey::defines() const {
   out += define("GLASS_EXIT", glassExit ? 1 : 0);
   out += define("EXACT_GENERAL", traceGeneral ? 1 : 0);
   out += define("ROUGH", rough ? 1 : 0);
+  out += define("ROUGH_TAPS", roughTaps ? 1 : 0);
+
   if (search == Search::Exact) {
     // The atlas's layout and the rays' limits, from the C++ that writes and checks them.
     out += define("EXACT_WIDTH_SHIFT", kBvhTextureWidthShift);
@@ -67,7 +69,7 @@ std::string ProgramKey::describe() const {
     if (refracts) s += ", refracts";
     if (glassExit) s += ", glass exit";
     if (traceGeneral) s += ", general";
-    if (rough) s += ", rough";
+    if (rough) s += roughTaps ? ", rough taps" : ", rough";
   }
   return s + ")";
 }

@@ -38,6 +38,9 @@ struct ProgramKey {
   // lobe, read from the probe's prefiltered levels or, traced, by lobe rays (ROUGH 1). Mirrors of
   // roughness 0 keep the program they had, so their pixels cannot change.
   bool rough = false;
+  // A rough reader of a live probe with lobe taps (AccuracySettings::lobeTaps > 0): it samples
+  // its lobe from the capture's box chain (ROUGH_TAPS 1), not from prefiltered levels.
+  bool roughTaps = false;
   // Phong in the main pass, a probe-lit object (SceneObject::probeLit): its ambient is its probe's
   // irradiance (AMBIENT_PROBE 1). Captures draw it with the constant ambient (one bounce).
   bool probeLight = false;

@@ -41,6 +41,7 @@ void setOnce(const EnvironmentUniforms& u, const ProgramKey& key) {
   u.environment2.set(kEnvironment2Unit);
   u.pyramid.set(kPyramidUnit);
   u.prefiltered.set(kPrefilteredUnit);
+  u.lobeSource.set(kLobeUnit);
   if (key.search == Search::Hierarchical) setFaceFrames(u);
   if (key.glassExit) u.glassExit.setUnits();
 }

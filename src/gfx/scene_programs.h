@@ -61,6 +61,8 @@ struct EnvironmentUniforms : UniformTable {
   Uniform<float> roughLod{*this, "u_roughLod"};
   Uniform<float> refractLod{*this, "u_refractLod"};
   Uniform<float> roughAlpha{*this, "u_roughAlpha"};
+  Uniform<float> refractAlpha{*this, "u_refractAlpha"};
+  Uniform<int> lobeTaps{*this, "u_lobeTaps"};
   // The probe and its search.
   Uniform<glm::vec3> probeCentre{*this, "u_probeCentre"};
   Uniform<float> distanceUnit{*this, "u_distanceUnit"};
@@ -77,6 +79,7 @@ struct EnvironmentUniforms : UniformTable {
   Uniform<int> environment2{*this, "u_environment2"};
   Uniform<int> pyramid{*this, "u_pyramid"};
   Uniform<int> prefiltered{*this, "u_prefiltered"};
+  Uniform<int> lobeSource{*this, "u_lobeSource"};
   GlassExitUniforms glassExit{*this};
   ExactUniforms exact{*this};
 };

@@ -44,6 +44,7 @@ Result<PassCounts> SceneRenderer::capture(const Scene& scene, const FramePlan& p
   if (!captured) return Result<PassCounts>::failure(captured.error());
   if (captured.value().finished) {
     if (prefilterTiming_) prefilterTiming_(AfterCapture::Prefilter, true);
+    capture_.buildBoxChains(plan);
     Result<double> filtered = rough_.filter(
         plan, [this](int owner) { return capture_.target(owner); }, skybox_.get(), accuracy_);
     if (prefilterTiming_) prefilterTiming_(AfterCapture::Prefilter, false);

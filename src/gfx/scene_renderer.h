@@ -83,9 +83,9 @@ class SceneRenderer {
   // the last capture: for tests and the frame's stats.
   const ProbeIrradiance& irradiance() const { return irradiance_; }
   int lastIrradianceProjections() const { return lastProjections_; }
-  // Told just before (true) and after (false) each capture's prefilter pass and its irradiance
-  // projection, so that the caller can time them on its own clock (Demo's stats); unset (the
-  // default), nothing is called.
+  // Told just before (true) and after (false) each capture's filtering (the box chains and the
+  // prefilter pass) and its irradiance projection, so that the caller can time them on its own
+  // clock (Demo's stats); unset (the default), nothing is called.
   enum class AfterCapture { Prefilter, Irradiance };
   using PrefilterTiming = std::function<void(AfterCapture stage, bool starting)>;
   void setPrefilterTiming(PrefilterTiming timing) { prefilterTiming_ = std::move(timing); }

@@ -1,6 +1,7 @@
-// Rough mirrors' prefiltered probes in a real frame: a scene of perfect mirrors makes no filtered
-// cube and takes no filter sample (its frame is today's); each rough sphere's probe gets one, and
-// the filter's work is what the planner counted.
+// Rough mirrors' probes in a real frame: a scene of perfect mirrors makes no filtered cube, takes
+// no filter sample and keeps no box chain (its frame is today's); under the default each rough
+// sphere's probe keeps the box chain its lobe taps read and nothing is prefiltered; with lobe
+// taps off each gets a prefiltered cube, and the filter's work is what the planner counted.
 #include <gtest/gtest.h>
 
 #include "app/headless_frames.h"
@@ -27,12 +28,42 @@ TEST(RoughProbe, PerfectMirrorsAreNeverFiltered) {
     auto image = renderFrameAt(*demo, 0.5 * frame, 160, 120);
     ASSERT_TRUE(image) << image.error();
     EXPECT_EQ(demo->lastStats().filterSamples, 0.0);
+    for (const ProbePlan& probe : demo->lastPlan().probes) {
+      EXPECT_FALSE(probe.lobeTapReaders);
+      const CubeCaptureTarget* t = demo->renderer()->probeTarget(probe.reflector);
+      ASSERT_NE(t, nullptr);
+      EXPECT_FALSE(t->format().boxChain);
+    }
   }
   EXPECT_EQ(demo->renderer()->prefilteredCubes(), 0u);
 }
 
+TEST(RoughProbe, LobeTapReadersKeepABoxChainAndNoFilteredCube) {
+  auto demo = testing::makeCapturingDemo(roughSpheres(true));
+  auto image = renderFrameAt(*demo, 2.0, 160, 120);
+  ASSERT_TRUE(image) << image.error();
+  EXPECT_EQ(demo->renderer()->prefilteredCubes(), 0u);
+  EXPECT_EQ(demo->lastStats().filterSamples, 0.0);
+  // Five spheres with a probe each, four of them rough (0.25, 0.5, 0.75, 1): those four keep a
+  // box chain; the perfect one does not.
+  int tapped = 0, chained = 0;
+  for (const ProbePlan& probe : demo->lastPlan().probes) {
+    EXPECT_TRUE(probe.roughLevels.empty());
+    const CubeCaptureTarget* t = demo->renderer()->probeTarget(probe.reflector);
+    ASSERT_NE(t, nullptr);
+    EXPECT_EQ(t->format().boxChain, probe.lobeTapReaders);
+    tapped += probe.lobeTapReaders ? 1 : 0;
+    chained += t->format().boxChain ? 1 : 0;
+  }
+  EXPECT_EQ(tapped, 4);
+  EXPECT_EQ(chained, 4);
+}
+
 TEST(RoughProbe, EachRoughProbeIsFilteredAtTheLevelsItNeeds) {
   auto demo = testing::makeCapturingDemo(roughSpheres(true));
+  AccuracySettings prefiltered = demo->accuracySettings();
+  prefiltered.lobeTaps = 0;
+  ASSERT_EQ(demo->setAccuracySettings(prefiltered), "");
   auto image = renderFrameAt(*demo, 2.0, 160, 120);
   ASSERT_TRUE(image) << image.error();
   // Four rough spheres (0.25, 0.5, 0.75, 1), each with a probe of its own; the first is perfect.

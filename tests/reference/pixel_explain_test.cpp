@@ -195,14 +195,33 @@ Scene roughSpheres() {
   return scene ? scene.take() : Scene{};
 }
 
-// Captured (search: hierarchical): roughness 0.5 reads level 0.5 x 5 = 2.5 of the 128-texel
-// probe, between level 2 (32 texels) and 3 (16); the rays explained are the lobe's centre.
-TEST(PixelExplain, ARoughMirrorNamesItsLobeAndTheLevelsRead) {
+// Captured (search: hierarchical): roughness 0.5 samples its lobe with 16 taps from the 128-texel
+// probe's capture; with lobe taps off it reads level 0.5 x 5 = 2.5 of its prefiltered levels,
+// between level 2 (32 texels) and 3 (16). The rays explained are the lobe's centre.
+TEST(PixelExplain, ARoughMirrorNamesItsLobeAndHowItIsRead) {
   auto demo = testing::makeCapturingDemo(roughSpheres());
   Result<PixelExplanation> e = explainAt(*demo, 2.0, kHalfRoughPixel);
   ASSERT_TRUE(e) << e.error();
   ASSERT_EQ(e.value().message, "");
   EXPECT_EQ(e.value().object, 5);
+  const LobeExplanation& taps = e.value().lobe;
+  EXPECT_EQ(taps.source, LobeExplanation::Source::LobeTaps);
+  EXPECT_EQ(taps.lobeTaps, 16);
+  EXPECT_EQ(taps.tapFaceSize, 128);
+  const std::string tapText = joinedLines(e.value());
+  EXPECT_NE(tapText.find("roughness 0.50, GGX alpha 0.2500"), std::string::npos) << tapText;
+  EXPECT_NE(tapText.find("16 lobe taps (lobeTaps) around the reflected ray for this view"),
+            std::string::npos)
+      << tapText;
+  EXPECT_NE(tapText.find("probe's capture (128x128 faces, its box chain)"), std::string::npos)
+      << tapText;
+
+  AccuracySettings prefiltered = demo->accuracySettings();
+  prefiltered.lobeTaps = 0;
+  ASSERT_EQ(demo->setAccuracySettings(prefiltered), "");
+  e = explainAt(*demo, 2.0, kHalfRoughPixel);
+  ASSERT_TRUE(e) << e.error();
+  ASSERT_EQ(e.value().message, "");
   const LobeExplanation& lobe = e.value().lobe;
   EXPECT_EQ(lobe.source, LobeExplanation::Source::Prefiltered);
   EXPECT_EQ(lobe.roughness, 0.5f);
@@ -210,7 +229,6 @@ TEST(PixelExplain, ARoughMirrorNamesItsLobeAndTheLevelsRead) {
   EXPECT_EQ(lobe.levels.lower, 2);
   EXPECT_EQ(lobe.levels.upper, 3);
   const std::string text = joinedLines(e.value());
-  EXPECT_NE(text.find("roughness 0.50, GGX alpha 0.2500"), std::string::npos) << text;
   EXPECT_NE(text.find("roughness 0.50 x 5 levels = level 2.50, blended trilinearly between "
                       "level 2 (32x32 faces) and level 3 (16x16 faces)"),
             std::string::npos)
@@ -244,12 +262,26 @@ TEST(PixelExplain, ATracedRoughMirrorNamesItsLobeRays) {
 }
 
 // frosted-glass at 400 x 400, t = 2 s, hierarchical search: a pixel left of the middle of the
-// roughness-0.5 glass sphere (object 6 in reflect explain's count from 1). Its reflection reads
-// levels 2 and 3 as the mirror's; the light through it level 0.5 x 0.75 x sqrt(0.5 / 2) x 5.
-TEST(PixelExplain, FrostedGlassNamesTheLevelOfTheLightThrough) {
+// roughness-0.5 glass sphere (object 6 in reflect explain's count from 1). The light through it
+// is a lobe of its own, of transmission roughness 0.5 x 0.75 x sqrt(0.5 / 2): lobe taps of alpha
+// 0.1875^2, or, with lobe taps off, its level 0.1875 x 5 (the reflection reads levels 2 and 3).
+TEST(PixelExplain, FrostedGlassNamesTheLobeOfTheLightThrough) {
   Result<Scene> scene = loadNamedScene("frosted-glass");
   ASSERT_TRUE(scene) << scene.error();
   auto demo = testing::makeCapturingDemo(scene.take());
+  Result<PixelExplanation> tapped = explainAt(*demo, 2.0, {185, 230});
+  ASSERT_TRUE(tapped) << tapped.error();
+  ASSERT_EQ(tapped.value().message, "");
+  EXPECT_EQ(tapped.value().lobe.source, LobeExplanation::Source::LobeTaps);
+  const std::string tapText = joinedLines(tapped.value());
+  EXPECT_NE(tapText.find("light through: 16 lobe taps of its own, around the refracted ray "
+                         "(alpha 0.0352: transmission roughness 0.19 squared"),
+            std::string::npos)
+      << tapText;
+
+  AccuracySettings prefiltered = demo->accuracySettings();
+  prefiltered.lobeTaps = 0;
+  ASSERT_EQ(demo->setAccuracySettings(prefiltered), "");
   Result<PixelExplanation> e = explainAt(*demo, 2.0, {185, 230});
   ASSERT_TRUE(e) << e.error();
   ASSERT_EQ(e.value().message, "");

@@ -16,10 +16,12 @@ namespace {
 using testing::boxAt;
 using testing::mirrorAt;
 
-CaptureContext capturing(int roughLevels = 5) {
+// The prefiltered levels' planning (lobe taps off), unless `lobeTaps` is given.
+CaptureContext capturing(int roughLevels = 5, int lobeTaps = 0) {
   CaptureContext c;
   c.accuracy.search = Search::Hierarchical;
   c.accuracy.roughLevels = roughLevels;
+  c.accuracy.lobeTaps = lobeTaps;
   return c;
 }
 
@@ -44,6 +46,23 @@ TEST(RoughPlanning, NothingIsFilteredWhereNothingIsRough) {
   for (int frame = 0; frame < 3; ++frame) {
     const FramePlan plan = planner.plan(scene, capturing(), {});
     ASSERT_EQ(plan.probes.size(), 2u);
+    for (const ProbePlan& probe : plan.probes) {
+      EXPECT_TRUE(probe.roughLevels.empty());
+      EXPECT_EQ(probe.filterFaces, 0u);
+    }
+  }
+}
+
+TEST(RoughPlanning, LobeTapReadersKeepNoLevelsAndAreNeverFiltered) {
+  FramePlanner planner;
+  const std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 0.0f), mirrorAt({4, 0, 0}, 0.5f),
+                                         mirrorAt({8, 0, 0}, 1.0f)};
+  for (int frame = 0; frame < 2; ++frame) {
+    const FramePlan plan = planner.plan(scene, capturing(5, 16), {});
+    ASSERT_EQ(plan.probes.size(), 3u);
+    EXPECT_FALSE(plan.probes[0].lobeTapReaders);
+    EXPECT_TRUE(plan.probes[1].lobeTapReaders);
+    EXPECT_TRUE(plan.probes[2].lobeTapReaders);
     for (const ProbePlan& probe : plan.probes) {
       EXPECT_TRUE(probe.roughLevels.empty());
       EXPECT_EQ(probe.filterFaces, 0u);
@@ -119,6 +138,10 @@ TEST(RoughPlanning, ARoughPixelTracesLobeRaysAndAFilteredProbeCostsItsSamples) {
   CaptureWork capture;
   capture.filterSamples = 8.0;
   EXPECT_DOUBLE_EQ(captureCost(capture, costs), 4.0);
+  // Lobe taps are paid per rough pixel and tap.
+  costs.lobeTap = 0.25;
+  capture.lobeTaps = 40.0 * 16.0;
+  EXPECT_DOUBLE_EQ(captureCost(capture, costs), 4.0 + 160.0);
   // Levels 1 and 2 of a 64-texel probe, all six faces, 32 samples a texel.
   EXPECT_DOUBLE_EQ(planner::filterSamplesFor({1, 2}, 64, 32), 6.0 * (32 * 32 + 16 * 16) * 32);
 }

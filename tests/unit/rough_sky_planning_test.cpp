@@ -48,7 +48,9 @@ TEST(RoughSkyPlanning, NoSkyLevelsWhereNoSkyboxReaderIsRough) {
     EXPECT_FALSE(plan.filterSky);
     EXPECT_EQ(plan.skyFilterSamples, 0.0);
     ASSERT_EQ(plan.probes.size(), 1u);
-    EXPECT_EQ(plan.probes[0].roughLevels, (std::vector<int>{2, 3}));  // 0.5 x 5 = 2.5
+    // Its lobe taps read its capture (the default): no levels; the sky keeps its levels' rule.
+    EXPECT_TRUE(plan.probes[0].roughLevels.empty());
+    EXPECT_TRUE(plan.probes[0].lobeTapReaders);
   }
 }
 
