@@ -159,7 +159,7 @@ vec3 lobeSeenOnce(vec3 d, float alpha) {
   return textureLod(u_lobeSource, d, log2(max(faceTexels * alpha * kLobeWidthTexels, 1.0))).rgb;
 }
 
-#if REFRACTS == 1 && CAPTURE_OUTPUT == 0
+#if CAPTURE_OUTPUT == 0
 // Frosted glass's light through (core/ggx.h says what it is): the mean, over u_lobeTaps of the
 // lobe's microfacet normals h around n (the Hammersley set), of what the view ray I refracted
 // through h sees once out of the object (its far side crossed as polished glass), each read from
