@@ -158,8 +158,9 @@ std::vector<std::string> lobeLines(const LobeExplanation& lobe, bool raysShown) 
   }
   if (lobe.glass && lobe.source == LobeExplanation::Source::LobeTaps) {
     lines.push_back(formatLine(
-        "  light through: %d lobe taps of its own, around the refracted ray (alpha %.4f: "
-        "transmission roughness %.2f squared, core/ggx.h transmissionRoughness)",
+        "  light through: %d lobe taps of its own, the view ray refracted through the lobe's "
+        "microfacet normals, each read at the level of its share of a lobe of alpha %.4f "
+        "(transmission roughness %.2f squared, core/ggx.h transmissionRoughness)",
         lobe.lobeTaps, lobe.throughRoughness * lobe.throughRoughness, lobe.throughRoughness));
   }
   if (lobe.glass && lobe.source == LobeExplanation::Source::Traced) {

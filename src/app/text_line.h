@@ -1,5 +1,5 @@
-// One printf-formatted line of an explanation (pixel_explain_text, pixel_lobe): the lines are
-// short, so a fixed buffer is enough; a longer one is cut, never overrun.
+// One printf-formatted line of an explanation (pixel_explain_text, pixel_lobe), whole whatever
+// its length.
 #pragma once
 
 #include <cstdio>
@@ -9,8 +9,11 @@ namespace reflect {
 
 template <typename... Values>
 std::string formatLine(const char* pattern, Values... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, pattern, values...);
+  const int length = std::snprintf(nullptr, 0, pattern, values...);
+  if (length <= 0) return {};
+  std::string line(static_cast<size_t>(length) + 1, '\0');
+  std::snprintf(line.data(), line.size(), pattern, values...);
+  line.resize(static_cast<size_t>(length));
   return line;
 }
 

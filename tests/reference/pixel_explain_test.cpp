@@ -274,8 +274,9 @@ TEST(PixelExplain, FrostedGlassNamesTheLobeOfTheLightThrough) {
   ASSERT_EQ(tapped.value().message, "");
   EXPECT_EQ(tapped.value().lobe.source, LobeExplanation::Source::LobeTaps);
   const std::string tapText = joinedLines(tapped.value());
-  EXPECT_NE(tapText.find("light through: 16 lobe taps of its own, around the refracted ray "
-                         "(alpha 0.0352: transmission roughness 0.19 squared"),
+  EXPECT_NE(tapText.find("light through: 16 lobe taps of its own, the view ray refracted "
+                         "through the lobe's microfacet normals, each read at the level of its "
+                         "share of a lobe of alpha 0.0352 (transmission roughness 0.19 squared"),
             std::string::npos)
       << tapText;
 

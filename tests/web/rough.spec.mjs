@@ -91,13 +91,14 @@ test('rough spheres: the error of the default against the exact mode, the perfec
 const NATIVE_LOBE_LINES = [
   '  rough mirror: roughness 0.50, GGX alpha 0.2500 (roughness squared): it sees the environment ' +
     'averaged over the GGX lobe around the reflected ray',
-  '  lobe: read from the probe\'s prefiltered levels: roughness 0.50 x 5 levels = level 2.50, ' +
-    'blended trilinearly between level 2 (32x32 faces) and level 3 (16x16 faces)',
+  '  lobe: 16 lobe taps (lobeTaps) around the reflected ray for this view, each weighed by the ' +
+    'GGX reflectance and read from the probe\'s capture (128x128 faces, its box chain) at the ' +
+    'level its share of the lobe covers, towards where the search\'s ray met the scene',
   '  the rays and lookups below (and the lines the page draws) are the lobe\'s centre: the ' +
     'reflected ray, and where its search lands',
 ];
 
-test('pick a pixel on a rough sphere: the readout names its lobe and the levels read', async ({ page }) => {
+test('pick a pixel on a rough sphere: the readout names its lobe and how it is read', async ({ page }) => {
   await openDemo(page, '?scene=rough-spheres&search=hierarchical&paused&t=2');
   await idle(page);
   const reply = await page.evaluate(() => window.demo.explainPixel(400, 345));
