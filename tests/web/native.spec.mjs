@@ -21,18 +21,22 @@ const FRAME = { fractionOver: 0.002, mean: 0.5 };  // kMaxFractionOver, kMaxMean
 // skybox-grid's mirror pixels (along its grid lines, mirror-symmetric) and 0.27% of
 // shared-probe's (single pixels on reflected outlines) over 16 levels, by 17 to 130.
 const REFLECTORS = { fractionOver: 0.005, mean: 1.0 };
-// rough-spheres' rough mirrors read prefiltered levels, each texel an average of 32 reads of the
-// capture's mip chain at fractional levels; glGenerateMipmap's filter and trilinear cube filtering
-// are the implementation's, so SwiftShader and llvmpipe part by a few levels over whole spheres
-// (measured at 800x600, t = 2: frame 0.34% over 16 levels, mean 0.20; reflectors 3.78%, mean 2.13).
-// Looser limits here, above those by about a third; a page drawing the rough spheres sharp
-// (roughness ignored) is far past them.
-const ROUGH = { frame: { fractionOver: 0.005, mean: 0.5 }, reflectors: { fractionOver: 0.05, mean: 3.0 } };
-// frosted-glass reads prefiltered levels the same way, but parts far less (measured at 800x600,
-// t = 2: frame 0.051% over 16 levels, mean 0.063; reflectors 0.656%, mean 0.78): the sharp
-// scenes' limits, but for 1% of its reflectors' pixels over the tolerance (the sharp scenes' 0.5%
-// is past what it measured).
-const FROSTED = { frame: FRAME, reflectors: { fractionOver: 0.01, mean: REFLECTORS.mean } };
+// rough-spheres' rough mirrors take 16 lobe taps a pixel from the capture's box chain at
+// fractional levels; glGenerateMipmap's filter and trilinear cube filtering are the
+// implementation's, so SwiftShader and llvmpipe part by a few levels over whole spheres. The taps
+// also show each sphere's neighbours, drawn in its capture from their own probes: that second
+// bounce depends on the frames drawn before (the page has drawn frames before t = 2 s,
+// `reflect render` draws one), and the difference image puts the largest differences there.
+// Measured at 800x600, t = 2 (lobe taps): frame 0.668% over 16 levels, mean 0.329; reflectors
+// 7.50%, mean 3.56 (from the prefiltered levels it was 0.34%, 0.20; 3.78%, 2.13). Limits above
+// those by about a third (loosened with lobe taps, for the reason above); the rough spheres drawn
+// sharp (roughness ignored) are past them: 1.97% of the frame over, mean 0.78, natively.
+const ROUGH = { frame: { fractionOver: 0.009, mean: 0.5 }, reflectors: { fractionOver: 0.10, mean: 4.75 } };
+// frosted-glass takes lobe taps the same way, but parts far less (measured at 800x600, t = 2:
+// frame 0.131% over 16 levels, mean 0.082; reflectors 1.735%, mean 1.033; from the prefiltered
+// levels 0.051%, 0.063; 0.656%, 0.78): the sharp scenes' frame limits, its reflectors' above
+// what it measured by about a third.
+const FROSTED = { frame: FRAME, reflectors: { fractionOver: 0.025, mean: 1.4 } };
 
 // Max channel difference per pixel of two RGBA images of one size.
 function differences(a, b) {
