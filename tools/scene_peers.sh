@@ -6,8 +6,9 @@
 #   tools/scene_peers.sh SCENE PEER [TIME] [SIZE]
 #     probe-lit probelit    tools/peers/probelit.js: CubeCamera and an order-2 projection a figure
 #     frosted-glass frosted tools/peers/frosted.js: MeshPhysicalMaterial's transmission
-#   (TIME default 2, SIZE 800x800; needs build/native and build/web built, as ./test.sh builds
-#   them). Output in build/scene-peers/SCENE/.
+#   (TIME default 2, SIZE 800x800; ROUNDS=N in the environment for peer_bench's rounds, e.g. 1
+#   where a peer's page does not survive a second; needs build/native and build/web built, as
+#   ./test.sh builds them). Output in build/scene-peers/SCENE/.
 # The mask is the scene drawn natively with those objects white and everything else black: a copy
 # of the scene file with the light's ambient 1 and no diffuse or specular, every colour black but
 # theirs, every material Phong and every ambient constant.
@@ -39,4 +40,5 @@ build/native/reflect render --scene "$scene" --time "$time" --size "$size" \
 build/native/reflect render --scene "$out/mask-scene.json" --time "$time" --size "$size" \
   --out "$out/mask.png" >/dev/null
 node tools/peer_bench.mjs --scene "$scene" --pages "default,$peer" --size "$size" \
-  --reference "$out/reference.png" --mask "$out/mask.png" --time "$time"
+  --reference "$out/reference.png" --mask "$out/mask.png" --time "$time" \
+  ${ROUNDS:+--rounds "$ROUNDS"}

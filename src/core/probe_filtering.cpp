@@ -38,9 +38,8 @@ void addLevelsOf(const SceneObject::Look& look, int roughLevels, int faceSize,
 bool readsLobeTaps(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,
                    const CaptureContext& context) {
   return context.accuracy.lobeTaps > 0 &&
-         std::any_of(probe.members.begin(), probe.members.end(), [&](int m) {
-           return objects[static_cast<size_t>(m)].look.rough();
-         });
+         std::any_of(probe.members.begin(), probe.members.end(),
+                     [&](int m) { return objects[static_cast<size_t>(m)].look.rough(); });
 }
 
 std::vector<int> roughLevelsOf(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,

@@ -75,7 +75,7 @@ class ProbeCapture {
   // pass renders into (a feedback loop WebGL refuses to draw).
   TextureHandle emptyDepths_;
   TextureHandle emptyPyramid_;
-  SamplerHandle lobeSampler_;  // kLobeUnit's: the lobe taps read the box chain trilinearly
+  SamplerHandle lobeSampler_;           // kLobeUnit's: the lobe taps read the box chain trilinearly
   VertexArrayHandle emptyVertexArray_;  // the reduction's fullscreen triangle has no attributes
 };
 

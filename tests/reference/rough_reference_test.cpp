@@ -1,11 +1,12 @@
 // Rough mirrors and frosted glass (docs/rough.md) in the reference, the exact mode and the
-// captured probes (lobe taps, and the prefiltered levels), one body for both: rough-spheres (five mirror spheres, roughness 0 to 1) and
-// frosted-glass (five glass spheres, index 1.5, roughness 0 to 1). The reference's Monte Carlo
-// noise, measured with two seeds, lies far below the errors it judges; the exact mode's fixed lobe
-// rays come close to it; the captured probes are well above the picture that ignores roughness,
-// sphere by sphere. Then, for mirrors, roughness 0 changes nothing, in the reference or in the
-// exact mode, against frames the code before rough mirrors made (for glass the goldens of the
-// glass scenes, glass-sphere and skybox, drawn by the programs of before, hold it).
+// captured probes (lobe taps, and the prefiltered levels), one body for both: rough-spheres (five
+// mirror spheres, roughness 0 to 1) and frosted-glass (five glass spheres, index 1.5, roughness 0
+// to 1). The reference's Monte Carlo noise, measured with two seeds, lies far below the errors it
+// judges; the exact mode's fixed lobe rays come close to it; the captured probes are well above the
+// picture that ignores roughness, sphere by sphere. Then, for mirrors, roughness 0 changes nothing,
+// in the reference or in the exact mode, against frames the code before rough mirrors made (for
+// glass the goldens of the glass scenes, glass-sphere and skybox, drawn by the programs of before,
+// hold it).
 #include <gtest/gtest.h>
 
 #include <algorithm>
