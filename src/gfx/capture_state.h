@@ -15,8 +15,8 @@ inline constexpr GLint kEnvironment2Unit = 2;  // samplerCube: its second layer'
 inline constexpr GLint kPeelDepthsUnit = 4;    // usampler2DArray: the layer a peel draws behind
 inline constexpr GLint kPeelBacksUnit = 5;     // usampler2DArray: the backs it also peels behind
 inline constexpr GLint kPrefilteredUnit = 10;  // samplerCube: a rough reader's prefiltered levels
-// samplerCube: a rough reader's probe colours with their box chain, through a trilinear sampler
-// bound there for good (ProbeCapture), whatever the cube's own filter.
+// samplerCube: a rough reader's probe colours with their box chain, through ProbeCapture's
+// trilinear sampler, whatever the cube's own filter.
 inline constexpr GLint kLobeUnit = 13;
 
 struct CaptureState {

@@ -130,6 +130,7 @@ void EnvironmentBinding::bind(const EnvironmentUniforms& u, const ProgramKey& ke
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, t.pyramid);
   if (key.roughTaps) {
     bindTexture(kLobeUnit, GL_TEXTURE_CUBE_MAP, t.colour);
+    glBindSampler(kLobeUnit, s_.probes.lobeSampler());
     u.lobeTaps.set(s_.accuracy.lobeTaps);
     u.roughAlpha.set(ggxAlpha(object.roughness));
     u.refractAlpha.set(ggxAlpha(transmissionRoughness(object.roughness, object.ior)));

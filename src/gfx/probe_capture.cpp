@@ -54,7 +54,6 @@ Result<ProbeCapture> ProbeCapture::create() {
   glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glBindSampler(kLobeUnit, c.lobeSampler_.id());
   c.emptyVertexArray_ = VertexArrayHandle(genVertexArray());
   if (!checkGlError("create probe capture")) {
     return Result<ProbeCapture>::failure("GL error while creating the probe capture");

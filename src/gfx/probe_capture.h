@@ -54,6 +54,10 @@ class ProbeCapture {
   const CubeCaptureTarget* target(int owner) const;
   // Bound to the pyramid unit where a reflector has no depth chain (environment_binding.h).
   GLuint emptyPyramid() const { return emptyPyramid_.id(); }
+  // Bound to kLobeUnit with a lobe-tap reader's cube: reads its box chain trilinearly, whatever
+  // the cube's own filter (bound at each draw: another renderer's sampler, deleted, would leave
+  // the unit without one).
+  GLuint lobeSampler() const { return lobeSampler_.id(); }
   // The depth pyramid programs' uniforms that nothing sets, for tests.
   std::vector<std::string> unlisted() const { return pyramid_.unlisted(); }
 
