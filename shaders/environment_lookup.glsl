@@ -123,16 +123,12 @@ vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, float hitDistance) {
   float nDotV = max(dot(n, v), 0.0);
   mat3 frame = frameAround(n);
   vec3 offset = origin - u_probeCentre;
-  float a2 = alpha * alpha;
   uint taps = uint(max(u_lobeTaps, 1));
   vec3 sum = vec3(0.0);
   float weights = 0.0;
   for (uint k = 0u; k < taps; ++k) {
-    vec2 u = hammersley(k, taps);
-    float phi = 2.0 * kGgxPi * u.x;
-    float nDotH = sqrt((1.0 - u.y) / (1.0 + (a2 - 1.0) * u.y));
-    float sinTheta = sqrt(max(1.0 - nDotH * nDotH, 0.0));
-    vec3 h = frame * vec3(sinTheta * cos(phi), sinTheta * sin(phi), nDotH);
+    float nDotH;
+    vec3 h = ggxHalfVectorInFrame(hammersley(k, taps), alpha, frame, nDotH);
     vec3 l = reflect(-v, h);
     float vDotH = dot(v, h);
     float w = lobeSampleWeight(nDotV, dot(n, l), nDotH, vDotH, alpha);
@@ -173,15 +169,11 @@ vec3 transmittedTaps(vec3 origin, vec3 I, vec3 n, float hitDistance, vec3 centra
   float lod = log2(max(faceTexels * u_refractAlpha * kLobeWidthTexels, 1.0)) -
               0.5 * log2(float(taps)) + kLobeTapLodBias;
   mat3 frame = frameAround(n);
-  float a2 = u_roughAlpha * u_roughAlpha;
   vec3 sum = vec3(0.0);
   float rays = 0.0;
   for (uint k = 0u; k < taps; ++k) {
-    vec2 u = hammersley(k, taps);
-    float phi = 2.0 * kGgxPi * u.x;
-    float nDotH = sqrt((1.0 - u.y) / (1.0 + (a2 - 1.0) * u.y));
-    float sinTheta = sqrt(max(1.0 - nDotH * nDotH, 0.0));
-    vec3 h = frame * vec3(sinTheta * cos(phi), sinTheta * sin(phi), nDotH);
+    float nDotH;
+    vec3 h = ggxHalfVectorInFrame(hammersley(k, taps), u_roughAlpha, frame, nDotH);
     vec3 t = refract(I, h, u_eta);
     if (dot(t, t) == 0.0 || dot(t, n) >= 0.0) continue;
     t = normalize(t);

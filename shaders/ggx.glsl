@@ -22,13 +22,18 @@ mat3 frameAround(vec3 n) {
   return mat3(tangent, bitangent, n);
 }
 
-vec3 ggxHalfVector(vec2 u, float alpha, vec3 n) {
+// ggxHalfVector in a frame made once for many samples (the lobe taps); `nDotH` its cos(theta).
+vec3 ggxHalfVectorInFrame(vec2 u, float alpha, mat3 frame, out float nDotH) {
   float phi = 2.0 * kGgxPi * u.x;
   float a2 = alpha * alpha;
-  float cosTheta = sqrt((1.0 - u.y) / (1.0 + (a2 - 1.0) * u.y));
-  float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-  vec3 local = vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
-  return normalize(frameAround(n) * local);
+  nDotH = sqrt((1.0 - u.y) / (1.0 + (a2 - 1.0) * u.y));
+  float sinTheta = sqrt(max(1.0 - nDotH * nDotH, 0.0));
+  return frame * vec3(sinTheta * cos(phi), sinTheta * sin(phi), nDotH);
+}
+
+vec3 ggxHalfVector(vec2 u, float alpha, vec3 n) {
+  float nDotH;
+  return normalize(ggxHalfVectorInFrame(u, alpha, frameAround(n), nDotH));
 }
 
 float ggxDistribution(float nDotH, float alpha) {
