@@ -1,6 +1,7 @@
 #include "core/frustum.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/cube_faces.h"
 
@@ -79,6 +80,23 @@ ScreenBox screenBox(const Bounds& local, const glm::mat4& model, const glm::mat4
     box.y1 = std::max(box.y1, y);
   }
   return box;
+}
+
+float nearPlaneReach(const glm::mat4& projection) {
+  // glm::perspective's layout: [0][0] = 1 / (aspect tan), [1][1] = 1 / tan, [2][3] = -1, the
+  // third column's depth terms give near, and nothing off the diagonal shifts the view.
+  const glm::mat4& p = projection;
+  const bool symmetricPerspective = p[2][3] == -1.0f && p[3][3] == 0.0f && p[2][0] == 0.0f &&
+                                    p[2][1] == 0.0f && p[0][0] > 0.0f && p[1][1] > 0.0f;
+  if (!symmetricPerspective) return 0.0f;
+  const float near = p[3][2] / (p[2][2] - 1.0f);
+  if (!(near > 0.0f)) return 0.0f;
+  const float tanX = 1.0f / p[0][0], tanY = 1.0f / p[1][1];
+  return near * std::sqrt(1.0f + tanX * tanX + tanY * tanY);
+}
+
+float distanceToBox(const glm::vec3& point, const Bounds& box) {
+  return glm::length(glm::max(glm::max(box.min - point, point - box.max), glm::vec3(0.0f)));
 }
 
 }  // namespace reflect

@@ -29,4 +29,12 @@ struct ScreenBox {
 };
 ScreenBox screenBox(const Bounds& local, const glm::mat4& model, const glm::mat4& viewProjection);
 
+// How far from the eye the near plane of a symmetric perspective `projection` reaches: the
+// distance to its corners. A solid farther than this from the eye is seen from outside only, the
+// near plane cutting nothing open. 0 for any other projection (nothing is taken to be outside).
+float nearPlaneReach(const glm::mat4& projection);
+
+// The distance from `point` to the box (0 inside it).
+float distanceToBox(const glm::vec3& point, const Bounds& box);
+
 }  // namespace reflect

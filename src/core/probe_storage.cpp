@@ -12,10 +12,6 @@
 namespace reflect {
 namespace {
 
-float distanceToBox(const glm::vec3& p, const Bounds& box) {
-  return glm::length(glm::max(glm::max(box.min - p, p - box.max), glm::vec3(0.0f)));
-}
-
 float farthestInBox(const glm::vec3& p, const Bounds& box) {
   return glm::length(glm::max(glm::abs(box.min - p), glm::abs(box.max - p)));
 }

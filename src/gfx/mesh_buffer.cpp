@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "core/mesh_closure.h"
 #include "gfx/shader_program.h"
 
 namespace reflect {
@@ -16,7 +17,8 @@ MeshBuffer::MeshBuffer(const MeshData& mesh)
       indices_(genBuffer()),
       indexCount_(static_cast<GLsizei>(mesh.indices.size())),
       bounds_(mesh.bounds),
-      sphereRadius_(mesh.sphereRadius) {
+      sphereRadius_(mesh.sphereRadius),
+      closedOutward_(isClosedOutward(mesh)) {
   for (const Vertex& v : mesh.vertices) {
     boundingRadius_ = std::max(boundingRadius_, glm::length(v.position - bounds_.centre()));
   }

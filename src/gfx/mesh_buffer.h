@@ -69,6 +69,8 @@ class MeshBuffer {
   bool flat() const { return flat_; }
   const glm::vec3& flatPoint() const { return flatPoint_; }
   const glm::vec3& flatNormal() const { return flatNormal_; }
+  // A closed, outward-wound solid (core/mesh_closure.h): its back faces never show from outside.
+  bool closedOutward() const { return closedOutward_; }
 
  private:
   MeshBufferTally tally_;
@@ -82,6 +84,7 @@ class MeshBuffer {
   bool flat_ = false;
   glm::vec3 flatPoint_{0.0f};
   glm::vec3 flatNormal_{0.0f};
+  bool closedOutward_ = false;
 };
 
 // Every mesh's levels of detail on the GPU, by the name the scene knows the mesh by. One owner

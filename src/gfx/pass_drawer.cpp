@@ -7,6 +7,25 @@
 
 namespace reflect {
 
+namespace {
+
+// Back faces off for a closed solid the eye sees from outside only (DrawPass::cullReach), wound
+// as its model leaves it (a mirroring scale turns it inside out).
+void setFaceCulling(const DrawPass& pass, const MeshBuffer& buffer, const Bounds& world,
+                    const glm::mat4& model) {
+  const bool cull = pass.cullReach > 0.0f && buffer.closedOutward() &&
+                    distanceToBox(pass.environmentEye, world) > pass.cullReach;
+  if (!cull) {
+    glDisable(GL_CULL_FACE);
+    return;
+  }
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glFrontFace(glm::determinant(glm::mat3(model)) < 0.0f ? GL_CW : GL_CCW);
+}
+
+}  // namespace
+
 void PassDrawer::setForPass(const PhongUniforms& u, const ProgramKey&, const DrawPass& pass) const {
   u.mesh.viewPosition.set(pass.lightingEye);
   u.setLight(pass.scene.light);
@@ -36,6 +55,7 @@ PassCounts PassDrawer::drawObject(const Uniforms& u, const ProgramKey& key, cons
   // The object's size, for the third capture pass (capture_output.glsl).
   const Bounds world = transformBounds(buffer->bounds(), model);
   u.mesh.capture.extent.set(glm::length(world.max - world.min) / pass.scene.capture.near);
+  setFaceCulling(pass, *buffer, world, model);
   u.mesh.colour.set(object.colour);
   environments_.setForObject(u, key, pass.scene, pass.plan, item.object);
   buffer->draw(item.ranges);

@@ -37,6 +37,11 @@ struct DrawPass {
   glm::vec3 environmentEye;  // where a mirror's view rays start (a capture: the probe centre)
   CaptureState capture;      // layer 0: the main pass
   int outputDirections = 0;  // environment.frag's u_outputDirection (SceneRenderer::kOutput...)
+  // > 0 (the main pass: core/frustum.h nearPlaneReach): a closed solid (MeshBuffer::
+  // closedOutward) farther than this from environmentEye is drawn without its back faces, which
+  // only its own front faces would cover. The same pixels, half the fragments: a mirror's each
+  // trace a ray. 0 (the captures: their third pass draws backs) draws every face.
+  float cullReach = 0.0f;
 };
 
 class PassDrawer {
