@@ -172,6 +172,12 @@ struct PackedScene {
   int header = 0;  // texel of the header (firstTexel)
   int instances = 0;
   bool empty = true;  // no instance has a mesh
+  // A second top level over the Phong objects alone, after the first's nodes: all a ray of a
+  // mirror that meets nothing but Phong surfaces and the sky (EXACT_GENERAL 0) can meet. Its own
+  // mirror, never met, is not in it: every such ray starts inside that mirror's box, and the walk
+  // would visit its slot to leave it.
+  int phongHeader = 0;
+  bool phongEmpty = true;  // no Phong object has a mesh
 };
 // `roots`: each object's mesh root in the atlas (count 0 and texel -1: not traced);
 // `probeCentres`: where each object's probe captures from (the cube-textured material traces

@@ -68,6 +68,24 @@ struct TopPacker {
   }
 };
 
+// Packs `bvh`'s top level: its header (the root's box and reference, kStepTexels texels) onto
+// `header`, and returns its interior nodes, to be placed at texel `firstNode`; every leaf refers
+// to its object's slot, object i's at `slotsTexel` + kSlotTexels i.
+std::vector<float> packTop(const SceneBvh& bvh, const std::vector<Bounds>& worldBoxes,
+                           int slotsTexel, int firstNode, std::vector<float>& header) {
+  TopPacker top{bvh, worldBoxes, firstNode, slotsTexel, {}};
+  PackedRef root{-1, 0};
+  Bounds rootBox{glm::vec3(0.0f), glm::vec3(0.0f)};
+  if (!bvh.top.nodes.empty()) {
+    root = top.node(0);
+    rootBox = {bvh.top.nodes[0].min, bvh.top.nodes[0].max};
+  }
+  const size_t start = header.size();
+  pushChild(header, rootBox, root);
+  header.resize(start + kStepTexels * 4, 0.0f);
+  return top.nodes;
+}
+
 }  // namespace
 
 PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector<PackedRef>& roots,
@@ -106,21 +124,25 @@ PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector
     slots.insert(slots.end(), {static_cast<float>(root.texel), static_cast<float>(root.count),
                                static_cast<float>(i), 0.0f});
   }
-  packed.empty = bvh.top.nodes.empty();
-  TopPacker top{bvh, worldBoxes, 0, 0, {}};
-  top.slots = firstTexel + kStepTexels;
-  top.firstNode = top.slots + kSlotTexels * static_cast<int>(count);
-  PackedRef root{-1, 0};
-  Bounds rootBox{glm::vec3(0.0f), glm::vec3(0.0f)};
-  if (!packed.empty) {
-    root = top.node(0);
-    rootBox = {bvh.top.nodes[0].min, bvh.top.nodes[0].max};
-  }
+  const int slotsTexel = firstTexel + kStepTexels;
   std::vector<float>& t = packed.traversal;
-  pushChild(t, rootBox, root);
-  t.resize(kStepTexels * 4, 0.0f);
+  packed.empty = bvh.top.nodes.empty();
+  std::vector<float> nodes =
+      packTop(bvh, worldBoxes, slotsTexel, slotsTexel + kSlotTexels * static_cast<int>(count), t);
   t.insert(t.end(), slots.begin(), slots.end());
-  t.insert(t.end(), top.nodes.begin(), top.nodes.end());
+  t.insert(t.end(), nodes.begin(), nodes.end());
+
+  std::vector<BvhInstance> phong = bvh.instances;
+  for (size_t i = 0; i < phong.size(); ++i) {
+    if (i >= count || scene.objects[i].material != Material::Phong) phong[i].mesh.reset();
+  }
+  const SceneBvh phongBvh = buildSceneBvh(std::move(phong));
+  packed.phongEmpty = phongBvh.top.nodes.empty();
+  packed.phongHeader = firstTexel + static_cast<int>(t.size() / 4);
+  std::vector<float> header;
+  nodes = packTop(phongBvh, worldBoxes, slotsTexel, packed.phongHeader + kStepTexels, header);
+  t.insert(t.end(), header.begin(), header.end());
+  t.insert(t.end(), nodes.begin(), nodes.end());
   return packed;
 }
 

@@ -57,7 +57,8 @@ bool EnvironmentBinding::searchesFor(const Scene& scene, const FramePlan& plan, 
 }
 
 void EnvironmentBinding::bindTracer(const EnvironmentUniforms& u, const ProgramKey& key) const {
-  if (key.search == Search::Exact && s_.exact) s_.exact->bind(u.exact, s_.accuracy.lobeRays);
+  if (key.search == Search::Exact && s_.exact)
+    s_.exact->bind(u.exact, s_.accuracy.lobeRays, key.traceGeneral);
 }
 
 void EnvironmentBinding::setForObject(const PhongUniforms&, const ProgramKey& key, const Scene&,

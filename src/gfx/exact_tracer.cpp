@@ -144,7 +144,7 @@ void ExactTracer::prepare(const Scene& scene, const FramePlan& plan, const glm::
   for (const SceneObject& o : scene.objects) lobeAlphas_.push_back(ggxAlpha(o.roughness));
 }
 
-void ExactTracer::bind(const ExactUniforms& u, int lobeRays) const {
+void ExactTracer::bind(const ExactUniforms& u, int lobeRays, bool general) const {
   bindUnit(kExactAtlasUnit, GL_TEXTURE_2D, atlas_.id());
   bindUnit(kExactNormalsUnit, GL_TEXTURE_2D, normals_.id());
   bindUnit(kExactSceneUnit, GL_TEXTURE_2D, scene_.id());
@@ -156,8 +156,8 @@ void ExactTracer::bind(const ExactUniforms& u, int lobeRays) const {
   u.sky.set(kExactSkyUnit);
   u.hasSky.set(sky_ != nullptr);
   u.clear.set(clear_);
-  u.header.set(packed_.header);
-  u.empty.set(packed_.empty);
+  u.header.set(general ? packed_.header : packed_.phongHeader);
+  u.empty.set(general ? packed_.empty : packed_.phongEmpty);
   u.light.set(light_);
   u.phong.set(phong_);
   u.eye.set(eye_);

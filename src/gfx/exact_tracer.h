@@ -71,7 +71,9 @@ class ExactTracer {
   // For the environment program in use: the textures and the frame's uniforms; then, per draw,
   // which object it is (its rays never meet itself, and glass is crossed inside it).
   // `lobeRays`: the rays a rough mirror's pixel traces (AccuracySettings::lobeRays).
-  void bind(const ExactUniforms& u, int lobeRays) const;
+  // `general`: the program's tracer (ProgramKey::traceGeneral); without it the rays walk the
+  // Phong objects' top level alone (PackedScene::phongHeader).
+  void bind(const ExactUniforms& u, int lobeRays, bool general) const;
   void bindObject(const ExactUniforms& u, int object) const;
 
  private:

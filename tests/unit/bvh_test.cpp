@@ -288,6 +288,7 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
     instances[static_cast<size_t>(i)].inverse =
         glm::inverse(instances[static_cast<size_t>(i)].model);
   }
+  scene.objects[2].material = Material::Mirror;  // not in the Phong objects' top level
   const SceneBvh bvh = buildSceneBvh(instances);
   const int first = static_cast<int>(atlas.texelCount()) + 7;  // any texel past the meshes
   const PackedScene packed = packScene(scene, bvh, roots, {}, first);
@@ -300,6 +301,7 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
 
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   int hits = 0;
+  int phongSteps = 0, skipSteps = 0;
   for (int r = 0; r < 3000; ++r) {
     const glm::vec3 o(at(rng) * 2.0f, at(rng) * 2.0f, at(rng) * 2.0f);
     // Aim at a vertex of a placed object, so most rays meet something.
@@ -314,6 +316,12 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
     const RayHit want = intersectScene(bvh, o, d, 0.0f, INFINITY, skip, only);
     const RayHit got = walk.trace(packed.header, o, d, skip, only);
     ASSERT_EQ(got.instance, want.instance) << "ray " << r;
+    // The Phong objects' top level meets what the whole scene's meets past its mirror, in fewer
+    // turns over all the rays (it never visits the mirror's slot).
+    const RayHit pastMirror = intersectScene(bvh, o, d, 0.0f, INFINITY, 2, only);
+    EXPECT_EQ(walk.trace(packed.phongHeader, o, d, -1, only, &phongSteps).t, pastMirror.t)
+        << "ray " << r;
+    walk.trace(packed.header, o, d, 2, only, &skipSteps);
     if (want.instance < 0) continue;
     ++hits;
     EXPECT_EQ(got.t, want.t) << "ray " << r;
@@ -322,6 +330,25 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
     EXPECT_EQ(got.slot, want.slot + offset) << "ray " << r;
   }
   EXPECT_GT(hits, 600);  // aimed at vertices (on edges, some slip past): 782 meet one
+  EXPECT_FALSE(packed.phongEmpty);
+  EXPECT_LT(phongSteps, skipSteps);
+}
+
+TEST(Bvh, NoPhongObjectLeavesThePhongTopLevelEmpty) {
+  const auto mesh = std::make_shared<const MeshBvh>(buildMeshBvh(shared(randomTriangles(20, 8))));
+  BvhAtlas atlas;
+  atlas.add("m", mesh);
+  Scene scene;
+  scene.objects.resize(2);
+  scene.objects[0].material = Material::Mirror;
+  scene.objects[1].material = Material::Glass;
+  std::vector<BvhInstance> instances(2);
+  for (BvhInstance& i : instances) i.mesh = mesh;
+  const std::vector<PackedRef> roots(2, atlas.roots().at("m").ref);
+  const PackedScene packed =
+      packScene(scene, buildSceneBvh(instances), roots, {}, static_cast<int>(atlas.texelCount()));
+  EXPECT_FALSE(packed.empty);
+  EXPECT_TRUE(packed.phongEmpty);
 }
 
 TEST(Bvh, ALeafOfSeveralObjectsIsSplitIntoSlots) {
