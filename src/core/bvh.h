@@ -185,4 +185,12 @@ struct PackedScene {
 PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector<PackedRef>& roots,
                       const std::vector<glm::vec3>& probeCentres, int firstTexel);
 
+// The stack the shader's walk needs (EXACT_STACK): an entry a pushed child, at most one for each
+// interior node on the path it walks, the top level's (a binary tree over `objects` leaves: at
+// most objects - 1) and then its object's (at most `deepestTree` - 1, that mesh tree's levels).
+// In steps of 8, so a new model seldom asks for a new program; at most both levels of
+// kBvhMaxDepth. A smaller stack is cheaper: SwiftShader's WebGL2 zeroes every local array each
+// pixel, and the 66 entries of the largest cost a fifth of the shipped scene's trace.
+int traceStackFor(size_t objects, int deepestTree);
+
 }  // namespace reflect

@@ -146,4 +146,13 @@ PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector
   return packed;
 }
 
+int traceStackFor(size_t objects, int deepestTree) {
+  constexpr int kLargest = 2 * kBvhMaxDepth + 2;
+  const size_t top = std::max<size_t>(objects, 1) - 1;
+  const int tree = std::clamp(deepestTree, 1, kBvhMaxDepth) - 1;
+  if (top >= static_cast<size_t>(kLargest)) return kLargest;
+  const int needed = std::max(static_cast<int>(top) + tree, 1);
+  return std::min((needed + 7) / 8 * 8, kLargest);
+}
+
 }  // namespace reflect

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/bvh.h"
 #include "core/fresnel.h"
 #include "core/ggx.h"
 #include "gfx/probe_capture.h"
@@ -32,6 +33,8 @@ ProgramKey EnvironmentBinding::keyFor(const Scene& scene, const FramePlan& plan,
   if (plan.traces(item.object)) {
     key.search = Search::Exact;
     key.traceGeneral = plan.tracesGeneral(item.object);  // the planner's rule, costed there
+    key.traceStack =
+        traceStackFor(scene.objects.size(), s_.exact ? s_.exact->deepestMesh() : kBvhMaxDepth);
     return key;
   }
   // A mirror seen in another probe's capture looks its own cube up plainly: that view is a

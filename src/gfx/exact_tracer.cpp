@@ -84,6 +84,14 @@ void ExactTracer::setMesh(const std::string& name, std::shared_ptr<const MeshBvh
   atlasDirty_ = true;
 }
 
+int ExactTracer::deepestMesh() const {
+  int deepest = 1;
+  for (const auto& [name, bvh] : meshes_) {
+    if (bvh) deepest = std::max(deepest, bvh->tree.depth);
+  }
+  return deepest;
+}
+
 std::string ExactTracer::setSkybox(const CubeFaces* faces) {
   sky_.reset();
   if (!faces) return {};

@@ -59,6 +59,8 @@ class ExactTracer {
 
   // Mesh `name`'s tree (level 0, object space); replaces the one it had.
   void setMesh(const std::string& name, std::shared_ptr<const MeshBvh> bvh);
+  // The most levels of any mesh's tree held (for core/bvh.h traceStackFor; 1 with none).
+  int deepestMesh() const;
   // The sky a ray that meets nothing sees (null: the clear colour). Returns "" or a message.
   std::string setSkybox(const CubeFaces* faces);
   // The frame's placement: the top level over `scene`'s objects placed by `plan`'s model

@@ -34,6 +34,8 @@ struct ProgramKey {
   // objects, glass crossed inside); without it, a ray meets Phong surfaces or the sky only, and
   // the program holds one trace and one Phong.
   bool traceGeneral = false;
+  // Search::Exact: the entries of the walk's stack (core/bvh.h traceStackFor); 0 the largest.
+  int traceStack = 0;
   // Environment, a rough mirror (SceneObject::rough()): its reflection is averaged over a GGX
   // lobe, read from the probe's prefiltered levels or, traced, by lobe rays (ROUGH 1). Mirrors of
   // roughness 0 keep the program they had, so their pixels cannot change.

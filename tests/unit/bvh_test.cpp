@@ -160,6 +160,7 @@ TEST(Bvh, SkipAndOnly) {
 // texels: one loop over both levels, four texels read a turn.
 struct PackedWalk {
   const std::vector<float>& texels;  // the atlas with the frame's texels in place
+  mutable size_t deepest = 0;        // the most entries its stack held, over every walk
   glm::vec4 at(int texel) const {
     const size_t i = static_cast<size_t>(texel) * 4;
     if (i + 4 > texels.size()) return glm::vec4(0.0f);  // the shader reads zeros past the end
@@ -199,6 +200,7 @@ struct PackedWalk {
         if (std::max(tl, tr) != INFINITY) {
           stack.push_back(leftFirst ? std::array<float, 3>{c.w, e.w, tr}
                                     : std::array<float, 3>{a.w, b.w, tl});
+          deepest = std::max(deepest, stack.size());
         }
         ref = static_cast<int>(leftFirst ? a.w : c.w);
         count = static_cast<int>(leftFirst ? b.w : e.w);
@@ -332,6 +334,44 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
   EXPECT_GT(hits, 600);  // aimed at vertices (on edges, some slip past): 782 meet one
   EXPECT_FALSE(packed.phongEmpty);
   EXPECT_LT(phongSteps, skipSteps);
+}
+
+TEST(Bvh, TheWalksStackHoldsTheDeepestPathOfBothLevels) {
+  // A path meets at most objects - 1 interior nodes of the top level and depth - 1 of a tree.
+  EXPECT_EQ(traceStackFor(4, 15), 24);  // 3 + 14, in steps of 8
+  EXPECT_EQ(traceStackFor(1, 1), 8);
+  EXPECT_EQ(traceStackFor(0, 0), 8);
+  EXPECT_EQ(traceStackFor(9, 9), 16);
+  EXPECT_EQ(traceStackFor(100, 20), 2 * kBvhMaxDepth + 2);  // never more than both full levels
+  EXPECT_EQ(traceStackFor(1, 99), 32);                      // a tree is at most kBvhMaxDepth
+  // The walk on the CPU, whose stack grows as it needs, never needs more: a skewed scene of
+  // many objects in a row and a deep mesh, every ray through all of them.
+  const MeshData strip = randomTriangles(2000, 3);
+  const auto tree = std::make_shared<const MeshBvh>(buildMeshBvh(shared(strip)));
+  std::vector<BvhInstance> instances(12);
+  for (size_t i = 0; i < instances.size(); ++i) {
+    instances[i].mesh = tree;
+    instances[i].model = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -3.0f * float(i)));
+    instances[i].inverse = glm::inverse(instances[i].model);
+  }
+  BvhAtlas atlas;
+  atlas.add("m", tree);
+  Scene scene;
+  scene.objects.resize(instances.size());
+  const std::vector<PackedRef> roots(instances.size(), atlas.roots().at("m").ref);
+  const int first = static_cast<int>(atlas.texelCount());
+  const PackedScene packed = packScene(scene, buildSceneBvh(instances), roots, {}, first);
+  std::vector<float> texels = allTexels(atlas);
+  texels.insert(texels.end(), packed.traversal.begin(), packed.traversal.end());
+  const PackedWalk walk{texels};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> at(-1.0f, 1.0f);
+  for (int r = 0; r < 500; ++r) {
+    const glm::vec3 d = glm::normalize(glm::vec3(0.1f * at(rng), 0.1f * at(rng), -1.0f));
+    walk.trace(packed.header, glm::vec3(at(rng), at(rng), 10.0f), d);
+  }
+  EXPECT_GT(walk.deepest, 4u);
+  EXPECT_LE(walk.deepest, static_cast<size_t>(traceStackFor(instances.size(), tree->tree.depth)));
 }
 
 TEST(Bvh, NoPhongObjectLeavesThePhongTopLevelEmpty) {
