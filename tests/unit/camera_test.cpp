@@ -277,3 +277,30 @@ TEST(NormalMatrix, IsTheInverseTransposeUpToScaleAndStaysFiniteWhenSingular) {
 
 }  // namespace
 }  // namespace reflect
+
+namespace reflect {
+namespace {
+
+TEST(NearPlaneReach, IsTheDistanceToTheNearPlanesCorners) {
+  // A cube face: 90 degrees, square, near 1: the corners at (+-1, +-1, -1).
+  EXPECT_NEAR(nearPlaneReach(glm::perspective(glm::radians(90.0f), 1.0f, 1.0f, 100.0f)),
+              std::sqrt(3.0f), 1e-5f);
+  // The default camera, 70 degrees tall on a 2:1 target, near 0.5.
+  const float tanY = std::tan(glm::radians(35.0f)), tanX = 2.0f * tanY;
+  EXPECT_NEAR(nearPlaneReach(glm::perspective(glm::radians(70.0f), 2.0f, 0.5f, 100.0f)),
+              0.5f * std::sqrt(1.0f + tanX * tanX + tanY * tanY), 1e-5f);
+  // Not a symmetric perspective: nothing is taken to be outside.
+  EXPECT_EQ(nearPlaneReach(glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 1.0f, 10.0f)), 0.0f);
+  EXPECT_EQ(nearPlaneReach(glm::frustum(-1.0f, 2.0f, -1.0f, 1.0f, 1.0f, 10.0f)), 0.0f);
+  EXPECT_EQ(nearPlaneReach(glm::mat4(1.0f)), 0.0f);
+}
+
+TEST(NearPlaneReach, DistanceToABoxIsZeroInsideIt) {
+  const Bounds box{glm::vec3(-1.0f), glm::vec3(1.0f)};
+  EXPECT_EQ(distanceToBox(glm::vec3(0.5f, 0.0f, -0.5f), box), 0.0f);
+  EXPECT_FLOAT_EQ(distanceToBox(glm::vec3(4.0f, 0.0f, 0.0f), box), 3.0f);
+  EXPECT_FLOAT_EQ(distanceToBox(glm::vec3(4.0f, 5.0f, 1.0f), box), 5.0f);  // (3, 4, 0) away
+}
+
+}  // namespace
+}  // namespace reflect
