@@ -88,7 +88,7 @@ void exactTriangle(vec4 a, vec3 e1, vec3 e2, vec3 o, vec3 d, float tMin, int ins
 // at `ref` and, by `count`, tests an interior node's two children, one triangle of a leaf, or
 // enters an object (the ray moves into its space; its nodes are pushed above `base`, and the
 // ray moves back when the walk pops below it). Every turn reads the same texture the same way:
-// a software rasteriser runs each turn's whole body for every pixel.
+// a software rasteriser runs the union of its pixels' branches each turn.
 ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only) {
   ExactHit best = ExactHit(kExactFar, -1, -1, 0.0, 0.0);
   if (u_exactEmpty == 1) return best;

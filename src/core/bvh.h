@@ -99,9 +99,10 @@ RayHit intersectScene(const SceneBvh& scene, const glm::vec3& origin, const glm:
 // The shader walks both levels in one loop, and each turn of it reads the same four texels
 // (kStepTexels) from one texture, the atlas, whatever it visits there: an interior node, a
 // triangle or a placed object. A software rasteriser (SwiftShader, llvmpipe) runs a fragment
-// shader on several pixels at once and executes every branch of a loop's body each turn, for
-// every pixel (a branch no pixel takes included), so a turn costs its whole body: nested loops
-// and fetches from several textures per turn would multiply.
+// shader on several pixels at once, each turn the union of what they take, so nested loops and
+// fetches from several textures per turn multiply (the old walk's did). A branch none of them
+// takes cost SwiftShader under a millisecond a frame when padded with eight fetches
+// (docs/performance.md): it is skipped.
 //
 // RGBA32F texels, kBvhTextureWidth a row; indices and counts are stored as floats (exact below
 // 2^24 texels).
