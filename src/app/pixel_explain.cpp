@@ -8,6 +8,7 @@
 #include "core/accuracy_settings.h"
 #include "core/cube_sampling.h"
 #include "core/fresnel.h"
+#include "core/irradiance.h"
 #include "core/reference_shading.h"
 #include "core/settings_schema.h"
 #include "gfx/cube_readback.h"
@@ -73,6 +74,26 @@ ExactSight exactAlong(const Demo& demo, const SceneBvh& placed, const TraceRay& 
   return sight;
 }
 
+// A probe-lit figure's irradiance at the surface's normal: the probe's colour faces read back and
+// projected on the CPU, as irradiance_project.vert projects them (ProbeIrradianceGpu holds the
+// two together). Nothing for any other pixel.
+std::string readIrradiance(const Demo& demo, const SurfacePoint& surface, PixelExplanation& e) {
+  const ProbePlan* light = e.object >= 0 ? demo.lastPlan().irradianceOf(e.object) : nullptr;
+  if (light == nullptr) return {};
+  const CubeCaptureTarget* target =
+      demo.renderer() ? demo.renderer()->probeTarget(light->reflector) : nullptr;
+  if (target == nullptr) {
+    return "the probe of object " + std::to_string(light->reflector + 1) + " has not been captured";
+  }
+  Result<CubeFaces> faces = readCubeFaces(*target, FacesChannel::Colour);
+  if (!faces) return faces.error();
+  e.surfacePoint = surface.position;
+  e.normal = surface.normal;
+  e.irradianceProbe = light->reflector;
+  e.irradiance = irradianceAt(projectIrradiance(faces.value()), surface.normal);
+  return {};
+}
+
 // Why pixel `e` has no numbers to explain, or "" when it is a probed mirror or glass pixel.
 std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
   if (e.object < 0) return "the view ray meets nothing there: the pixel shows the background";
@@ -81,12 +102,18 @@ std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
   if (const ProbePlan* light = demo.lastPlan().irradianceOf(e.object)) {
     // A probe-lit figure: it looks no reflection up, but its ambient comes from a probe.
     const glm::vec3& c = light->centre;
+    const glm::vec3& n = e.normal;
+    const glm::ivec3 rgb = colourBytes(e.irradiance);
     return what + formatLine(
                       " is phong, lit by probe: its ambient is the irradiance of object "
                       "%d's probe (centre %.2f, %.2f, %.2f), order-2 spherical harmonics "
-                      "at its normal, %s",
+                      "at its normal, %s. Here the normal is %.3f, %.3f, %.3f and the "
+                      "irradiance E / pi = %.3f, %.3f, %.3f (RGB %d %d %d; the constant "
+                      "ambient would be %.2f)",
                       light->reflector + 1, c.x, c.y, c.z,
-                      light->projectIrradiance ? "projected this frame" : "as last projected");
+                      light->projectIrradiance ? "projected this frame" : "as last projected", n.x,
+                      n.y, n.z, e.irradiance.r, e.irradiance.g, e.irradiance.b, rgb.r, rgb.g, rgb.b,
+                      demo.scene().light.ambient);
   }
   if (object.material != Material::Mirror && object.material != Material::Glass) {
     return what + " is " + materialName(object.material) +
@@ -208,6 +235,9 @@ Result<PixelExplanation> explainPixel(Demo& demo, int x, int y, int width, int h
   const SceneBvh placed = placedObjects(demo, e.seconds);
   const SurfacePoint surface = firstSurface(placed, *view);
   e.object = surface.object;
+  if (std::string error = readIrradiance(demo, surface, e); !error.empty()) {
+    return Result<PixelExplanation>::failure(error);
+  }
   e.message = noExplanation(demo, e);
   if (e.object >= 0) {
     e.mesh = demo.scene().objects[static_cast<size_t>(e.object)].mesh;

@@ -41,6 +41,11 @@ struct PixelExplanation {
   bool outside = false;  // the pixel is not in the frame
 
   int object = -1;  // what the view ray meets (-1: nothing)
+  // A probe-lit figure's pixel (message set): the probe whose irradiance lights it (its owner's
+  // index) and E / pi at the surface's normal, the ambient light the figure's colour takes
+  // there (the CPU's projection of the probe's faces read back: core/irradiance.h).
+  int irradianceProbe = -1;
+  glm::vec3 irradiance{0.0f};
   std::string mesh;
   Material material = Material::Phong;
   std::string search;    // the lookup the renderer drew it with: plain, linear or hierarchical

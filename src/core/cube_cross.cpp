@@ -1,5 +1,6 @@
 #include "core/cube_cross.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/bitmap_font.h"
@@ -69,7 +70,8 @@ RgbaImage backgroundImage(int width, int height) {
 }
 
 const char* facesChannelName(FacesChannel channel) {
-  static const char* const kNames[] = {"colour", "distance", "layer2"};  // FacesChannel's order
+  static const char* const kNames[] = {"colour", "distance", "layer2",
+                                       "irradiance"};  // FacesChannel's order
   return kNames[static_cast<size_t>(channel)];
 }
 
@@ -136,14 +138,24 @@ std::string faceStatus(const FaceMark& mark) {
   return "STALE " + std::to_string(mark.ageFrames) + (mark.ageFrames == 1 ? " FRAME" : " FRAMES");
 }
 
+int labelledCrossWidth(const CrossGeometry& g, const std::array<FaceMark, 6>& marks,
+                       const std::string& title) {
+  int legend = textWidth(title, 1);
+  for (int face = 0; face < 6; ++face) {
+    const std::string line = faceLabel(face) + "  " + faceStatus(marks[static_cast<size_t>(face)]);
+    legend = std::max(legend, 2 * kGlyphAdvance + textWidth(line, 1));
+  }
+  return std::max(g.width, legend + 2 * g.margin);
+}
+
 RgbaImage unfoldCross(const CubeFaces& faces, const std::array<FaceMark, 6>& marks, bool labels,
                       const std::string& title) {
   const CrossGeometry g = crossGeometry(faces[0].width);
   RgbaImage view;
-  view.width = g.width;
+  view.width = labels ? labelledCrossWidth(g, marks, title) : g.width;
   view.height = g.height;
-  view.pixels.resize(static_cast<size_t>(g.width) * static_cast<size_t>(g.height) * 4);
-  fillRect(view, 0, 0, g.width, g.height, kCrossBackground);
+  view.pixels.resize(static_cast<size_t>(view.width) * static_cast<size_t>(g.height) * 4);
+  fillRect(view, 0, 0, view.width, g.height, kCrossBackground);
   for (size_t face = 0; face < 6; ++face) {
     const int x = g.squareOrigin[face][0];
     const int y = g.squareOrigin[face][1];

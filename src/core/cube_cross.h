@@ -33,6 +33,7 @@ enum class FacesChannel {
   Colour,       // the colour layer
   Distance,     // the stored distance from the probe centre, grey, near bright
   SecondLayer,  // the second depth layer's colour (layered search)
+  Irradiance,   // the colour layer's order-2 irradiance: what a probe-lit reader facing there takes
 };
 
 const char* facesChannelName(FacesChannel channel);
@@ -60,8 +61,14 @@ std::string faceLabel(int face);
 // "CAPTURED", "STALE 3 FRAMES" or "EMPTY".
 std::string faceStatus(const FaceMark& mark);
 
+// The width of the labelled view: the cross's, or wider where the legend (`title`, then a line a
+// face) needs it, so that small faces (a probe-lit figure's 32 texels) do not cut the legend off.
+int labelledCrossWidth(const CrossGeometry& g, const std::array<FaceMark, 6>& marks,
+                       const std::string& title);
+
 // The view as one image: six equal squares in GL face order (already converted to RGBA for the
-// channel), the marks, and labels when `labels` is on (`title` is drawn above the legend).
+// channel), the marks, and labels when `labels` is on (`title` is drawn above the legend; the view
+// is labelledCrossWidth wide, the squares where crossGeometry puts them).
 RgbaImage unfoldCross(const CubeFaces& faces, const std::array<FaceMark, 6>& marks, bool labels,
                       const std::string& title);
 

@@ -74,4 +74,27 @@ IrradianceCoefficients projectIrradiance(const CubeFaces& faces) {
   return c;
 }
 
+CubeFaces irradianceCube(const IrradianceCoefficients& c, int size) {
+  CubeFaces faces;
+  for (int f = 0; f < 6; ++f) {
+    RgbaImage& face = faces[static_cast<size_t>(f)];
+    face.width = face.height = size;
+    face.pixels.assign(static_cast<size_t>(size) * static_cast<size_t>(size) * 4, 255);
+    for (int j = 0; j < size; ++j) {
+      for (int i = 0; i < size; ++i) {
+        const float s = (static_cast<float>(i) + 0.5f) / static_cast<float>(size);
+        const float t = (static_cast<float>(j) + 0.5f) / static_cast<float>(size);
+        const glm::vec3 e =
+            glm::min(irradianceAt(c, glm::normalize(faceDirection(f, s, t))), glm::vec3(1.0f));
+        const size_t texel = 4 * (static_cast<size_t>(j) * static_cast<size_t>(size) + i);
+        for (int k = 0; k < 3; ++k) {
+          face.pixels[texel + static_cast<size_t>(k)] =
+              static_cast<uint8_t>(std::lround(e[k] * 255.0f));
+        }
+      }
+    }
+  }
+  return faces;
+}
+
 }  // namespace reflect

@@ -33,4 +33,9 @@ glm::vec3 irradianceAt(const IrradianceCoefficients& c, const glm::vec3& n);
 // cube_sampling.h reads them), each texel weighed by its solid angle.
 IrradianceCoefficients projectIrradiance(const CubeFaces& faces);
 
+// The irradiance cube: six faces of `size` texels whose texel in direction n is irradianceAt(c, n)
+// (clamped to 1, rounded to bytes), the ambient light a probe-lit reader with that normal takes.
+// The faces view shows it (FacesChannel::Irradiance).
+CubeFaces irradianceCube(const IrradianceCoefficients& c, int size);
+
 }  // namespace reflect

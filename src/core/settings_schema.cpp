@@ -56,9 +56,9 @@ SettingInfo inFolder(SettingInfo info, std::string folder) {
 
 constexpr const char* kInsideFolder = "Inside the frame";
 const std::vector<std::string> kInsideViews = {"off", "faces", "faceuse"};
-const std::vector<std::string> kFacesChannels = {facesChannelName(FacesChannel::Colour),
-                                                 facesChannelName(FacesChannel::Distance),
-                                                 facesChannelName(FacesChannel::SecondLayer)};
+const std::vector<std::string> kFacesChannels = {
+    facesChannelName(FacesChannel::Colour), facesChannelName(FacesChannel::Distance),
+    facesChannelName(FacesChannel::SecondLayer), facesChannelName(FacesChannel::Irradiance)};
 
 template <class E>
 E enumAt(const std::vector<std::string>& names, const std::string& name) {
@@ -306,7 +306,10 @@ const std::vector<SettingField<ViewSettings>>& viewFields() {
                        "what the faces view shows of each texel: colour, distance (the stored "
                        "depth along each face's look "
                        "direction, near bright; needs the depth search) or layer2 (the second "
-                       "layer's colour; needs search: hierarchical with layers 2)",
+                       "layer's colour; needs search: hierarchical with layers 2) or irradiance "
+                       "(the colour faces' order-2 "
+                       "spherical harmonics, each texel the ambient light a probe-lit figure "
+                       "whose normal points there takes)",
                        kFacesChannels),
                 kInsideFolder),
        [](const V& s) { return json(facesChannelName(s.facesChannel)); },

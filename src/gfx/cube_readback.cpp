@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/irradiance.h"
 #include "gfx/gl_handle.h"
 
 namespace reflect {
@@ -79,7 +80,7 @@ Result<CubeFaces> readCubeFaces(const CubeCaptureTarget& target, FacesChannel ch
                                 face);
       faces[static_cast<size_t>(face)] = readDistance(size);
     } else {
-      const int layer = channel == FacesChannel::SecondLayer ? 1 : 0;
+      const int layer = channel == FacesChannel::SecondLayer ? 1 : 0;  // irradiance: the colours'
       glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
                              static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
                              target.texture(layer), 0);
@@ -87,6 +88,9 @@ Result<CubeFaces> readCubeFaces(const CubeCaptureTarget& target, FacesChannel ch
     }
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
+  // Projected here as irradiance_project.vert projects the probe's box chain on the GPU (both
+  // weigh each texel by its solid angle), so that it reads back nothing the frame does not need.
+  if (channel == FacesChannel::Irradiance) return irradianceCube(projectIrradiance(faces), size);
   return faces;
 }
 

@@ -12,7 +12,9 @@ namespace reflect {
 // Colour and SecondLayer read the colour cube of layer 0 or 1 (an RGBA16F cube is read as floats
 // and rounded to bytes). Distance reads the first layer's stored near codes as grey, near bright
 // (255 at the capture's near plane, 0 at infinity: 255 (1 - code / 65535), which is 255 near / z).
-// A channel the probe does not store (distances without the depth search, a second layer without
+// Irradiance reads the colour cube and gives its irradiance cube (core/irradiance.h): what a
+// probe-lit reader of this probe takes, E / pi along each texel's direction. A channel the probe
+// does not store (distances without the depth search, a second layer without
 // layers) is an error that says what setting it needs. The framebuffer bindings are left as they
 // were.
 Result<CubeFaces> readCubeFaces(const CubeCaptureTarget& target, FacesChannel channel);

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "app/faces_view.h"
+#include "core/irradiance.h"
 #include "core/scene.h"
 #include "gfx/cube_readback.h"
 #include "gfx/offscreen_target.h"
@@ -125,6 +126,49 @@ TEST(FacesView, WithTheViewOnTheScreenIsTheCrossCentred) {
                           static_cast<size_t>(view.value().width) * 4),
               0)
         << "row " << y;
+  }
+}
+
+// probe-lit: the view steps to mario's own probe (the frame's probes in order), and the
+// irradiance channel shows what that figure takes from it: its colour faces projected on the
+// order-2 harmonics and evaluated at each texel's direction (core/irradiance.h, whose test holds
+// the numbers), the title naming the channel.
+TEST(FacesView, TheIrradianceChannelShowsTheLightAProbeLitFigureTakes) {
+  Result<Scene> scene = loadNamedScene("probe-lit");
+  ASSERT_TRUE(scene) << scene.error();
+  auto demo = testing::makeDemo(scene.take());
+  auto screen = OffscreenTarget::create(64, 64);
+  ASSERT_TRUE(screen);
+  demo->frame(1.0, screen.value().framebuffer(), 64, 64, true);
+  const FramePlan& plan = demo->lastPlan();
+  constexpr int kMario = 2;
+  int shown = 0;
+  for (size_t i = 0; i < plan.probes.size(); ++i) {
+    if (plan.probes[i].reflector == kMario) shown = static_cast<int>(i) + 1;
+  }
+  ASSERT_GT(shown, 0) << "mario's own probe is not in the plan";
+  const Result<RgbaImage> view =
+      composeFacesView(*demo->renderer(), demo->scene(), plan, demo->insideViews().ages(),
+                       FacesChannel::Irradiance, 0, 0, shown);
+  ASSERT_TRUE(view) << view.error();
+  testing::saveOutput(view.value(), "faces_view_irradiance.png");
+  const CubeCaptureTarget* probe = demo->renderer()->probeTarget(kMario);
+  ASSERT_NE(probe, nullptr);
+  ASSERT_EQ(probe->faceSize(), kIrradianceFaceSize);
+  const Result<CubeFaces> colours = readCubeFaces(*probe, FacesChannel::Colour);
+  const Result<CubeFaces> light = readCubeFaces(*probe, FacesChannel::Irradiance);
+  ASSERT_TRUE(colours && light);
+  const CubeFaces expected = irradianceCube(projectIrradiance(colours.value()), probe->faceSize());
+  const CrossGeometry g = crossGeometry(probe->faceSize());
+  for (size_t f = 0; f < 6; ++f) {
+    ASSERT_EQ(light.value()[f].pixels, expected[f].pixels) << "face " << f;
+    ASSERT_NE(light.value()[f].pixels, colours.value()[f].pixels) << "face " << f;
+    for (int y = 0; y < probe->faceSize(); ++y) {
+      ASSERT_EQ(std::memcmp(view.value().at(g.squareOrigin[f][0], g.squareOrigin[f][1] + y),
+                            expected[f].at(0, y), static_cast<size_t>(probe->faceSize()) * 4),
+                0)
+          << "face " << f << " row " << y;
+    }
   }
 }
 

@@ -9,6 +9,8 @@
 
 #include "app/headless_frames.h"
 #include "app/pixel_explain.h"
+#include "app/text_line.h"
+#include "core/reference_shading.h"
 #include "gl_fixture.h"
 #include "platform/native/model_paths.h"
 #include "reference/ray_query.h"
@@ -327,6 +329,54 @@ TEST(PixelExplain, ARoughSkyboxMirrorNamesTheSkysLevels) {
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("sharp"), std::string::npos) << text;
+}
+
+// probe-lit at 320 x 240, t = 1 s: a pixel of sonic and one of mario (objects 2 and 3), each lit
+// by a probe of its own. The pick names that probe and the irradiance at the pixel's normal; put
+// through the course's Phong with that ambient, it gives the frame's own pixel: the irradiance
+// the CPU projects from the faces read back is the one the GPU projected and lit the pixel with.
+constexpr glm::ivec2 kSonicPixel{122, 140};
+constexpr glm::ivec2 kMarioPixel{219, 175};
+// The frame is RGBA8 and the projections differ in filtering (the GPU's reads the box chain's 8 x 8
+// level, the CPU's the 32-texel faces): at most 1 level apart measured, held at 2. The constant
+// ambient would be 20 or more levels off at both pixels (mario's faces away from the light: its
+// colour there is the irradiance alone).
+constexpr int kLitLevels = 2;
+
+Scene probeLitScene() {
+  Result<Scene> scene = loadNamedScene("probe-lit");
+  EXPECT_TRUE(scene) << scene.error();
+  return scene ? scene.take() : Scene{};
+}
+
+TEST(PixelExplain, AProbeLitFigureNamesTheIrradianceItsPixelWasLitWith) {
+  constexpr int kWidth = 320, kHeight = 240;
+  auto demo = testing::makeDemo(probeLitScene());
+  const Result<RgbaImage> frame = renderFrameAt(*demo, 1.0, kWidth, kHeight);
+  ASSERT_TRUE(frame) << frame.error();
+  for (const auto& [pixel, object] : {std::pair{kSonicPixel, 1}, std::pair{kMarioPixel, 2}}) {
+    Result<PixelExplanation> e = explainPixel(*demo, pixel.x, pixel.y, kWidth, kHeight);
+    ASSERT_TRUE(e) << e.error();
+    const PixelExplanation& x = e.value();
+    ASSERT_EQ(x.object, object);
+    EXPECT_EQ(x.irradianceProbe, object);  // its own probe ("own-probe")
+    EXPECT_NE(x.message.find("is phong, lit by probe"), std::string::npos) << x.message;
+    EXPECT_NE(x.message.find(formatLine("E / pi = %.3f, %.3f, %.3f", x.irradiance.r, x.irradiance.g,
+                                        x.irradiance.b)),
+              std::string::npos)
+        << x.message;
+    const SceneObject& figure = demo->scene().objects[static_cast<size_t>(object)];
+    const PhongLight& light = demo->scene().light;
+    const glm::vec3 lit =
+        phongLit(figure.colour, x.surfacePoint, x.normal, light.position, x.eye, x.irradiance,
+                 glm::vec4(light.ambient, light.diffuse, light.specular, light.shininess));
+    const glm::ivec3 expected = colourBytes(lit);
+    const uint8_t* drawn = frame.value().at(pixel.x, pixel.y);
+    std::printf("probe-lit pixel %d,%d: E/pi %.3f %.3f %.3f, drawn %d %d %d, explained %d %d %d\n",
+                pixel.x, pixel.y, x.irradiance.r, x.irradiance.g, x.irradiance.b, drawn[0],
+                drawn[1], drawn[2], expected.r, expected.g, expected.b);
+    for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(drawn[k] - expected[k]), kLitLevels) << k;
+  }
 }
 
 }  // namespace

@@ -96,7 +96,7 @@ TEST(CliOptions, ParsesTheFacesView) {
   EXPECT_EQ(o.view.facesChannel, FacesChannel::Distance);
   EXPECT_EQ(mustParse({"render"}).view.facesChannel, FacesChannel::Colour);
   EXPECT_NE(errorOf({"render", "--faces-channel", "depth"})
-                .find("\"depth\" is not one of colour, distance, layer2"),
+                .find("\"depth\" is not one of colour, distance, layer2, irradiance"),
             std::string::npos)
       << errorOf({"render", "--faces-channel", "depth"});
 }

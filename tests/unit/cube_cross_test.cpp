@@ -41,7 +41,8 @@ TEST(CubeCross, EachSquareHoldsItsFaceTexelForTexel) {
   for (bool labels : {false, true}) {
     const RgbaImage view = unfoldCross(faces, allCaptured(), labels, "CHANNEL COLOUR");
     const CrossGeometry g = crossGeometry(16);
-    ASSERT_EQ(view.width, g.width);
+    ASSERT_EQ(view.width,
+              labels ? labelledCrossWidth(g, allCaptured(), "CHANNEL COLOUR") : g.width);
     ASSERT_EQ(view.height, g.height);
     for (size_t f = 0; f < 6; ++f) {
       for (int y = 0; y < 16; ++y) {
@@ -121,6 +122,23 @@ TEST(CubeCross, LabelsAreTheCoursesFaceTable) {
   EXPECT_EQ(faceStatus(FaceMark{false, 1, true}), "STALE 1 FRAME");
   EXPECT_EQ(faceStatus(FaceMark{false, 7, true}), "STALE 7 FRAMES");
   EXPECT_EQ(faceStatus(FaceMark{false, 0, false}), "EMPTY");
+}
+
+// Small faces widen the labelled view to its legend; 256-texel faces' cross is wider than any
+// legend line and keeps its width. The title's last glyph lies inside the view.
+TEST(CubeCross, TheLegendIsNeverCutOff) {
+  const std::string title = "PROBE OF OBJECT 3 (MARIO.OBJ)  2 OF 2 PROBES  CHANNEL IRRADIANCE";
+  std::array<FaceMark, 6> marks = allCaptured();
+  const CrossGeometry small = crossGeometry(32);
+  const int wide = labelledCrossWidth(small, marks, title);
+  EXPECT_EQ(wide, textWidth(title, 1) + 2 * small.margin);
+  EXPECT_GT(wide, small.width);
+  const RgbaImage view = unfoldCross(patternedFaces(32), marks, true, title);
+  EXPECT_EQ(view.width, wide);
+  EXPECT_EQ(view.height, small.height);
+  marks[1] = FaceMark{false, 123, true};  // "STALE 123 FRAMES" is no wider than the title
+  EXPECT_EQ(labelledCrossWidth(small, marks, title), wide);
+  EXPECT_EQ(labelledCrossWidth(crossGeometry(256), marks, title), crossGeometry(256).width);
 }
 
 TEST(BitmapFont, GlyphsAreTheirArtAndAMissingOneIsABox) {

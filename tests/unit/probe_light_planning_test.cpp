@@ -182,5 +182,40 @@ TEST(Irradiance, UniformAndHalfLitEnvironments) {
   EXPECT_NEAR(irradianceAt(h, {0, 0, -1}).r, 0.0f, 0.07f);
 }
 
+// The irradiance cube the faces view shows: the uniform environment's is the environment itself,
+// texel for texel; the half-lit one's face centres are E / pi along each axis (+Z white, the four
+// sideways faces half grey, -Z black, within order 2's error), and every face is size x size.
+TEST(Irradiance, TheIrradianceCubeIsTheLightEachNormalTakes) {
+  constexpr int kFace = 16, kShown = 8;
+  CubeFaces uniform, half;
+  for (int f = 0; f < 6; ++f) {
+    uniform[static_cast<size_t>(f)] = filledFace(kFace, 51, 102, 204);
+    half[static_cast<size_t>(f)] = filledFace(kFace, f == 4 ? 255 : 0, 0, 0);
+  }
+  const CubeFaces same = irradianceCube(projectIrradiance(uniform), kShown);
+  for (const RgbaImage& face : same) {
+    ASSERT_EQ(face.width, kShown);
+    ASSERT_EQ(face.height, kShown);
+    EXPECT_EQ(face.pixels, filledFace(kShown, 51, 102, 204).pixels);
+  }
+  // +Z's face alone lit, radiance 1: E / pi along +Z is that face's projected solid angle over
+  // pi, 0.5541 (141.3 of 255, integrated numerically); along +X its half on that side is one of
+  // four equal shares of the rest of +X's hemisphere, (1 - 0.5541) / 4 = 0.1115 (28.4); along -Z
+  // nothing. Order 2 keeps each within 8.
+  const CubeFaces lit = irradianceCube(projectIrradiance(half), kShown);
+  const auto centre = [&lit](int face) {
+    const RgbaImage& image = lit[static_cast<size_t>(face)];
+    // The four texels round the centre, averaged: the face's axis direction.
+    int sum = 0;
+    for (int y : {kShown / 2 - 1, kShown / 2}) {
+      for (int x : {kShown / 2 - 1, kShown / 2}) sum += image.at(x, y)[0];
+    }
+    return sum / 4.0;
+  };
+  EXPECT_NEAR(centre(4), 141.3, 8.0);
+  for (int side : {0, 1, 2, 3}) EXPECT_NEAR(centre(side), 28.4, 8.0);
+  EXPECT_NEAR(centre(5), 0.0, 8.0);
+}
+
 }  // namespace
 }  // namespace reflect

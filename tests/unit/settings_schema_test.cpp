@@ -98,7 +98,7 @@ TEST(SettingsSchema, TheInsideViewsAreViewSettingsInTheirOwnFolder) {
   EXPECT_EQ(view.inside, InsideView::Faces);
   EXPECT_EQ(view.facesChannel, FacesChannel::Distance);
   EXPECT_EQ(applySettingsJson(json::parse(R"({"facesChannel": "depth"})"), viewFields(), view),
-            "facesChannel: \"depth\" is not one of colour, distance, layer2");
+            "facesChannel: \"depth\" is not one of colour, distance, layer2, irradiance");
   EXPECT_EQ(view.facesChannel, FacesChannel::Distance);
   EXPECT_EQ(settingsJson(view, viewFields())["facesChannel"], "distance");
   EXPECT_EQ(applySettingsJson(json::parse(R"({"inside": "faceuse", "facesProbe": 2})"),

@@ -58,6 +58,41 @@ test('a channel the probe does not store is refused by name, and the link keeps 
   await expect(page).toHaveURL(/inside=faces/);
 });
 
+// The view's own colours (core/cube_cross.cpp, core/bitmap_font.h): background, label text and
+// the three face marks. Any other pixel is a face's texel.
+const VIEW_COLOURS = [CROSS_BACKGROUND, [235, 235, 235], [70, 200, 100], [235, 165, 40], [110, 110, 110]];
+
+function faceTexels(image) {
+  const texels = [];
+  for (let i = 0; i < image.data.length; i += 4) {
+    const rgb = [image.data[i], image.data[i + 1], image.data[i + 2]];
+    if (!VIEW_COLOURS.some((c) => c.every((v, k) => v === rgb[k]))) texels.push(rgb.join(','));
+  }
+  return texels;
+}
+
+test('the irradiance channel shows the light a probe-lit figure takes from its own probe', async ({ page }) => {
+  // probe-lit: each figure has a 32-texel probe of its own; the second is mario's. Its six faces
+  // are 6 x 32 x 32 texels, shown whole; the irradiance (held natively:
+  // FacesView.TheIrradianceChannelShowsTheLightAProbeLitFigureTakes) is not the colours.
+  await openDemo(page, '?scene=probe-lit&inside=faces&facesChannel=irradiance&facesProbe=2&paused');
+  await expect(page.locator('#control-view-facesChannel select')).toHaveValue('irradiance');
+  const light = faceTexels(await renderAndRead(page, 1.0));
+  expect(light.length).toBe(6 * 32 * 32);
+  await page.evaluate(() => window.demo.setView({ facesChannel: 'colour' }));
+  const colours = faceTexels(await renderAndRead(page, 1.0));
+  expect(colours.length).toBe(6 * 32 * 32);
+  // Not the colours: they differ at nearly every texel, and the cosine-weighted average narrows
+  // the range of each channel (the red wall's red, the grey wall's, the blue ground's blue).
+  const differing = light.filter((rgb, i) => rgb !== colours[i]).length;
+  expect(differing).toBeGreaterThan(0.9 * light.length);
+  const range = (texels, k) => {
+    const values = texels.map((rgb) => Number(rgb.split(',')[k]));
+    return Math.max(...values) - Math.min(...values);
+  };
+  for (const k of [0, 1, 2]) expect(range(light, k)).toBeLessThan(range(colours, k));
+});
+
 // core/face_use.h, kFaceUseColours: +X, -X, +Y, -Y, +Z, -Z.
 const FACE_COLOURS = [[230, 40, 40], [40, 210, 230], [50, 200, 60], [220, 60, 220], [50, 90, 240], [240, 220, 40]];
 

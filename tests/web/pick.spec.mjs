@@ -96,6 +96,21 @@ test('a pixel with nothing to explain says so, and the default search says the s
   expect(outside.message).toBe('pixel 800,0 is outside the 800x600 frame (x 0..799, y 0..599)');
 });
 
+test('a probe-lit figure\'s pixel names the irradiance it was lit with', async ({ page }) => {
+  // probe-lit at t = 1 s: a pixel of mario's side facing away from the light (its normal
+  // -0.96, 0.20, 0.17), so its colour is the figure's 0.9 times the irradiance alone. The reply
+  // names mario's own probe and E / pi there; the frame's pixel is that light, within 2 levels.
+  await openDemo(page, '?scene=probe-lit&paused&t=1');
+  const frame = await renderAndRead(page, 1);
+  const reply = await page.evaluate(() => window.demo.explainPixel(547, 437));
+  expect(reply.object).toBe(2);
+  expect(reply.irradianceProbe).toBe(2);
+  expect(reply.message).toContain('is phong, lit by probe');
+  expect(reply.message).toContain(`E / pi = ${reply.irradiance.map((v) => v.toFixed(3)).join(', ')}`);
+  const drawn = pixel(frame, 547, 437);
+  for (const k of [0, 1, 2]) expect(Math.abs(drawn[k] - Math.round(0.9 * reply.irradiance[k] * 255))).toBeLessThanOrEqual(2);
+});
+
 test('a link\'s pick=X,Y explains that pixel once the frame is drawn, and the address bar keeps it while it is shown', async ({ page }) => {
   await openDemo(page, `?paused&t=0&search=hierarchical&pick=${PIXEL.x},${PIXEL.y}`);
   await expect(page.locator('#pick')).toContainText(`pixel ${PIXEL.x},${PIXEL.y} of 800x600`);

@@ -35,6 +35,12 @@ json explanationJson(const reflect::PixelExplanation& e) {
               {"outside", e.outside},
               {"object", e.object}};
   out["lines"] = reflect::explanationLines(e);
+  if (e.irradianceProbe >= 0) {  // a probe-lit figure: the light its normal takes
+    out.update({{"irradianceProbe", e.irradianceProbe},
+                {"normal", vec(e.normal)},
+                {"irradiance", vec(e.irradiance)},
+                {"irradianceBytes", bytes(e.irradiance)}});
+  }
   if (!e.message.empty()) return out;
   out.update({{"mesh", e.mesh},
               {"material", reflect::materialName(e.material)},
