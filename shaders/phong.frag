@@ -20,10 +20,26 @@ uniform float u_shininess;
 layout(std140) uniform ProbeIrradiance {
   vec4 u_irradiance[9];
 };
+// The probe's centre (xyz) and the object's ambientRadius (w; 0: no parallax correction).
+uniform vec4 u_irradianceProxy;
 
 #include "irradiance.glsl"
 
-vec3 probeAmbient(vec3 n) {
+// core/irradiance.h's irradianceDirection: the normal, or with a radius the direction from the
+// probe's centre to where the normal's ray leaves the sphere the surroundings are taken to lie on.
+vec3 irradianceDirection(vec3 n) {
+  float radius = u_irradianceProxy.w;
+  if (radius <= 0.0) return n;
+  vec3 o = v_worldPosition - u_irradianceProxy.xyz;
+  float on = dot(o, n);
+  float t = -on + sqrt(max(on * on - dot(o, o) + radius * radius, 0.0));
+  vec3 d = o + max(t, 0.0) * n;
+  float len = length(d);
+  return len > 1e-6 ? d / len : n;
+}
+
+vec3 probeAmbient(vec3 normal) {
+  vec3 n = irradianceDirection(normal);
   vec3 e = vec3(0.0);
   for (int i = 0; i < 9; ++i) e += u_irradiance[i].rgb * shBasis(n, i);
   return max(e, vec3(0.0));

@@ -90,7 +90,10 @@ std::string readIrradiance(const Demo& demo, const SurfacePoint& surface, PixelE
   e.surfacePoint = surface.position;
   e.normal = surface.normal;
   e.irradianceProbe = light->reflector;
-  e.irradiance = irradianceAt(projectIrradiance(faces.value()), surface.normal);
+  const float radius = demo.scene().objects[static_cast<size_t>(e.object)].ambientRadius;
+  e.irradianceDirection =
+      irradianceDirection(surface.normal, surface.position, light->centre, radius);
+  e.irradiance = irradianceAt(projectIrradiance(faces.value()), e.irradianceDirection);
   return {};
 }
 
@@ -103,17 +106,25 @@ std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
     // A probe-lit figure: it looks no reflection up, but its ambient comes from a probe.
     const glm::vec3& c = light->centre;
     const glm::vec3& n = e.normal;
+    const glm::vec3& d = e.irradianceDirection;
     const glm::ivec3 rgb = colourBytes(e.irradiance);
+    const float radius = object.ambientRadius;
+    const std::string along = radius > 0.0f
+                                  ? formatLine(
+                                        " and it is read along %.3f, %.3f, %.3f (the surroundings "
+                                        "taken %.2f from the centre: ambientRadius)",
+                                        d.x, d.y, d.z, radius)
+                                  : std::string();
     return what + formatLine(
                       " is phong, lit by probe: its ambient is the irradiance of object "
                       "%d's probe (centre %.2f, %.2f, %.2f), order-2 spherical harmonics "
-                      "at its normal, %s. Here the normal is %.3f, %.3f, %.3f and the "
+                      "at its normal, %s. Here the normal is %.3f, %.3f, %.3f%s; the "
                       "irradiance E / pi = %.3f, %.3f, %.3f (RGB %d %d %d; the constant "
                       "ambient would be %.2f)",
                       light->reflector + 1, c.x, c.y, c.z,
                       light->projectIrradiance ? "projected this frame" : "as last projected", n.x,
-                      n.y, n.z, e.irradiance.r, e.irradiance.g, e.irradiance.b, rgb.r, rgb.g, rgb.b,
-                      demo.scene().light.ambient);
+                      n.y, n.z, along.c_str(), e.irradiance.r, e.irradiance.g, e.irradiance.b,
+                      rgb.r, rgb.g, rgb.b, demo.scene().light.ambient);
   }
   if (object.material != Material::Mirror && object.material != Material::Glass) {
     return what + " is " + materialName(object.material) +

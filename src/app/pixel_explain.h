@@ -45,6 +45,7 @@ struct PixelExplanation {
   // index) and E / pi at the surface's normal, the ambient light the figure's colour takes
   // there (the CPU's projection of the probe's faces read back: core/irradiance.h).
   int irradianceProbe = -1;
+  glm::vec3 irradianceDirection{0.0f};  // what it is read along: the normal, or parallax-corrected
   glm::vec3 irradiance{0.0f};
   std::string mesh;
   Material material = Material::Phong;

@@ -41,6 +41,17 @@ glm::vec3 irradianceAt(const IrradianceCoefficients& c, const glm::vec3& n) {
   return glm::max(e, glm::vec3(0.0f));
 }
 
+glm::vec3 irradianceDirection(const glm::vec3& n, const glm::vec3& point, const glm::vec3& centre,
+                              float radius) {
+  if (radius <= 0.0f) return n;
+  const glm::vec3 o = point - centre;
+  const float on = glm::dot(o, n);
+  const float t = -on + std::sqrt(std::max(on * on - glm::dot(o, o) + radius * radius, 0.0f));
+  const glm::vec3 d = o + std::max(t, 0.0f) * n;
+  const float length = glm::length(d);
+  return length > 1e-6f ? d / length : n;
+}
+
 IrradianceCoefficients projectIrradiance(const CubeFaces& faces) {
   std::array<glm::dvec3, kIrradianceCoefficients> sums{};
   double weights = 0.0;

@@ -29,6 +29,13 @@ float shBandFactor(int i);
 // clamped at 0 (phong.frag's probeAmbient).
 glm::vec3 irradianceAt(const IrradianceCoefficients& c, const glm::vec3& n);
 
+// The direction a probe-lit point reads its probe's irradiance along (phong.frag's
+// irradianceDirection): its normal n when `radius` is 0; otherwise from the probe's centre to
+// where the ray point + t n (t > 0) leaves the sphere of that radius about the centre, the
+// surroundings taken to lie on it (SceneObject::ambientRadius). n unit; the result is unit.
+glm::vec3 irradianceDirection(const glm::vec3& n, const glm::vec3& point, const glm::vec3& centre,
+                              float radius);
+
 // The coefficients of a cube given as six faces (GL order, sampled at their texel centres as
 // cube_sampling.h reads them), each texel weighed by its solid angle.
 IrradianceCoefficients projectIrradiance(const CubeFaces& faces);

@@ -78,6 +78,11 @@ struct SceneObject {
   // same from a probe of its own (kIrradianceFaceSize texels a face, at its bounds' centre,
   // without itself in it).
   Ambient ambient = Ambient::Constant;
+  // A probe-lit object's surroundings taken to lie on a sphere of this radius (world units)
+  // about its probe's centre: each point reads the irradiance along the direction from the
+  // centre to where its normal's ray meets that sphere, not along the normal itself (parallax
+  // correction, as box projection does for reflections). 0: infinitely far, no correction.
+  float ambientRadius = 0.0f;
 
   bool usesEnvironment() const { return material != Material::Phong; }
   // What a capture of this object depends on besides its mesh, place and colour (compared by

@@ -95,7 +95,7 @@ SceneObject readObject(const JsonReader& r, std::vector<std::string>& probeGroup
   SceneObject o;
   if (!r.requireObject()) return o;
   r.onlyKeys({"mesh", "translate", "rotate", "scale", "colour", "material", "animation", "probe",
-              "probeCentre", "ambient"});
+              "probeCentre", "ambient", "ambientRadius"});
   if (!r.has("mesh")) r["mesh"].fail("missing (expected an .obj file name)");
   o.mesh = readPath(r["mesh"]);
   if (r.ok() && o.mesh.size() < 5) r["mesh"].fail("expected an .obj file name");
@@ -129,6 +129,13 @@ SceneObject readObject(const JsonReader& r, std::vector<std::string>& probeGroup
       if (o.material != Material::Phong) a.fail("\"" + ambient + "\" lights a Phong object only");
     } else if (ambient != "constant" && a.ok()) {
       a.fail("expected \"constant\", \"probe\" or \"own-probe\"");
+    }
+  }
+  if (r.has("ambientRadius")) {
+    const JsonReader radius = r["ambientRadius"];
+    o.ambientRadius = static_cast<float>(radius.number(0, 0, 1000));
+    if (radius.ok() && o.ambient == Ambient::Constant) {
+      radius.fail("needs \"ambient\": \"probe\" or \"own-probe\"");
     }
   }
   if (r.has("probe")) {

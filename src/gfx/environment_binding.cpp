@@ -64,9 +64,13 @@ void EnvironmentBinding::bindTracer(const EnvironmentUniforms& u, const ProgramK
     s_.exact->bind(u.exact, s_.accuracy.lobeRays, key.traceGeneral);
 }
 
-void EnvironmentBinding::setForObject(const PhongUniforms&, const ProgramKey& key, const Scene&,
-                                      const FramePlan& plan, int object) const {
-  if (key.probeLight) s_.irradiance.bindFor(plan, object);
+void EnvironmentBinding::setForObject(const PhongUniforms& u, const ProgramKey& key,
+                                      const Scene& scene, const FramePlan& plan, int object) const {
+  if (!key.probeLight) return;
+  s_.irradiance.bindFor(plan, object);
+  const ProbePlan* light = plan.irradianceOf(object);
+  const float radius = scene.objects[static_cast<size_t>(object)].ambientRadius;
+  u.irradianceProxy.set(glm::vec4(light ? light->centre : glm::vec3(0.0f), light ? radius : 0.0f));
 }
 
 void EnvironmentBinding::setForObject(const EnvironmentUniforms& u, const ProgramKey& key,

@@ -141,6 +141,40 @@ TEST(ProbeLightScene, AmbientKeyAndItsErrors) {
   EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": "probe"})").error(),
             "lit.json: objects: an object with \"ambient\": \"probe\" needs a live probe to read "
             "(a mirror, glass or cube-textured object with a live environment)");
+  // ambientRadius: the distance its surroundings are taken at (0, the default: infinitely far).
+  EXPECT_EQ(own.value().objects[0].ambientRadius, 0.0f);
+  Result<Scene> near = parse(R"({"mesh": "a.obj", "ambient": "own-probe", "ambientRadius": 6})");
+  ASSERT_TRUE(near) << near.error();
+  EXPECT_EQ(near.value().objects[0].ambientRadius, 6.0f);
+  EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": "own-probe", "ambientRadius": -1})").error(),
+            "lit.json: objects[0].ambientRadius: expected a number from 0 to 1000");
+  EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambientRadius": 6})").error(),
+            "lit.json: objects[0].ambientRadius: needs \"ambient\": \"probe\" or \"own-probe\"");
+}
+
+// The direction a point reads the irradiance along: the normal with no radius or at the probe's
+// centre; off the centre, towards where the normal's ray leaves the sphere of that radius. A
+// point 1 above the centre, normal +X, radius 2: the ray leaves at (sqrt 3, 1, 0), so the
+// direction is (sqrt 3, 1, 0) / 2; radius 1000: nearly the normal.
+TEST(Irradiance, TheDirectionReadIsCorrectedForParallaxByTheRadius) {
+  const glm::vec3 centre(2, -1, 0), x(1, 0, 0);
+  const auto near = [](const glm::vec3& a, const glm::vec3& b) {
+    return glm::length(a - b) < 1e-6f;
+  };
+  EXPECT_EQ(irradianceDirection(x, centre + glm::vec3(0, 1, 0), centre, 0.0f), x);
+  EXPECT_TRUE(near(irradianceDirection(x, centre, centre, 2.0f), x));
+  EXPECT_TRUE(near(irradianceDirection(x, centre + glm::vec3(0, 1, 0), centre, 2.0f),
+                   glm::vec3(std::sqrt(3.0f) / 2.0f, 0.5f, 0.0f)));
+  const glm::vec3 far = irradianceDirection(x, centre + glm::vec3(0, 1, 0), centre, 1000.0f);
+  EXPECT_NEAR(far.x, 1.0f, 1e-6f);
+  EXPECT_NEAR(far.y, 0.001f, 1e-6f);
+  // A normal pointing back towards the centre reads the far side: (0, -1, 0) from 1 above, 2 out.
+  EXPECT_TRUE(
+      near(irradianceDirection(glm::vec3(0, -1, 0), centre + glm::vec3(0, 1, 0), centre, 2.0f),
+           glm::vec3(0, -1, 0)));
+  // Outside the sphere with the ray pointing away, the point itself: unit.
+  const glm::vec3 outside = irradianceDirection(x, centre + glm::vec3(3, 0, 0), centre, 2.0f);
+  EXPECT_TRUE(near(outside, x));
 }
 
 // The basis and its band factors: a uniform environment of radiance c gives E / pi = c in every

@@ -38,6 +38,7 @@ json explanationJson(const reflect::PixelExplanation& e) {
   if (e.irradianceProbe >= 0) {  // a probe-lit figure: the light its normal takes
     out.update({{"irradianceProbe", e.irradianceProbe},
                 {"normal", vec(e.normal)},
+                {"irradianceDirection", vec(e.irradianceDirection)},
                 {"irradiance", vec(e.irradiance)},
                 {"irradianceBytes", bytes(e.irradiance)}});
   }
