@@ -31,6 +31,7 @@ s.background = [0, 0, 0];
 for (const o of s.objects) {
   o.colour = (anyLit ? lit(o) : reflector(o)) ? [1, 1, 1] : [0, 0, 0];
   delete o.ambient;
+  delete o.ambientRadius;
   delete o.material;
 }
 fs.writeFileSync(process.argv[2], JSON.stringify(s));
