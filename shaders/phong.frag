@@ -20,15 +20,22 @@ uniform float u_shininess;
 layout(std140) uniform ProbeIrradiance {
   vec4 u_irradiance[9];
 };
-// The probe's centre (xyz) and the object's ambientRadius (w; 0: no parallax correction).
+// The probe's centre (xyz) and the object's ambientRadius (w; 0: no parallax correction; negative:
+// measured, -w the capture's near plane, the unit of the nearness in u_irradiance[i].w).
 uniform vec4 u_irradianceProxy;
 
 #include "irradiance.glsl"
 
 // core/irradiance.h's irradianceDirection: the normal, or with a radius the direction from the
-// probe's centre to where the normal's ray leaves the sphere the surroundings are taken to lie on.
+// probe's centre to where the normal's ray leaves the sphere the surroundings are taken to lie on;
+// the radius measured as measuredRadius does where the scene sets none.
 vec3 irradianceDirection(vec3 n) {
   float radius = u_irradianceProxy.w;
+  if (radius < 0.0) {
+    float nearness = 0.0;
+    for (int i = 0; i < 9; ++i) nearness += u_irradiance[i].w * shBasis(n, i);
+    radius = -radius / max(nearness, 1e-4);  // kLeastNearness
+  }
   if (radius <= 0.0) return n;
   vec3 o = v_worldPosition - u_irradianceProxy.xyz;
   float on = dot(o, n);

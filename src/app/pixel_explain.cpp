@@ -6,6 +6,7 @@
 #include "app/held_trees.h"
 #include "app/text_line.h"
 #include "core/accuracy_settings.h"
+#include "core/cube_cross.h"
 #include "core/cube_sampling.h"
 #include "core/fresnel.h"
 #include "core/irradiance.h"
@@ -13,6 +14,7 @@
 #include "core/settings_schema.h"
 #include "gfx/cube_readback.h"
 #include "gfx/offscreen_target.h"
+#include "gfx/probe_irradiance.h"
 
 namespace reflect {
 namespace {
@@ -90,9 +92,20 @@ std::string readIrradiance(const Demo& demo, const SurfacePoint& surface, PixelE
   e.surfacePoint = surface.position;
   e.normal = surface.normal;
   e.irradianceProbe = light->reflector;
-  const float radius = demo.scene().objects[static_cast<size_t>(e.object)].ambientRadius;
+  const std::optional<float> set =
+      demo.scene().objects[static_cast<size_t>(e.object)].ambientRadius;
+  e.radiusMeasured = !set;
+  if (set) {
+    e.irradianceRadius = *set;
+  } else {
+    // Measured as the GPU measures it: from the box chain's level the projection reads.
+    const int size = target->faceSize();
+    const int factor = size / std::max(size >> ProbeIrradiance::levelFor(size), 1);
+    e.irradianceRadius = measuredRadius(projectNearness(shrinkFaces(faces.value(), factor)),
+                                        surface.normal, demo.scene().capture.near);
+  }
   e.irradianceDirection =
-      irradianceDirection(surface.normal, surface.position, light->centre, radius);
+      irradianceDirection(surface.normal, surface.position, light->centre, e.irradianceRadius);
   e.irradiance = irradianceAt(projectIrradiance(faces.value()), e.irradianceDirection);
   return {};
 }
@@ -108,13 +121,14 @@ std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
     const glm::vec3& n = e.normal;
     const glm::vec3& d = e.irradianceDirection;
     const glm::ivec3 rgb = colourBytes(e.irradiance);
-    const float radius = object.ambientRadius;
-    const std::string along = radius > 0.0f
-                                  ? formatLine(
-                                        " and it is read along %.3f, %.3f, %.3f (the surroundings "
-                                        "taken %.2f from the centre: ambientRadius)",
-                                        d.x, d.y, d.z, radius)
-                                  : std::string();
+    const float radius = e.irradianceRadius;
+    const std::string along =
+        radius > 0.0f ? formatLine(
+                            " and it is read along %.3f, %.3f, %.3f (the surroundings taken %.2f "
+                            "from the centre: ambientRadius, %s)",
+                            d.x, d.y, d.z, radius,
+                            e.radiusMeasured ? "measured from the probe's distances" : "set")
+                      : std::string();
     return what + formatLine(
                       " is phong, lit by probe: its ambient is the irradiance of object "
                       "%d's probe (centre %.2f, %.2f, %.2f), order-2 spherical harmonics "

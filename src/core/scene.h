@@ -82,7 +82,9 @@ struct SceneObject {
   // about its probe's centre: each point reads the irradiance along the direction from the
   // centre to where its normal's ray meets that sphere, not along the normal itself (parallax
   // correction, as box projection does for reflections). 0: infinitely far, no correction.
-  float ambientRadius = 0.0f;
+  // Unset (the default): measured, for each normal, from the distances the probe captured
+  // (core/irradiance.h's measuredRadius).
+  std::optional<float> ambientRadius;
 
   bool usesEnvironment() const { return material != Material::Phong; }
   // What a capture of this object depends on besides its mesh, place and colour (compared by

@@ -133,7 +133,12 @@ SceneObject readObject(const JsonReader& r, std::vector<std::string>& probeGroup
   }
   if (r.has("ambientRadius")) {
     const JsonReader radius = r["ambientRadius"];
-    o.ambientRadius = static_cast<float>(radius.number(0, 0, 1000));
+    if (radius.isString()) {
+      if (radius.string("") != "measured")
+        radius.fail("expected a number from 0 to 1000 or \"measured\"");
+    } else {
+      o.ambientRadius = static_cast<float>(radius.number(0, 0, 1000));
+    }
     if (radius.ok() && o.ambient == Ambient::Constant) {
       radius.fail("needs \"ambient\": \"probe\" or \"own-probe\"");
     }

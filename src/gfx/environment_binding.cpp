@@ -69,7 +69,9 @@ void EnvironmentBinding::setForObject(const PhongUniforms& u, const ProgramKey& 
   if (!key.probeLight) return;
   s_.irradiance.bindFor(plan, object);
   const ProbePlan* light = plan.irradianceOf(object);
-  const float radius = scene.objects[static_cast<size_t>(object)].ambientRadius;
+  // A radius set in the scene, or (negative) the near plane, for phong.frag to measure it.
+  const std::optional<float> set = scene.objects[static_cast<size_t>(object)].ambientRadius;
+  const float radius = set ? *set : -scene.capture.near;
   u.irradianceProxy.set(glm::vec4(light ? light->centre : glm::vec3(0.0f), light ? radius : 0.0f));
 }
 

@@ -1,10 +1,11 @@
 // Diffuse light from the live probes (docs/rough.md, "Diffuse light from the probe"): after a
 // capture, each probe with probe-lit readers (ProbePlan::diffuseReaders) has its cube projected
 // on the order-2 spherical harmonics (shaders/irradiance_project.vert) into a uniform buffer of its
-// own, nine vec4s, which phong.frag reads as its ProbeIrradiance block (AMBIENT_PROBE). The
-// projection runs only when the plan says a face of the probe was redrawn
-// (ProbePlan::projectIrradiance), or the probe has no buffer yet; it reads the capture's box mip
-// chain (CaptureFormat::boxChain) through a sampler of its own and nothing comes back to the CPU.
+// own, nine vec4s (colour in rgb, nearness in w), which phong.frag reads as its ProbeIrradiance
+// block (AMBIENT_PROBE). The projection runs only when the plan says a face of the probe was
+// redrawn (ProbePlan::projectIrradiance), or the probe has no buffer yet; it reads the capture's
+// box mip chain (CaptureFormat::boxChain) through a sampler of its own and nothing comes back to
+// the CPU.
 #pragma once
 
 #include <map>

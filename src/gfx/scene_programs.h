@@ -40,7 +40,8 @@ struct PhongUniforms : UniformTable {
   Uniform<float> diffuse{*this, "u_diffuse"};
   Uniform<float> specular{*this, "u_specular"};
   Uniform<float> shininess{*this, "u_shininess"};
-  // A probe-lit object's probe centre and ambientRadius (phong.frag's irradianceDirection).
+  // A probe-lit object's probe centre and ambientRadius, or minus the capture's near plane where
+  // the radius is measured (phong.frag's irradianceDirection).
   Uniform<glm::vec4> irradianceProxy{*this, "u_irradianceProxy"};
   void setLight(const PhongLight& light) const;
 };

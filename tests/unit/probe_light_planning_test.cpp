@@ -141,13 +141,18 @@ TEST(ProbeLightScene, AmbientKeyAndItsErrors) {
   EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": "probe"})").error(),
             "lit.json: objects: an object with \"ambient\": \"probe\" needs a live probe to read "
             "(a mirror, glass or cube-textured object with a live environment)");
-  // ambientRadius: the distance its surroundings are taken at (0, the default: infinitely far).
-  EXPECT_EQ(own.value().objects[0].ambientRadius, 0.0f);
-  Result<Scene> near = parse(R"({"mesh": "a.obj", "ambient": "own-probe", "ambientRadius": 6})");
+  // ambientRadius: the distance its surroundings are taken at; unset (the default, or
+  // "measured"): measured from the probe's distances.
+  EXPECT_FALSE(own.value().objects[0].ambientRadius.has_value());
+  Result<Scene> near = parse(R"({"mesh": "a.obj", "ambient": "own-probe", "ambientRadius": 6},
+      {"mesh": "b.obj", "ambient": "own-probe", "ambientRadius": "measured"})");
   ASSERT_TRUE(near) << near.error();
   EXPECT_EQ(near.value().objects[0].ambientRadius, 6.0f);
+  EXPECT_FALSE(near.value().objects[1].ambientRadius.has_value());
   EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": "own-probe", "ambientRadius": -1})").error(),
             "lit.json: objects[0].ambientRadius: expected a number from 0 to 1000");
+  EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambient": "own-probe", "ambientRadius": "far"})").error(),
+            "lit.json: objects[0].ambientRadius: expected a number from 0 to 1000 or \"measured\"");
   EXPECT_EQ(parse(R"({"mesh": "a.obj", "ambientRadius": 6})").error(),
             "lit.json: objects[0].ambientRadius: needs \"ambient\": \"probe\" or \"own-probe\"");
 }
@@ -249,6 +254,29 @@ TEST(Irradiance, TheIrradianceCubeIsTheLightEachNormalTakes) {
   EXPECT_NEAR(centre(4), 141.3, 8.0);
   for (int side : {0, 1, 2, 3}) EXPECT_NEAR(centre(side), 28.4, 8.0);
   EXPECT_NEAR(centre(5), 0.0, 8.0);
+}
+
+// The nearness a capture's alpha gives: surroundings all at distance d (alpha d / (d + 1)) give
+// 1 / d in every direction, so the measured radius is d near-plane units; the sky (alpha 1) gives
+// 0, and the radius its floor, 10,000 near-plane units.
+TEST(Irradiance, TheMeasuredRadiusIsTheDistanceTheProbeCaptured) {
+  constexpr int kFace = 8;
+  CubeFaces near, sky;
+  for (int f = 0; f < 6; ++f) {
+    near[static_cast<size_t>(f)] = filledFace(kFace, 10, 20, 30);
+    for (size_t k = 3; k < near[static_cast<size_t>(f)].pixels.size(); k += 4) {
+      near[static_cast<size_t>(f)].pixels[k] = 191;  // d / (d + 1) = 0.749: d = 2.984
+    }
+    sky[static_cast<size_t>(f)] = filledFace(kFace, 10, 20, 30);  // alpha 255
+  }
+  const double alpha = 191.0 / 255.0;
+  const float d = static_cast<float>(alpha / (1.0 - alpha));
+  const NearnessCoefficients c = projectNearness(near);
+  for (const glm::vec3& n : {glm::vec3(0, 0, 1), glm::vec3(-1, 0, 0), glm::vec3(0, 0.6f, 0.8f)}) {
+    EXPECT_NEAR(measuredRadius(c, n, 1.0f), d, 1e-4f);
+    EXPECT_NEAR(measuredRadius(c, n, 0.5f), 0.5f * d, 1e-4f);  // in world units: near x d
+  }
+  EXPECT_FLOAT_EQ(measuredRadius(projectNearness(sky), {0, 1, 0}, 2.0f), 2.0f / kLeastNearness);
 }
 
 }  // namespace

@@ -39,6 +39,8 @@ json explanationJson(const reflect::PixelExplanation& e) {
     out.update({{"irradianceProbe", e.irradianceProbe},
                 {"normal", vec(e.normal)},
                 {"irradianceDirection", vec(e.irradianceDirection)},
+                {"irradianceRadius", e.irradianceRadius},
+                {"radiusMeasured", e.radiusMeasured},
                 {"irradiance", vec(e.irradiance)},
                 {"irradianceBytes", bytes(e.irradiance)}});
   }
