@@ -19,6 +19,15 @@ float shBasis(vec3 n, int i) {
   return 0.546274 * (n.x * n.x - n.y * n.y);
 }
 
+// The nine at once, in that order: Y_0..3 in a, Y_4..7 in b, Y_8 in c. Evaluating coefficients
+// with these costs a few multiply-adds where a loop over shBasis runs its branches every turn.
+void shBasisAll(vec3 n, out vec4 a, out vec4 b, out float c) {
+  a = vec4(0.282095, 0.488603 * n.y, 0.488603 * n.z, 0.488603 * n.x);
+  b = vec4(1.092548 * n.x * n.y, 1.092548 * n.y * n.z, 0.315392 * (3.0 * n.z * n.z - 1.0),
+           1.092548 * n.x * n.z);
+  c = 0.546274 * (n.x * n.x - n.y * n.y);
+}
+
 // The cosine lobe's factor for the band of coefficient i, over pi.
 float shBandFactor(int i) {
   if (i == 0) return 1.0;

@@ -16,7 +16,7 @@ uniform float u_shininess;
 
 #if AMBIENT_PROBE
 // The nearest live probe's irradiance (irradiance_project.vert wrote it): E(n) / pi =
-// sum c_i Y_i(n), c_i in .rgb.
+// sum c_i Y_i(n), c_i in .rgb; the nearness (irradiance_project.vert) in .w.
 layout(std140) uniform ProbeIrradiance {
   vec4 u_irradiance[9];
 };
@@ -26,16 +26,22 @@ uniform vec4 u_irradianceProxy;
 
 #include "irradiance.glsl"
 
+// sum_i u_irradiance[i] Y_i(n): E(n) / pi in rgb, the nearness in w.
+vec4 probeLightAt(vec3 n) {
+  vec4 a, b;
+  float c;
+  shBasisAll(n, a, b, c);
+  return u_irradiance[0] * a.x + u_irradiance[1] * a.y + u_irradiance[2] * a.z +
+         u_irradiance[3] * a.w + u_irradiance[4] * b.x + u_irradiance[5] * b.y +
+         u_irradiance[6] * b.z + u_irradiance[7] * b.w + u_irradiance[8] * c;
+}
+
 // core/irradiance.h's irradianceDirection: the normal, or with a radius the direction from the
 // probe's centre to where the normal's ray leaves the sphere the surroundings are taken to lie on;
 // the radius measured as measuredRadius does where the scene sets none.
 vec3 irradianceDirection(vec3 n) {
   float radius = u_irradianceProxy.w;
-  if (radius < 0.0) {
-    float nearness = 0.0;
-    for (int i = 0; i < 9; ++i) nearness += u_irradiance[i].w * shBasis(n, i);
-    radius = -radius / max(nearness, 1e-4);  // kLeastNearness
-  }
+  if (radius < 0.0) radius = -radius / max(probeLightAt(n).w, 1e-4);  // kLeastNearness
   if (radius <= 0.0) return n;
   vec3 o = v_worldPosition - u_irradianceProxy.xyz;
   float on = dot(o, n);
@@ -46,10 +52,7 @@ vec3 irradianceDirection(vec3 n) {
 }
 
 vec3 probeAmbient(vec3 normal) {
-  vec3 n = irradianceDirection(normal);
-  vec3 e = vec3(0.0);
-  for (int i = 0; i < 9; ++i) e += u_irradiance[i].rgb * shBasis(n, i);
-  return max(e, vec3(0.0));
+  return max(probeLightAt(irradianceDirection(normal)).rgb, vec3(0.0));
 }
 #endif
 
