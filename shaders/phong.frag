@@ -36,12 +36,23 @@ vec4 probeLightAt(vec3 n) {
          u_irradiance[6] * b.z + u_irradiance[7] * b.w + u_irradiance[8] * c;
 }
 
+// The nearness alone (probeLightAt's w, summed in the same order), for the measured radius: a
+// quarter of the multiply-adds.
+float probeNearnessAt(vec3 n) {
+  vec4 a, b;
+  float c;
+  shBasisAll(n, a, b, c);
+  return u_irradiance[0].w * a.x + u_irradiance[1].w * a.y + u_irradiance[2].w * a.z +
+         u_irradiance[3].w * a.w + u_irradiance[4].w * b.x + u_irradiance[5].w * b.y +
+         u_irradiance[6].w * b.z + u_irradiance[7].w * b.w + u_irradiance[8].w * c;
+}
+
 // core/irradiance.h's irradianceDirection: the normal, or with a radius the direction from the
 // probe's centre to where the normal's ray leaves the sphere the surroundings are taken to lie on;
 // the radius measured as measuredRadius does where the scene sets none.
 vec3 irradianceDirection(vec3 n) {
   float radius = u_irradianceProxy.w;
-  if (radius < 0.0) radius = -radius / max(probeLightAt(n).w, 1e-4);  // kLeastNearness
+  if (radius < 0.0) radius = -radius / max(probeNearnessAt(n), 1e-4);  // kLeastNearness
   if (radius <= 0.0) return n;
   vec3 o = v_worldPosition - u_irradianceProxy.xyz;
   float on = dot(o, n);

@@ -77,8 +77,9 @@ ExactSight exactAlong(const Demo& demo, const SceneBvh& placed, const TraceRay& 
 }
 
 // A probe-lit figure's irradiance at the surface's normal: the probe's colour faces read back and
-// projected on the CPU, as irradiance_project.vert projects them (ProbeIrradianceGpu holds the
-// two together). Nothing for any other pixel.
+// projected on the CPU, as irradiance_project.vert projects them (WebGL2 cannot map the GPU's
+// buffer; PixelExplain.AProbeLitFigureNamesTheIrradianceItsPixelWasLitWith holds the two
+// together). Nothing for any other pixel.
 std::string readIrradiance(const Demo& demo, const SurfacePoint& surface, PixelExplanation& e) {
   const ProbePlan* light = e.object >= 0 ? demo.lastPlan().irradianceOf(e.object) : nullptr;
   if (light == nullptr) return {};

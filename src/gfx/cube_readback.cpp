@@ -88,8 +88,9 @@ Result<CubeFaces> readCubeFaces(const CubeCaptureTarget& target, FacesChannel ch
     }
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
-  // Projected here as irradiance_project.vert projects the probe's box chain on the GPU (both
-  // weigh each texel by its solid angle), so that it reads back nothing the frame does not need.
+  // Projected on the CPU from the colours just read, as irradiance_project.vert projects the box
+  // chain on the GPU (both weigh each texel by its solid angle): the GPU's coefficients stay in
+  // their uniform buffer, which WebGL2 cannot read back.
   if (channel == FacesChannel::Irradiance) return irradianceCube(projectIrradiance(faces), size);
   return faces;
 }
