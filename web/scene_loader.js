@@ -46,13 +46,27 @@ async function readStream(stream, total, onProgress, limit, name) {
   return bytes;
 }
 
+// Load to first frame: index.html starts downloading the first scene's JSON and the built-in
+// models it names before any module runs (window.reflectPrefetch, URL -> fetch promise), so they
+// arrive while the wasm module compiles rather than after it. Only a head start: the C++ still
+// reads the scene and decides its files, and a download that is not taken, or fails, costs
+// nothing but itself (openResponse fetches again). This takes the response for `url` (once), or
+// null when there is none or it failed.
+async function takePrefetched(url) {
+  const prefetched = window.reflectPrefetch;
+  const pending = prefetched?.get(url);
+  if (!pending) return null;
+  prefetched.delete(url);
+  return pending.catch(() => null);
+}
+
 // Starts fetching `url`: the response and its announced size (0 when unknown). Rejects with a
 // message naming the URL when it cannot be fetched, answers with an HTTP error, or announces more
 // than `limit` bytes (when a limit is set).
 async function openResponse(url, limit) {
   let response;
   try {
-    response = await fetch(url);
+    response = (await takePrefetched(url)) || await fetch(url);
   } catch (e) {
     throw new Error(`${url}: could not be fetched (${e.message})`);
   }

@@ -178,6 +178,30 @@ test('an unknown scene is named in a message, and the default scene runs instead
   await expect(missing).toBeVisible();  // still there once the page runs
 });
 
+// Load to first frame: index.html starts the first scene's downloads (its JSON, then the built-in
+// models it names) before the wasm module is ready; the loader takes each of those responses
+// instead of fetching again. Held: each file is downloaded once, every download is taken (the
+// page's URL rule and scene_loader.js's agree), and the JSON's started before the module was ready.
+for (const scene of ['ex12-2', 'probe-lit']) {
+  test(`${scene}: the first scene's files start downloading before the module is ready, once each, and each is taken`, async ({ page }) => {
+    const errors = collectErrors(page);
+    await openDemo(page, scene === 'ex12-2' ? '?paused' : `?paused&scene=${scene}`);
+    const seen = await page.evaluate(() => ({
+      left: [...window.reflectPrefetch.keys()],
+      ready: performance.getEntriesByName('reflect:wasm-ready', 'mark')[0].startTime,
+      files: performance.getEntriesByType('resource')
+        .map((e) => ({ path: new URL(e.name).pathname.split('/').slice(-2).join('/'), start: e.startTime }))
+        .filter((f) => /^(models\/.+\.obj|scenes\/(?!index).+\.json)$/.test(f.path)),
+    }));
+    const json = JSON.parse(readFileSync(new URL(`../../assets/scenes/${scene}.json`, import.meta.url), 'utf8'));
+    const models = [...new Set(json.objects.map((o) => `models/${o.mesh}`))];
+    expect(seen.files.map((f) => f.path).sort()).toEqual([`scenes/${scene}.json`, ...models].sort());
+    expect(seen.left).toEqual([]);
+    expect(seen.files.find((f) => f.path.startsWith('scenes/')).start).toBeLessThan(seen.ready);
+    expect(errors).toEqual([]);
+  });
+}
+
 test('index.html preloads every module the page imports at start, and nothing else', async ({ page }) => {
   // The modules are fetched at once instead of a level of imports after another (load to first
   // frame, issue 12); a module added to app.js's graph but not to the list would load late.
