@@ -202,6 +202,27 @@ for (const scene of ['ex12-2', 'probe-lit']) {
   });
 }
 
+// Load to first frame: Emscripten would enable every extension the browser offers, one
+// getExtension each (43 ms of the main thread in SwiftShader); the page asks for the ones the
+// renderer uses (web_main.cpp's kExtensions), and the float targets still work (inside.spec's
+// face-use view renders into one).
+test('the page enables only the WebGL extensions the renderer uses', async ({ page }) => {
+  await page.addInitScript(() => {
+    window.__extensionsAsked = [];
+    const original = WebGL2RenderingContext.prototype.getExtension;
+    WebGL2RenderingContext.prototype.getExtension = function (name) {
+      window.__extensionsAsked.push(name);
+      return original.call(this, name);
+    };
+  });
+  await openDemo(page, '?paused');
+  const asked = await page.evaluate(() => window.__extensionsAsked);
+  expect([...new Set(asked)].sort()).toEqual([
+    'EXT_color_buffer_float', 'EXT_color_buffer_half_float', 'EXT_disjoint_timer_query_webgl2',
+    'EXT_float_blend', 'OES_texture_float_linear',
+  ]);
+});
+
 test('index.html preloads every module the page imports at start, and nothing else', async ({ page }) => {
   // The modules are fetched at once instead of a level of imports after another (load to first
   // frame, issue 12); a module added to app.js's graph but not to the list would load late.
