@@ -202,10 +202,9 @@ for (const scene of ['ex12-2', 'probe-lit']) {
   });
 }
 
-// Load to first frame: Emscripten would enable every extension the browser offers, one
-// getExtension each (43 ms of the main thread in SwiftShader); the page asks for the ones the
-// renderer uses (web_main.cpp's kExtensions), and the float targets still work (inside.spec's
-// face-use view renders into one).
+// Only what the scene needs: Emscripten would enable every extension the browser offers, one
+// getExtension each; the page asks for the ones the renderer uses (web_main.cpp's kExtensions),
+// and the float targets still work (inside.spec's face-use view renders into one).
 test('the page enables only the WebGL extensions the renderer uses', async ({ page }) => {
   await page.addInitScript(() => {
     window.__extensionsAsked = [];

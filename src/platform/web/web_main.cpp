@@ -58,9 +58,9 @@ std::string makeContextCurrent() {
   // Off, so the page shows exactly the pixels the native build renders for the same time.
   attributes.antialias = EM_FALSE;
   attributes.preserveDrawingBuffer = EM_FALSE;
-  // Emscripten would enable every extension the browser offers, one getExtension each: 43 ms of
-  // the main thread before the first frame in SwiftShader (a profile of the load). The renderer
-  // needs only these (kExtensions).
+  // Emscripten would enable every extension the browser offers, one getExtension each (43 ms of
+  // the main thread in a sampling profile of a SwiftShader load, though the load timed without
+  // the profiler was the same within its noise). The renderer asks for what it uses alone.
   attributes.enableExtensionsByDefault = EM_FALSE;
   state().context = emscripten_webgl_create_context(kCanvas, &attributes);
   if (state().context <= 0) return "WebGL2 is not available in this browser";
