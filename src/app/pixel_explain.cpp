@@ -93,21 +93,18 @@ std::string readIrradiance(const Demo& demo, const SurfacePoint& surface, PixelE
   e.surfacePoint = surface.position;
   e.normal = surface.normal;
   e.irradianceProbe = light->reflector;
+  // Projected as the GPU projects them: from the box chain's level the projection reads.
+  const int size = target->faceSize();
+  const int factor = size / std::max(size >> ProbeIrradiance::levelFor(size), 1);
+  const CubeFaces read = shrinkFaces(faces.value(), factor);
   const std::optional<float> set =
       demo.scene().objects[static_cast<size_t>(e.object)].ambientRadius;
   e.radiusMeasured = !set;
-  if (set) {
-    e.irradianceRadius = *set;
-  } else {
-    // Measured as the GPU measures it: from the box chain's level the projection reads.
-    const int size = target->faceSize();
-    const int factor = size / std::max(size >> ProbeIrradiance::levelFor(size), 1);
-    e.irradianceRadius = measuredRadius(projectNearness(shrinkFaces(faces.value(), factor)),
-                                        surface.normal, demo.scene().capture.near);
-  }
+  e.irradianceRadius =
+      set ? *set : measuredRadius(projectNearness(read), surface.normal, demo.scene().capture.near);
   e.irradianceDirection =
       irradianceDirection(surface.normal, surface.position, light->centre, e.irradianceRadius);
-  e.irradiance = irradianceAt(projectIrradiance(faces.value()), e.irradianceDirection);
+  e.irradiance = irradianceAt(projectIrradiance(read), e.irradianceDirection);
   return {};
 }
 
