@@ -71,9 +71,12 @@ std::string howRead(const LobeExplanation& lobe) {
   switch (lobe.source) {
     case Source::Traced:
       return formatLine(
-          "  lobe: traced with %d lobe rays (lobeRays) around the reflected ray, each weighed "
-          "by the GGX reflectance (search: exact, or planned found tracing cheaper)",
-          lobe.lobeRays);
+          "  lobe: traced with %d lobe rays (%s) around the reflected ray, each weighed by the "
+          "GGX reflectance (%s)",
+          lobe.lobeRays, lobe.narrow ? "narrowLobeRays" : "lobeRays",
+          lobe.narrow ? "search: planned traces a lobe this narrow, roughness under 0.375, "
+                        "which taps from a capture would draw as rings"
+                      : "search: exact, or planned found tracing cheaper");
     case Source::LobeTaps:
       return formatLine(
           "  lobe: %d lobe taps (lobeTaps) around the reflected ray for this view, each weighed "
@@ -113,9 +116,11 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
   lobe.glass = o.material == Material::Glass;
   lobe.throughRoughness = lobe.glass ? transmissionRoughness(o.roughness, o.ior) : 0.0f;
   lobe.alpha = ggxAlpha(o.roughness);
-  lobe.lobeRays = demo.accuracySettings().lobeRays;
   if (demo.lastPlan().traces(object)) {
     lobe.source = LobeExplanation::Source::Traced;
+    lobe.lobeRays = demo.lastPlan().lobeRaysOf(object);
+    const std::vector<int>& narrow = demo.lastPlan().narrowTraced;
+    lobe.narrow = std::find(narrow.begin(), narrow.end(), object) != narrow.end();
   } else if (o.environment == Environment::Skybox) {
     readPrefilteredSky(demo, lobe);
   } else if (const ProbePlan* probe = demo.lastPlan().probeOf(object);

@@ -34,8 +34,9 @@ struct LobeExplanation {
   RoughLevels levels;
   int lowerFaceSize = 0;
   int upperFaceSize = 0;
-  int lobeRays = 0;  // traced: AccuracySettings::lobeRays
-  int lobeTaps = 0;  // lobe taps: AccuracySettings::lobeTaps, from faces of tapFaceSize
+  int lobeRays = 0;     // traced: FramePlan::lobeRaysOf
+  bool narrow = false;  // traced for being too narrow for taps (planner::narrowLobe)
+  int lobeTaps = 0;     // lobe taps: AccuracySettings::lobeTaps, from faces of tapFaceSize
   int tapFaceSize = 0;
   // Frosted glass: the light through it is a lobe too, read prefiltered at its own level
   // (transmissionRoughness x usableLevels, as the renderer's u_refractLod).

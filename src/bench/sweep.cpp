@@ -17,12 +17,20 @@ namespace reflect {
 namespace {
 
 // Rough mirrors (the rough-spheres scene; docs/rough.md): one knob at a time around the default,
-// at the scene's own face size: the lobe taps; the prefiltered levels instead (the split sum, the
-// default before lobe taps), with their samples and levels; the face size; and the traced lobe's
-// rays (the exact mode).
+// at the scene's own face size: the narrow lobes' rays, or taps for them too (the default before
+// narrow lobes were traced); the lobe taps; the prefiltered levels instead (the split sum
+// everywhere, the default before lobe taps), with their samples and levels; the face size; and
+// the traced lobe's rays (the exact mode).
 void appendRoughSettings(std::vector<SweepSetting>& s) {
   const AccuracySettings shipped;
   s.push_back({"rough-default", shipped, 0});
+  for (int n : {0, 4, 16}) {
+    AccuracySettings a = shipped;
+    a.narrowLobeRays = n;
+    s.push_back(
+        {n == 0 ? std::string("rough-narrow-taps") : "rough-narrow-rays-" + std::to_string(n), a,
+         0});
+  }
   for (int n : {4, 8, 32}) {
     AccuracySettings a = shipped;
     a.lobeTaps = n;
@@ -30,6 +38,7 @@ void appendRoughSettings(std::vector<SweepSetting>& s) {
   }
   AccuracySettings prefiltered = shipped;
   prefiltered.lobeTaps = 0;
+  prefiltered.narrowLobeRays = 0;
   s.push_back({"rough-prefiltered", prefiltered, 0});
   for (int n : {4, 8, 16, 64, 128}) {
     AccuracySettings a = prefiltered;

@@ -62,6 +62,10 @@ struct AccuracySettings {
   int filterSamples = 32;
   int roughLevels = 5;
   int lobeRays = 16;
+  // Rough mirrors whose lobe is too narrow for lobe taps or prefiltered levels
+  // (planner::narrowLobe: roughness under 0.375) are traced under search: planned, whatever the
+  // cost, with this many fixed lobe rays a pixel; 0: they are captured like the rest.
+  int narrowLobeRays = 8;
 
   bool operator==(const AccuracySettings&) const = default;
   // e.g. "centre, hierarchical, layers 2, glass 2, depth 24, linear, RGBA8, highp"

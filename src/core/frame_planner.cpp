@@ -94,6 +94,16 @@ bool FramePlan::tracesGeneral(int object) const {
   return contains(generalTracers, object);
 }
 
+bool tracedForNarrowLobe(const SceneObject::Look& look, const AccuracySettings& accuracy) {
+  return accuracy.search == Search::Planned && accuracy.narrowLobeRays > 0 &&
+         look.material == Material::Mirror && look.rough() && look.roughness < kNarrowLobeRoughness;
+}
+
+int FramePlan::lobeRaysOf(int object) const {
+  const size_t i = static_cast<size_t>(object);
+  return i < lobeRays.size() ? lobeRays[i] : 0;
+}
+
 const ProbeLayout* FramePlan::layoutOf(int object) const {
   if (const ProbePlan* probe = probeOf(object)) return probe;
   for (const ProbeLayout& t : traced) {
@@ -235,6 +245,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   trackChanges(objects);
   FramePlan plan;
   choices_.clear();
+  narrowTraced_.clear();
   std::vector<int> recapturedForRealChange;
   for (ProbePlan& probe : planner::probesWithReaders(objects)) {
     planner::decideStorage(probe, objects, context);
@@ -283,9 +294,16 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
           ProbeLayout{static_cast<int>(i), {static_cast<int>(i)}, planner::worldCentreOf(o)});
     }
   }
+  plan.narrowTraced = narrowTraced_;
+  plan.lobeRays.assign(objects.size(), 0);
   for (const ProbeLayout& t : plan.traced) {
     for (int m : t.members) {
       if (planner::needsGeneralTracer(objects, m)) plan.generalTracers.push_back(m);
+      const PlannedObject& o = objects[static_cast<size_t>(m)];
+      if (!o.look.rough()) continue;
+      const bool narrow = contains(narrowTraced_, m);  // (else the weighing's own trace)
+      plan.lobeRays[static_cast<size_t>(m)] =
+          narrow ? context.accuracy.narrowLobeRays : context.accuracy.lobeRays;
     }
   }
   planner::decideSkyFiltering(plan, objects, context, skyFilteredLevels_, skyFilteredContent_);

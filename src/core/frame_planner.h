@@ -180,6 +180,14 @@ struct FramePlan {
   std::vector<ProbeLayout> traced;
   // The traced reflectors whose rays need the general tracer (planner::needsGeneralTracer).
   std::vector<int> generalTracers;
+  // Rough mirrors traced only for being too narrow for the capture (tracedForNarrowLobe), where
+  // the weighing chose to capture them.
+  std::vector<int> narrowTraced;
+  // Per object, the lobe rays a pixel of it traces in the main pass: narrowLobeRays for those of
+  // `narrowTraced`, accuracy.lobeRays for any other traced rough mirror or glass, 0 for the rest.
+  // (A traced rough mirror seen in a capture is a second bounce, seen small: it traces its
+  // lobe's centre alone.)
+  std::vector<int> lobeRays;
   // The static skybox read by rough mirrors or frosted glass (environment: skybox): the
   // prefiltered levels they need (as ProbePlan::roughLevels, for the sky's face size; empty when
   // no skybox reader is rough: then the sky has no filtered cube), and whether the sky is
@@ -200,9 +208,20 @@ struct FramePlan {
   const ProbePlan* irradianceOf(int object) const;
   bool traces(int object) const;
   bool tracesGeneral(int object) const;
+  int lobeRaysOf(int object) const;
   // Where `object`'s reflection is measured from: its probe's or its traced layout's centre.
   const ProbeLayout* layoutOf(int object) const;
 };
+
+// A rough mirror whose lobe is too narrow to be read from a capture: its neighbours' reflections
+// are discs a few degrees wide, which a fixed set of lobe taps draws as rings and the prefiltered
+// levels as blurs of the wrong width (roughness 0.25: 29.96 dB with 16 taps, 29.55 prefiltered,
+// 39.22 traced with 8 lobe rays; roughness 0.5: 35.77 with taps, 33.85 traced with 8 rays and
+// 35.56 with 12; docs/rough.md). Under search: planned it is traced where the weighing chose
+// to capture it, with narrowLobeRays rays (FramePlan::narrowTraced): true for such a look under
+// those settings.
+inline constexpr float kNarrowLobeRoughness = 0.375f;
+bool tracedForNarrowLobe(const SceneObject::Look& look, const AccuracySettings& accuracy);
 
 // What the planner knows of the main camera, to weigh tracing (a cost per pixel on screen)
 // against capturing. pixelsPerTangent 0: no view; search: planned then captures.
@@ -262,6 +281,7 @@ class FramePlanner {
   struct ProbeMemory {
     int reflector = -1;
     Method method = Method::Capture;
+    bool narrowForced = false;  // traced for a narrow lobe where the weighing chose the capture
     glm::vec3 centre{0.0f};
     int layers = 1;
     bool plainLookupSuffices = false;  // (the capture then stores no depths)
@@ -322,6 +342,7 @@ class FramePlanner {
   uint64_t frameIndex_ = 0;
   MethodCosts costs_ = MethodCosts::softwareRenderer();
   std::vector<MethodChoice> choices_;
+  std::vector<int> narrowTraced_;  // this frame's objects traced for a narrow lobe alone
 };
 
 }  // namespace reflect

@@ -97,10 +97,22 @@ Method FramePlanner::chooseProbeMethod(const ProbePlan& probe, const FaceDraws& 
   Method method = Method::Capture;
   if (rays && search == Search::Exact) method = Method::Trace;
   if (rays && search == Search::Planned && view.pixelsPerTangent > 0.0f) {
+    // Weighed against what the weighing chose last frame, not against a forced trace below.
+    const Method before = memory.narrowForced ? Method::Capture : memory.method;
     MethodChoice choice = weigh(probe, draws, objects, context, settings, view);
-    choice.method = chooseMethod(choice.traceMs, choice.captureMs, memory.method, costs_);
+    choice.method = chooseMethod(choice.traceMs, choice.captureMs, before, costs_);
     method = choice.method;
     choices_.push_back(choice);
+  }
+  // A lobe too narrow for the capture is traced all the same, with narrowLobeRays rays (fewer
+  // than lobeRays, which a trace the weighing chose casts).
+  const bool narrow = std::any_of(probe.members.begin(), probe.members.end(), [&](int m) {
+    return tracedForNarrowLobe(objects[static_cast<size_t>(m)].look, context.accuracy);
+  });
+  memory.narrowForced = rays && narrow && method == Method::Capture;
+  if (memory.narrowForced) {
+    method = Method::Trace;
+    narrowTraced_.insert(narrowTraced_.end(), probe.members.begin(), probe.members.end());
   }
   if (method != memory.method) {
     for (FaceMemory& f : memory.faces) f.captured = false;  // a trace keeps no faces

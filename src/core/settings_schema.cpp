@@ -262,6 +262,12 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
                1, 256),
        [](const A& s) { return json(s.lobeRays); },
        [](A& s, const json& v) { s.lobeRays = v.get<int>(); }},
+      {integer("narrowLobeRays", "narrow lobe rays",
+               "rough mirrors under roughness 0.375, planned: traced with this many fixed lobe "
+               "rays a pixel, a lobe too narrow for lobe taps (0: captured like the rest)",
+               0, 256),
+       [](const A& s) { return json(s.narrowLobeRays); },
+       [](A& s, const json& v) { s.narrowLobeRays = v.get<int>(); }},
       {flag("halfFloat", "RGBA16F", "RGBA16F capture colour instead of RGBA8"),
        [](const A& s) { return json(s.halfFloat); },
        [](A& s, const json& v) { s.halfFloat = v.get<bool>(); }},

@@ -152,7 +152,7 @@ void ExactTracer::prepare(const Scene& scene, const FramePlan& plan, const glm::
   for (const SceneObject& o : scene.objects) lobeAlphas_.push_back(ggxAlpha(o.roughness));
 }
 
-void ExactTracer::bind(const ExactUniforms& u, int lobeRays, bool general) const {
+void ExactTracer::bind(const ExactUniforms& u, bool general) const {
   bindUnit(kExactAtlasUnit, GL_TEXTURE_2D, atlas_.id());
   bindUnit(kExactNormalsUnit, GL_TEXTURE_2D, normals_.id());
   bindUnit(kExactSceneUnit, GL_TEXTURE_2D, scene_.id());
@@ -171,11 +171,11 @@ void ExactTracer::bind(const ExactUniforms& u, int lobeRays, bool general) const
   u.eye.set(eye_);
   u.far.set(far_);
   u.mark.set(mark_);
-  u.lobeRays.set(lobeRays);  // rough mirrors' programs (ROUGH 1) alone
 }
 
-void ExactTracer::bindObject(const ExactUniforms& u, int object) const {
+void ExactTracer::bindObject(const ExactUniforms& u, int object, int lobeRays) const {
   u.self.set(object);
+  u.lobeRays.set(lobeRays);  // rough mirrors' programs (ROUGH 1) alone
   const size_t i = static_cast<size_t>(object);
   u.alpha.set(i < lobeAlphas_.size() ? lobeAlphas_[i] : 0.0f);
 }

@@ -71,12 +71,12 @@ class ExactTracer {
   void setMark(bool on) { mark_ = on; }
 
   // For the environment program in use: the textures and the frame's uniforms; then, per draw,
-  // which object it is (its rays never meet itself, and glass is crossed inside it).
-  // `lobeRays`: the rays a rough mirror's pixel traces (AccuracySettings::lobeRays).
+  // which object it is (its rays never meet itself, and glass is crossed inside it) and the rays
+  // a pixel of it traces in its lobe, if rough (FramePlan::lobeRaysOf; 1 in a capture).
   // `general`: the program's tracer (ProgramKey::traceGeneral); without it the rays walk the
   // Phong objects' top level alone (PackedScene::phongHeader).
-  void bind(const ExactUniforms& u, int lobeRays, bool general) const;
-  void bindObject(const ExactUniforms& u, int object) const;
+  void bind(const ExactUniforms& u, bool general) const;
+  void bindObject(const ExactUniforms& u, int object, int lobeRays) const;
 
  private:
   ExactTracer() = default;

@@ -146,6 +146,61 @@ TEST(RoughPlanning, ARoughPixelTracesLobeRaysAndAFilteredProbeCostsItsSamples) {
   EXPECT_DOUBLE_EQ(planner::filterSamplesFor({1, 2}, 64, 32), 6.0 * (32 * 32 + 16 * 16) * 32);
 }
 
+// A lobe too narrow for the capture (roughness under 0.375) is traced under search: planned
+// where the weighing chose the capture, with narrowLobeRays rays; a wider one is weighed as
+// before; narrowLobeRays 0 captures it; a trace the weighing chose, and the exact mode, cast
+// lobeRays; narrow glass is not traced for it.
+TEST(RoughPlanning, ANarrowLobeIsTracedWithItsOwnRaysWhateverTheCost) {
+  std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 0.25f), mirrorAt({4, 0, 0}, 0.5f),
+                                   mirrorAt({8, 0, 0}, 0.0f), mirrorAt({12, 0, 0}, 0.25f)};
+  scene[3].look.material = Material::Glass;
+  CaptureContext planned;
+  ASSERT_EQ(planned.accuracy.search, Search::Planned);
+  ASSERT_EQ(planned.accuracy.narrowLobeRays, 8);
+  MethodCosts costs;  // tracing made dear: the other mirrors stay captured
+  costs.tracePixel = 1e6;
+  const PlannerView view{{0.0f, 0.0f, 20.0f}, 400.0f, 800.0f * 800.0f};
+  FramePlanner planner;
+  planner.setCosts(costs);
+  const FramePlan plan = planner.plan(scene, planned, {}, view);
+  EXPECT_TRUE(plan.traces(0));
+  EXPECT_FALSE(plan.traces(1));
+  EXPECT_FALSE(plan.traces(2));
+  EXPECT_FALSE(plan.traces(3));
+  EXPECT_EQ(plan.lobeRays, (std::vector<int>{8, 0, 0, 0}));
+  EXPECT_EQ(plan.narrowTraced, (std::vector<int>{0}));
+  EXPECT_TRUE(tracedForNarrowLobe(scene[0].look, planned.accuracy));
+  EXPECT_FALSE(tracedForNarrowLobe(scene[1].look, planned.accuracy));
+  EXPECT_FALSE(tracedForNarrowLobe(scene[2].look, planned.accuracy));  // perfect: no lobe
+  EXPECT_FALSE(tracedForNarrowLobe(scene[3].look, planned.accuracy));  // glass
+
+  CaptureContext off = planned;
+  off.accuracy.narrowLobeRays = 0;
+  FramePlanner capturing;
+  capturing.setCosts(costs);
+  EXPECT_FALSE(capturing.plan(scene, off, {}, view).traces(0));
+
+  // Where the weighing itself finds tracing cheaper, the lobe casts lobeRays, narrow or not, and
+  // keeps them the next frame (the forced trace is not the weighing's memory).
+  costs.tracePixel = 0.0;
+  costs.face = 1.0;
+  FramePlanner cheap;
+  cheap.setCosts(costs);
+  for (int frame = 0; frame < 2; ++frame) {
+    const FramePlan p = cheap.plan(scene, planned, {}, view);
+    EXPECT_TRUE(p.traces(0));
+    EXPECT_TRUE(p.traces(1));
+    EXPECT_TRUE(p.narrowTraced.empty());
+    EXPECT_EQ(p.lobeRays, (std::vector<int>{16, 16, 0, 16}));
+  }
+
+  CaptureContext exact = planned;
+  exact.accuracy.search = Search::Exact;
+  FramePlanner tracing;
+  const FramePlan all = tracing.plan(scene, exact, {}, view);
+  EXPECT_EQ(all.lobeRays, (std::vector<int>{16, 16, 0, 16}));
+}
+
 TEST(PrefilterLobe, WeightsSumToOneAboveTheSurfaceAndWiderLobesReadCoarserLevels) {
   for (float alpha : {0.04f, 0.25f, 1.0f}) {
     const std::vector<glm::vec4> lobe = prefilterLobe(alpha, 32, 128);
