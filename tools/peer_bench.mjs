@@ -54,8 +54,10 @@ const PROJECT_PAGES = [
   { key: 'exact', label: 'project exact', query: 'search=exact' },
   { key: 'course', label: 'project course setting', query: 'acc=original&policy=every-frame&captureLod=0' },
   { key: 'hierarchical', label: 'project hierarchical', query: 'search=hierarchical' },
-  // Rough readers from prefiltered levels (the default before lobe taps).
-  { key: 'prefiltered', label: 'project prefiltered', query: 'lobeTaps=0' },
+  // Rough readers from prefiltered levels, narrow lobes too (the default before lobe taps).
+  { key: 'prefiltered', label: 'project prefiltered', query: 'lobeTaps=0&narrowLobeRays=0' },
+  // Narrow lobes read by taps like the rest (the default before they were traced).
+  { key: 'narrow-taps', label: 'project, narrow lobes tapped', query: 'narrowLobeRays=0' },
   // The floor: every reflector made a Phong object once the page is up (no capture, no trace).
   { key: 'plain', label: 'project, mirror as Phong', query: '', plain: true },
 ];

@@ -263,6 +263,23 @@ TEST(PixelExplain, ATracedRoughMirrorNamesItsLobeRays) {
   EXPECT_EQ(text.find("lobe's centre"), std::string::npos) << text;
 }
 
+// The default traces the roughness-0.25 sphere (its lobe too narrow for taps, which the
+// weighing would have read): the pixel names its narrowLobeRays and why.
+TEST(PixelExplain, ANarrowLobeNamesItsOwnRaysAndWhy) {
+  constexpr glm::ivec2 kNarrowPixel{121, 225};
+  auto demo = testing::makeDemo(roughSpheres());
+  ASSERT_EQ(demo->accuracySettings().search, Search::Planned);
+  Result<PixelExplanation> e = explainAt(*demo, 2.0, kNarrowPixel);
+  ASSERT_TRUE(e) << e.error();
+  EXPECT_EQ(e.value().lobe.source, LobeExplanation::Source::Traced);
+  EXPECT_TRUE(e.value().lobe.narrow);
+  EXPECT_EQ(e.value().lobe.lobeRays, 8);
+  const std::string text = joinedLines(e.value());
+  EXPECT_NE(text.find("roughness 0.25"), std::string::npos) << text;
+  EXPECT_NE(text.find("traced with 8 lobe rays (narrowLobeRays)"), std::string::npos) << text;
+  EXPECT_NE(text.find("roughness under 0.375"), std::string::npos) << text;
+}
+
 // frosted-glass at 400 x 400, t = 2 s, hierarchical search: a pixel left of the middle of the
 // roughness-0.5 glass sphere (object 6 in reflect explain's count from 1). The light through it
 // is a lobe of its own, of transmission roughness 0.5 x 0.75 x sqrt(0.5 / 2): lobe taps of alpha
