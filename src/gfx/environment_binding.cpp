@@ -13,6 +13,18 @@ namespace reflect {
 using renderer_detail::bindTexture;
 using renderer_detail::sphereRadiusIn;
 
+namespace {
+
+// A traced rough mirror seen in another probe's capture is a second bounce, seen small and
+// blurred: it traces its lobe's centre alone, through the Phong objects (what mirrors show in it
+// is a third bounce). On rough-spheres that kept the other spheres within 0.05 dB and cut the
+// capture from 70 to 41 ms (docs/rough.md, "Narrow lobes: traced").
+bool lobeCentreAlone(const ProgramKey& key) {
+  return key.capture && key.rough && !key.refracts;
+}
+
+}  // namespace
+
 ProgramKey EnvironmentBinding::keyFor(const Scene& scene, const FramePlan& plan,
                                       const DrawItem& item, const CaptureState& pass) const {
   const SceneObject& object = scene.objects[static_cast<size_t>(item.object)];
@@ -32,13 +44,8 @@ ProgramKey EnvironmentBinding::keyFor(const Scene& scene, const FramePlan& plan,
   key.rough = object.rough();
   if (plan.traces(item.object)) {
     key.search = Search::Exact;
-    // The planner's rule, costed there; but a traced rough mirror seen in another probe's
-    // capture is a second bounce, seen small and blurred: it traces its lobe's centre alone
-    // (bindObject) through the Phong objects (what mirrors show in it is a third bounce). On
-    // rough-spheres that kept the other spheres within 0.05 dB and cut the capture from 70 to
-    // 41 ms (docs/rough.md).
-    const bool secondBounce = key.capture && key.rough && !key.refracts;
-    key.traceGeneral = plan.tracesGeneral(item.object) && !secondBounce;
+    // The planner's rule, costed there, but for a rough mirror's lobe centre in a capture.
+    key.traceGeneral = plan.tracesGeneral(item.object) && !lobeCentreAlone(key);
     key.traceStack =
         traceStackFor(scene.objects.size(), s_.exact ? s_.exact->deepestMesh() : kBvhMaxDepth);
     return key;
@@ -103,9 +110,8 @@ void EnvironmentBinding::setForObject(const EnvironmentUniforms& u, const Progra
   }
   bind(u, key, scene, object, texturesOf(scene, plan, index));
   if (key.search == Search::Exact && s_.exact) {
-    // In another probe's capture, a traced rough mirror's lobe centre alone (keyFor).
-    const bool secondBounce = key.capture && key.rough && !key.refracts;
-    s_.exact->bindObject(u.exact, index, secondBounce ? 1 : std::max(plan.lobeRaysOf(index), 1));
+    const int rays = lobeCentreAlone(key) ? 1 : std::max(plan.lobeRaysOf(index), 1);
+    s_.exact->bindObject(u.exact, index, rays);
   }
 }
 
