@@ -35,7 +35,7 @@ struct LobeExplanation {
   int lowerFaceSize = 0;
   int upperFaceSize = 0;
   int lobeRays = 0;     // traced: FramePlan::lobeRaysOf
-  bool narrow = false;  // traced for being too narrow for taps (planner::narrowLobe)
+  bool narrow = false;  // traced for being too narrow for taps (FramePlan::narrowTraced)
   int lobeTaps = 0;     // lobe taps: AccuracySettings::lobeTaps, from faces of tapFaceSize
   int tapFaceSize = 0;
   // Frosted glass: the light through it is a lobe too, read prefiltered at its own level

@@ -63,8 +63,8 @@ struct AccuracySettings {
   int roughLevels = 5;
   int lobeRays = 16;
   // Rough mirrors whose lobe is too narrow for lobe taps or prefiltered levels
-  // (planner::narrowLobe: roughness under 0.375) are traced under search: planned, whatever the
-  // cost, with this many fixed lobe rays a pixel; 0: they are captured like the rest.
+  // (tracedForNarrowLobe: roughness under 0.375) are traced under search: planned where the
+  // weighing would capture them, with this many fixed lobe rays a pixel; 0: they are captured.
   int narrowLobeRays = 8;
 
   bool operator==(const AccuracySettings&) const = default;
