@@ -70,13 +70,17 @@ std::string howRead(const LobeExplanation& lobe) {
   using Source = LobeExplanation::Source;
   switch (lobe.source) {
     case Source::Traced:
+      if (lobe.narrow) {
+        return formatLine(
+            "  lobe: traced with %d lobe rays (narrowLobeRays) around the reflected ray, each "
+            "weighed by the GGX reflectance (search: planned traces a lobe this narrow, "
+            "roughness under %.3g, which taps from a capture would draw as rings)",
+            lobe.lobeRays, kNarrowLobeRoughness);
+      }
       return formatLine(
-          "  lobe: traced with %d lobe rays (%s) around the reflected ray, each weighed by the "
-          "GGX reflectance (%s)",
-          lobe.lobeRays, lobe.narrow ? "narrowLobeRays" : "lobeRays",
-          lobe.narrow ? "search: planned traces a lobe this narrow, roughness under 0.375, "
-                        "which taps from a capture would draw as rings"
-                      : "search: exact, or planned found tracing cheaper");
+          "  lobe: traced with %d lobe rays (lobeRays) around the reflected ray, each weighed "
+          "by the GGX reflectance (search: exact, or planned found tracing cheaper)",
+          lobe.lobeRays);
     case Source::LobeTaps:
       return formatLine(
           "  lobe: %d lobe taps (lobeTaps) around the reflected ray for this view, each weighed "
