@@ -159,17 +159,20 @@ bool meetsTexel(vec3 x, vec3 d, FaceRay ray, float tau, float tauExit, vec3 dept
   return false;
 }
 
-SearchResult searchDepths(vec3 x, vec3 d) {
+// `finest`: the finest level the search descends to (0: one texel); at a coarser one, a cell the
+// ray does not pass freely is met as its texel would be, at its nearest surface (a blurred lookup
+// needs no more). After `maxSteps` steps, or stalled: layer -1.
+SearchResult searchDepthsTo(vec3 x, vec3 d, int finest, int maxSteps) {
   float tau = 0.0;
   float tauFree = 0.0;  // the farthest point known to be in front of every stored surface
-  int level = max(u_topLevel - 3, 0);
+  int level = max(u_topLevel - 3, finest);
   const float kCode = 1.0 / 65535.0;
   // The ray seen on face f, recomputed only when it moves to another face.
   int f = -1;
   FaceRay ray = FaceRay(0.0, 0.0, vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
   bool faceEdge = true;  // the ray is on a face's edge: which face it is on is to be found
   int stalled = 0;       // minimum steps in a row
-  for (int i = 0; i < kMaxSteps; ++i) {
+  for (int i = 0; i < maxSteps; ++i) {
     int face = faceEdge ? faceOf(x + tau * d) : f;
     if (face != f) {
       f = face;
@@ -201,7 +204,7 @@ SearchResult searchDepths(vec3 x, vec3 d) {
     // everything behind them: nothing in the cell can be met.
     bool free = eFar < eFront;
     bool passes = free || (eNear > eBack && eFar < behind.x);
-    if (!passes && level == 0) {
+    if (!passes && level == finest) {
       SearchResult met;
       vec3 depths = vec3(eIn, eNear, eFar);
       if (meetsTexel(x, d, ray, tau, tauExit, depths, eFront, eBack, behind, i, met)) return met;
@@ -233,7 +236,13 @@ SearchResult searchDepths(vec3 x, vec3 d) {
   // Out of steps or stalled (a long walk of a ray grazing the reflector's rim, behind the sky's
   // texels or a figure's): taken as a miss, looked up along d. (The farthest point reached, the
   // guess this replaced, painted the rim of skybox-grid's mirror grey: its PSNR 29.4 -> 46.0 dB.)
-  return SearchResult(d, 0, kMaxSteps);
+  return SearchResult(d, -1, maxSteps);
+}
+
+SearchResult searchDepths(vec3 x, vec3 d) {
+  SearchResult found = searchDepthsTo(x, d, 0, kMaxSteps);
+  found.layer = max(found.layer, 0);
+  return found;
 }
 
 #ifdef REFLECT_MEDIUMP

@@ -113,11 +113,12 @@ const float kLobeWidthTexels = 2.449;
 // The lobe of alpha around normal n, seen from direction v, at world point `origin`: sum(w L) /
 // sum(w) over u_lobeTaps fixed Hammersley half vectors (core/ggx.h's weights, as the exact mode's
 // lobe rays and the reference), each tap read from the box chain at the level whose texel covers
-// its share of the lobe, 1 / (taps pdf) (filtered importance sampling). `hitDistance` (world
-// units; <= 0: nothing met) is how far the search's central ray went: every tap is taken to
-// meet the scene as far from `origin`, so it is looked up from the probe centre towards that
-// point, and its footprint shrinks as the probe centre sees it from farther away.
-vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, float hitDistance) {
+// its share of the lobe, 1 / (taps pdf) (filtered importance sampling). `quarterDistance` (world
+// units; <= 0: nothing met) is how far from `origin` each quarter of the lobe (by azimuth around
+// n: the Hammersley set's taps in order) meets the scene: every tap of a quarter is taken to meet
+// it as far away, so it is looked up from the probe centre towards that point, and its footprint
+// shrinks as the probe centre sees it from farther away.
+vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, vec4 quarterDistance) {
   float faceTexels = float(textureSize(u_lobeSource, 0).x);
   float texelSolidAngle = 4.0 * kGgxPi / (6.0 * faceTexels * faceTexels);
   float nDotV = max(dot(n, v), 0.0);
@@ -135,6 +136,7 @@ vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, float hitDistance) {
     if (w <= 0.0) continue;
     // The tap's share of the lobe: its density is D (n.h) / (4 v.h) over directions l.
     float share = 4.0 * vDotH / (float(taps) * ggxDistribution(nDotH, alpha) * nDotH);
+    float hitDistance = quarterDistance[k * 4u / taps];
     vec3 towards = l;
     if (hitDistance > 0.0) {
       towards = offset + l * hitDistance;
@@ -147,6 +149,53 @@ vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, float hitDistance) {
   // No lobe above the surface (seen edge on): what the central ray met.
   return weights > 0.0 ? sum / weights : textureLod(u_lobeSource, reflect(-v, n), 0.0).rgb;
 }
+
+#if SEARCH == SEARCH_HIERARCHICAL && CAPTURE_OUTPUT == 0
+// How far a rough mirror's lobe meets the scene, searched: first along its dominant direction R
+// (to one texel, as a sharp mirror's ray; in `measured` the direction it was looked up along),
+// then once per quarter of the lobe, from its median half vector, down only to the level
+// kQuarterSearchLevels finer than the quarter's footprint and for at most kQuarterSearchSteps
+// steps: a coarse cell's nearest surface is where a blurred quarter mostly lands. One distance
+// for the whole lobe (the central ray's) puts every tap on the object the centre meets; at
+// roughness 0.5 on rough-spheres the taps then draw a neighbour's reflection where the lobe has
+// passed it (docs/rough.md, "Lobe taps"). A quarter that runs out of steps keeps the central
+// distance. One loop for all five, so the search's code is compiled once.
+const int kQuarterSearchLevels = 4;
+const int kQuarterSearchSteps = 16;
+
+vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 measured) {
+  float faceTexels = float(textureSize(u_lobeSource, 0).x);
+  float texelSolidAngle = 4.0 * kGgxPi / (6.0 * faceTexels * faceTexels);
+  mat3 frame = frameAround(n);
+  vec3 offset = origin - u_probeCentre;
+  float central = -1.0;
+  vec4 quarters = vec4(-1.0);
+  measured = R;
+  for (int q = 0; q <= 4; ++q) {
+    vec3 d = R;
+    int finest = 0;
+    int steps = kMaxSteps;
+    if (q > 0) {
+      float nDotH;
+      vec3 h = ggxHalfVectorInFrame(vec2((float(q) - 0.5) / 4.0, 0.5), alpha, frame, nDotH);
+      d = reflect(-v, h);
+      float vDotH = max(dot(v, h), 1e-4);
+      float share = vDotH / (ggxDistribution(nDotH, alpha) * nDotH);  // 1 / (4 pdf)
+      finest = max(int(0.5 * log2(share / texelSolidAngle) + kLobeTapLodBias) - kQuarterSearchLevels, 0);
+      steps = kQuarterSearchSteps;
+    }
+    SearchResult found = searchDepthsTo(offset / u_distanceUnit, d, finest, steps);
+    float met = found.layer > 0 ? length(found.point * u_distanceUnit - offset) : -1.0;
+    if (q == 0) {
+      central = met;
+      if (found.layer > 0) measured = found.point;
+    } else {
+      quarters[q - 1] = found.layer < 0 ? central : met;
+    }
+  }
+  return quarters;
+}
+#endif
 
 // A rough reflector drawn into another probe's capture is a second bounce, seen small: one tap
 // along its lobe's dominant direction `d`, at the level the whole lobe covers.
@@ -197,7 +246,7 @@ vec3 roughReflected(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, float hitD
 #if CAPTURE_OUTPUT == 1
   return lobeSeenOnce(R, alpha);
 #else
-  return lobeSeen(origin, n, v, alpha, hitDistance);
+  return lobeSeen(origin, n, v, alpha, vec4(hitDistance));
 #endif
 }
 #elif ROUGH == 1
@@ -222,12 +271,17 @@ vec3 roughSeen(vec3 sharp, vec3 centre, float lod) {
 // The mirror's reflected ray from `origin` along `R`: what it sees, and in `measured` the
 // direction it was looked up along.
 vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
-  float hitDistance;
-  vec3 seen = environmentMet(origin, R, measured, hitDistance);
 #if ROUGH == 1 && ROUGH_TAPS == 1
   vec3 v = normalize(u_viewPosition - origin);
   vec3 n = normalize(v_worldNormal);
   if (dot(n, v) < 0.0) n = -n;  // both sides of a triangle are shaded alike
+#if SEARCH == SEARCH_HIERARCHICAL && CAPTURE_OUTPUT == 0
+  return lobeSeen(origin, n, v, u_roughAlpha, lobeDistances(origin, n, v, R, u_roughAlpha, measured));
+#endif
+#endif
+  float hitDistance;
+  vec3 seen = environmentMet(origin, R, measured, hitDistance);
+#if ROUGH == 1 && ROUGH_TAPS == 1
   seen = roughReflected(origin, n, v, R, u_roughAlpha, hitDistance);
 #elif ROUGH == 1
   seen = roughSeen(seen, measured, u_roughLod);

@@ -82,6 +82,14 @@ std::string howRead(const LobeExplanation& lobe) {
           "by the GGX reflectance (search: exact, or planned found tracing cheaper)",
           lobe.lobeRays);
     case Source::LobeTaps:
+      if (lobe.quartersSearched) {
+        return formatLine(
+            "  lobe: %d lobe taps (lobeTaps) around the reflected ray for this view, each weighed "
+            "by the GGX reflectance and read from the probe's capture (%dx%d faces, its box "
+            "chain) at the level its share of the lobe covers, towards where a search of its "
+            "quarter of the lobe met the scene",
+            lobe.lobeTaps, lobe.tapFaceSize, lobe.tapFaceSize);
+      }
       return formatLine(
           "  lobe: %d lobe taps (lobeTaps) around the reflected ray for this view, each weighed "
           "by the GGX reflectance and read from the probe's capture (%dx%d faces, its box chain) "
@@ -134,6 +142,8 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
     lobe.source = target ? LobeExplanation::Source::LobeTaps : LobeExplanation::Source::NotFiltered;
     lobe.lobeTaps = demo.accuracySettings().lobeTaps;
     lobe.tapFaceSize = target ? target->faceSize() : 0;
+    lobe.quartersSearched = !lobe.glass && !probe->plainLookupSuffices &&
+                            capturedSearch(demo.accuracySettings().search) == Search::Hierarchical;
   } else if (probe) {
     readPrefiltered(demo, *probe, lobe);
   } else {

@@ -38,6 +38,9 @@ struct LobeExplanation {
   bool narrow = false;  // traced for being too narrow for taps (FramePlan::narrowTraced)
   int lobeTaps = 0;     // lobe taps: AccuracySettings::lobeTaps, from faces of tapFaceSize
   int tapFaceSize = 0;
+  // Lobe taps of a mirror drawn with the hierarchical search: each quarter of the lobe searched
+  // for its own distance (shaders/environment_lookup.glsl lobeDistances), not the centre's alone.
+  bool quartersSearched = false;
   // Frosted glass: the light through it is a lobe too, read prefiltered at its own level
   // (transmissionRoughness x usableLevels, as the renderer's u_refractLod).
   bool glass = false;

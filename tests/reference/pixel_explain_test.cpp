@@ -217,6 +217,10 @@ TEST(PixelExplain, ARoughMirrorNamesItsLobeAndHowItIsRead) {
       << tapText;
   EXPECT_NE(tapText.find("probe's capture (128x128 faces, its box chain)"), std::string::npos)
       << tapText;
+  EXPECT_TRUE(taps.quartersSearched);
+  EXPECT_NE(tapText.find("towards where a search of its quarter of the lobe met the scene"),
+            std::string::npos)
+      << tapText;
 
   AccuracySettings prefiltered = demo->accuracySettings();
   prefiltered.lobeTaps = 0;

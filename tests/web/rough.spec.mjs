@@ -93,7 +93,8 @@ const NATIVE_LOBE_LINES = [
     'averaged over the GGX lobe around the reflected ray',
   '  lobe: 16 lobe taps (lobeTaps) around the reflected ray for this view, each weighed by the ' +
     'GGX reflectance and read from the probe\'s capture (128x128 faces, its box chain) at the ' +
-    'level its share of the lobe covers, towards where the search\'s ray met the scene',
+    'level its share of the lobe covers, towards where a search of its quarter of the lobe met ' +
+    'the scene',
   '  the rays and lookups below (and the lines the page draws) are the lobe\'s centre: the ' +
     'reflected ray, and where its search lands',
 ];
