@@ -158,8 +158,8 @@ vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, vec4 quarterDistance) {
 // steps: a coarse cell's nearest surface is where a blurred quarter mostly lands. One distance
 // for the whole lobe (the central ray's) puts every tap on the object the centre meets; at
 // roughness 0.5 on rough-spheres the taps then draw a neighbour's reflection where the lobe has
-// passed it (docs/rough.md, "Lobe taps"). A quarter that runs out of steps keeps the central
-// distance. One loop for all five, so the search's code is compiled once.
+// passed it (docs/rough.md, "Each quarter searched"). A quarter that runs out of steps keeps the
+// central distance. One loop for all five, so the search's code is inlined once.
 const int kQuarterSearchLevels = 4;
 const int kQuarterSearchSteps = 16;
 
@@ -181,7 +181,8 @@ vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 me
       d = reflect(-v, h);
       float vDotH = max(dot(v, h), 1e-4);
       float share = vDotH / (ggxDistribution(nDotH, alpha) * nDotH);  // 1 / (4 pdf)
-      finest = max(int(0.5 * log2(share / texelSolidAngle) + kLobeTapLodBias) - kQuarterSearchLevels, 0);
+      float footprint = 0.5 * log2(share / texelSolidAngle) + kLobeTapLodBias;
+      finest = max(int(footprint) - kQuarterSearchLevels, 0);
       steps = kQuarterSearchSteps;
     }
     SearchResult found = searchDepthsTo(offset / u_distanceUnit, d, finest, steps);
@@ -276,7 +277,8 @@ vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
   vec3 n = normalize(v_worldNormal);
   if (dot(n, v) < 0.0) n = -n;  // both sides of a triangle are shaded alike
 #if SEARCH == SEARCH_HIERARCHICAL && CAPTURE_OUTPUT == 0
-  return lobeSeen(origin, n, v, u_roughAlpha, lobeDistances(origin, n, v, R, u_roughAlpha, measured));
+  vec4 quarterDistance = lobeDistances(origin, n, v, R, u_roughAlpha, measured);
+  return lobeSeen(origin, n, v, u_roughAlpha, quarterDistance);
 #endif
 #endif
   float hitDistance;
