@@ -162,6 +162,7 @@ vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, vec4 quarterDistance) {
 // central distance. One loop for all five, so the search's code is inlined once.
 const int kQuarterSearchLevels = 4;
 const int kQuarterSearchSteps = 16;
+uniform int u_lobeQuarters;  // AccuracySettings::lobeQuarters: 0, the central distance for all
 
 vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 measured) {
   float faceTexels = float(textureSize(u_lobeSource, 0).x);
@@ -171,7 +172,7 @@ vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 me
   float central = -1.0;
   vec4 quarters = vec4(-1.0);
   measured = R;
-  for (int q = 0; q <= 4; ++q) {
+  for (int q = 0; q <= 4 * u_lobeQuarters; ++q) {
     vec3 d = R;
     int finest = 0;
     int steps = kMaxSteps;
@@ -194,7 +195,7 @@ vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 me
       quarters[q - 1] = found.layer < 0 ? central : met;
     }
   }
-  return quarters;
+  return u_lobeQuarters == 1 ? quarters : vec4(central);
 }
 #endif
 

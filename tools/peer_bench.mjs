@@ -58,6 +58,8 @@ const PROJECT_PAGES = [
   { key: 'prefiltered', label: 'project prefiltered', query: 'lobeTaps=0&narrowLobeRays=0' },
   // Narrow lobes read by taps like the rest (the default before they were traced).
   { key: 'narrow-taps', label: 'project, narrow lobes tapped', query: 'narrowLobeRays=0' },
+  // One distance for a whole rough lobe (the default before each quarter was searched).
+  { key: 'one-distance', label: 'project, one lobe distance', query: 'lobeQuarters=false' },
   // The floor: every reflector made a Phong object once the page is up (no capture, no trace).
   { key: 'plain', label: 'project, mirror as Phong', query: '', plain: true },
 ];

@@ -143,6 +143,7 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
     lobe.lobeTaps = demo.accuracySettings().lobeTaps;
     lobe.tapFaceSize = target ? target->faceSize() : 0;
     lobe.quartersSearched = !lobe.glass && !probe->plainLookupSuffices &&
+                            demo.accuracySettings().lobeQuarters &&
                             capturedSearch(demo.accuracySettings().search) == Search::Hierarchical;
   } else if (probe) {
     readPrefiltered(demo, *probe, lobe);

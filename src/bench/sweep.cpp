@@ -18,7 +18,8 @@ namespace {
 
 // Rough mirrors (the rough-spheres scene; docs/rough.md): one knob at a time around the default,
 // at the scene's own face size: the narrow lobes' rays, or taps for them too (the default before
-// narrow lobes were traced); the lobe taps; the prefiltered levels instead (the split sum
+// narrow lobes were traced); one distance for a whole lobe (before each quarter was searched); the
+// lobe taps; the prefiltered levels instead (the split sum
 // everywhere, the default before lobe taps), with their samples and levels; the face size; and
 // the traced lobe's rays (the exact mode).
 void appendRoughSettings(std::vector<SweepSetting>& s) {
@@ -31,6 +32,9 @@ void appendRoughSettings(std::vector<SweepSetting>& s) {
         {n == 0 ? std::string("rough-narrow-taps") : "rough-narrow-rays-" + std::to_string(n), a,
          0});
   }
+  AccuracySettings oneDistance = shipped;
+  oneDistance.lobeQuarters = false;
+  s.push_back({"rough-one-distance", oneDistance, 0});
   for (int n : {4, 8, 32}) {
     AccuracySettings a = shipped;
     a.lobeTaps = n;

@@ -44,6 +44,7 @@ std::string AccuracySettings::describe() const {
   }
   if (roughLevels != defaults.roughLevels) s += ", rough levels " + std::to_string(roughLevels);
   if (lobeRays != defaults.lobeRays) s += ", lobe rays " + std::to_string(lobeRays);
+  if (!lobeQuarters) s += ", one lobe distance";
   if (narrowLobeRays != defaults.narrowLobeRays)
     s += ", narrow lobe rays " + std::to_string(narrowLobeRays);
   return s;

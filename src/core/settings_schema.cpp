@@ -247,6 +247,11 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
                0, 64),
        [](const A& s) { return json(s.lobeTaps); },
        [](A& s, const json& v) { s.lobeTaps = v.get<int>(); }},
+      {flag("lobeQuarters", "lobe quarters",
+            "rough mirrors with lobe taps, searched: each quarter of the lobe searched for how "
+            "far its taps meet the scene (off: the central ray's distance for every tap)"),
+       [](const A& s) { return json(s.lobeQuarters); },
+       [](A& s, const json& v) { s.lobeQuarters = v.get<bool>(); }},
       {integer("filterSamples", "filter samples",
                "rough mirrors: GGX samples per texel of the probe's prefilter pass", 1,
                kMaxFilterSamples),

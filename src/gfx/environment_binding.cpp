@@ -157,6 +157,7 @@ void EnvironmentBinding::bind(const EnvironmentUniforms& u, const ProgramKey& ke
     bindTexture(kLobeUnit, GL_TEXTURE_CUBE_MAP, t.colour);
     glBindSampler(kLobeUnit, s_.probes.lobeSampler());
     u.lobeTaps.set(s_.accuracy.lobeTaps);
+    u.lobeQuarters.set(s_.accuracy.lobeQuarters);
     u.roughAlpha.set(ggxAlpha(object.roughness));
     u.refractAlpha.set(ggxAlpha(transmissionRoughness(object.roughness, object.ior)));
   } else if (key.rough) {

@@ -66,6 +66,7 @@ struct EnvironmentUniforms : UniformTable {
   Uniform<float> roughAlpha{*this, "u_roughAlpha"};
   Uniform<float> refractAlpha{*this, "u_refractAlpha"};
   Uniform<int> lobeTaps{*this, "u_lobeTaps"};
+  Uniform<bool> lobeQuarters{*this, "u_lobeQuarters"};
   // The probe and its search.
   Uniform<glm::vec3> probeCentre{*this, "u_probeCentre"};
   Uniform<float> distanceUnit{*this, "u_distanceUnit"};

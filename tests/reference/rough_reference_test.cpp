@@ -214,14 +214,16 @@ TEST_P(RoughLobe, PrefilteredEachSphereAgainstTheReference) {
 // neighbours in the captures had no captures of their own, the taps were at 24.57 dB.)
 // The spheres it captures take lobe taps, each quarter of the lobe searched for its own distance
 // (docs/rough.md, "Lobe taps"): in the same frame 37.84, 41.34 and 38.28 dB at roughness 0.5,
-// 0.75 and 1 (with the central ray's distance for every tap, as before, 35.86, 39.96 and 37.01);
-// the floors hold them about 0.3 dB under.
+// 0.75 and 1 (with the central ray's distance for every tap, lobeQuarters false, the default
+// before: 35.86, 39.96 and 37.01); the floors hold them, and the gain at 0.5, about 0.3 dB under.
 constexpr int kNarrowWidth = 320;
 constexpr int kNarrowHeight = 240;
 const std::map<float, double> kDefaultFloorsDb = {{0.5f, 37.5}, {0.75f, 41.0}, {1.0f, 38.0}};
+constexpr double kQuartersGainFloorDb = 1.7;  // at roughness 0.5: 37.84 against 35.86 dB
 
-// Each rough sphere's PSNR in the default's frame at 320x240, with `narrowLobeRays`.
-std::map<float, double> defaultSpheres(int narrowLobeRays) {
+// Each rough sphere's PSNR in the default's frame at 320x240, with `narrowLobeRays` and
+// `lobeQuarters`.
+std::map<float, double> defaultSpheres(int narrowLobeRays, bool lobeQuarters = true) {
   static const Scene scene = testing::shippedScene("rough-spheres");
   static const ReferenceFrame reference = [] {
     auto demo = exactDemo(scene);
@@ -232,6 +234,7 @@ std::map<float, double> defaultSpheres(int narrowLobeRays) {
   AccuracySettings settings = demo->accuracySettings();
   EXPECT_EQ(settings.search, Search::Planned);
   settings.narrowLobeRays = narrowLobeRays;
+  settings.lobeQuarters = lobeQuarters;
   EXPECT_EQ(demo->setAccuracySettings(settings), "");
   // A frame first, as the sweep's timed frames do: the spheres' captures show each other, and in
   // a first frame the neighbours they show have no captures of their own yet.
@@ -265,12 +268,16 @@ TEST(RoughNarrowLobe, TheDefaultTracesTheNarrowLobeAndGainsOverItsTaps) {
 
 TEST(RoughDefault, TheCapturedRoughMirrorsHoldTheirFloors) {
   const std::map<float, double> spheres = defaultSpheres(AccuracySettings{}.narrowLobeRays);
+  std::map<float, double> oneDistance = defaultSpheres(AccuracySettings{}.narrowLobeRays, false);
   for (const auto& [roughness, floor] : kDefaultFloorsDb) {
     ASSERT_EQ(spheres.count(roughness), 1u) << "roughness " << roughness;
-    std::printf("rough-spheres %dx%d, the default, roughness %.2f: %.2f dB\n", kNarrowWidth,
-                kNarrowHeight, roughness, spheres.at(roughness));
+    std::printf(
+        "rough-spheres %dx%d, roughness %.2f: the default %.2f dB, one lobe distance %.2f\n",
+        kNarrowWidth, kNarrowHeight, roughness, spheres.at(roughness), oneDistance[roughness]);
     EXPECT_GE(spheres.at(roughness), floor) << "roughness " << roughness;
   }
+  // The quarters' gain where the target was missed without them.
+  EXPECT_GE(spheres.at(0.5f) - oneDistance[0.5f], kQuartersGainFloorDb);
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, RoughLobe, ::testing::ValuesIn(kCases),
