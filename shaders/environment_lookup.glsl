@@ -110,6 +110,12 @@ const float kLobeTapLodBias = -0.5;
 // solid angle, 4 pi / (6 faceTexels^2), is the lobe's at its peak, 1 / pdf(h = n) = 4 pi alpha^2.
 const float kLobeWidthTexels = 2.449;
 
+// The box-chain level a lobe sample reads: the one whose texel covers its `share` of the lobe
+// (steradians), kLobeTapLodBias finer; unclamped.
+float lobeSampleLevel(float share, float texelSolidAngle) {
+  return 0.5 * log2(share / texelSolidAngle) + kLobeTapLodBias;
+}
+
 // The lobe of alpha around normal n, seen from direction v, at world point `origin`: sum(w L) /
 // sum(w) over u_lobeTaps fixed Hammersley half vectors (core/ggx.h's weights, as the exact mode's
 // lobe rays and the reference), each tap read from the box chain at the level whose texel covers
@@ -142,7 +148,7 @@ vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, vec4 quarterDistance) {
       towards = offset + l * hitDistance;
       share *= hitDistance * hitDistance / dot(towards, towards);
     }
-    float lod = max(0.5 * log2(share / texelSolidAngle) + kLobeTapLodBias, 0.0);
+    float lod = max(lobeSampleLevel(share, texelSolidAngle), 0.0);
     sum += w * textureLod(u_lobeSource, towards, lod).rgb;
     weights += w;
   }
@@ -170,7 +176,7 @@ vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 me
   mat3 frame = frameAround(n);
   vec3 offset = origin - u_probeCentre;
   float central = -1.0;
-  vec4 quarters = vec4(-1.0);
+  vec4 quarters;  // each the central distance until its own search finds one
   measured = R;
   for (int q = 0; q <= 4 * u_lobeQuarters; ++q) {
     vec3 d = R;
@@ -182,20 +188,20 @@ vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 me
       d = reflect(-v, h);
       float vDotH = max(dot(v, h), 1e-4);
       float share = vDotH / (ggxDistribution(nDotH, alpha) * nDotH);  // 1 / (4 pdf)
-      float footprint = 0.5 * log2(share / texelSolidAngle) + kLobeTapLodBias;
-      finest = max(int(footprint) - kQuarterSearchLevels, 0);
+      finest = max(int(lobeSampleLevel(share, texelSolidAngle)) - kQuarterSearchLevels, 0);
       steps = kQuarterSearchSteps;
     }
     SearchResult found = searchDepthsTo(offset / u_distanceUnit, d, finest, steps);
     float met = found.layer > 0 ? length(found.point * u_distanceUnit - offset) : -1.0;
     if (q == 0) {
       central = met;
+      quarters = vec4(central);
       if (found.layer > 0) measured = found.point;
     } else {
       quarters[q - 1] = found.layer < 0 ? central : met;
     }
   }
-  return u_lobeQuarters == 1 ? quarters : vec4(central);
+  return quarters;
 }
 #endif
 

@@ -173,12 +173,9 @@ void followRays(const Demo& demo, const SceneBvh& placed, const SurfacePoint& su
   e.lookupRay = {e.glass.exitPoint, e.glass.leaving};
 }
 
-// The search the renderer drew object `object` with (EnvironmentBinding::searchesFor's rule).
+// The search the renderer drew object `object` with, by name.
 std::string searchOf(const Demo& demo, int object) {
-  const Search search = capturedSearch(demo.accuracySettings().search);
-  const ProbePlan* probe = demo.lastPlan().probeOf(object);
-  if (search == Search::Plain || probe == nullptr || probe->plainLookupSuffices) return "plain";
-  return searchName(search);
+  return searchName(searchDrawnWith(demo, object));
 }
 
 // The main pass drawn again into a float target, mirrors and glass writing `output`; pixel

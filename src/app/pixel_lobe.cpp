@@ -82,20 +82,12 @@ std::string howRead(const LobeExplanation& lobe) {
           "by the GGX reflectance (search: exact, or planned found tracing cheaper)",
           lobe.lobeRays);
     case Source::LobeTaps:
-      if (lobe.quartersSearched) {
-        return formatLine(
-            "  lobe: %d lobe taps (lobeTaps) around the reflected ray for this view, each weighed "
-            "by the GGX reflectance and read from the probe's capture (%dx%d faces, its box "
-            "chain) at the level its share of the lobe covers, towards where a search of its "
-            "quarter of the lobe met the scene",
-            lobe.lobeTaps, lobe.tapFaceSize, lobe.tapFaceSize);
-      }
       return formatLine(
           "  lobe: %d lobe taps (lobeTaps) around the reflected ray for this view, each weighed "
           "by the GGX reflectance and read from the probe's capture (%dx%d faces, its box chain) "
-          "at the level its share of the lobe covers, towards where the search's ray met the "
-          "scene",
-          lobe.lobeTaps, lobe.tapFaceSize, lobe.tapFaceSize);
+          "at the level its share of the lobe covers, towards where %s met the scene",
+          lobe.lobeTaps, lobe.tapFaceSize, lobe.tapFaceSize,
+          lobe.quartersSearched ? "a search of its quarter of the lobe" : "the search's ray");
     case Source::PrefilteredSky:
       return formatLine(
                  "  lobe: read from the static skybox's prefiltered levels (filtered once): "
@@ -118,6 +110,13 @@ std::string howRead(const LobeExplanation& lobe) {
 }
 
 }  // namespace
+
+Search searchDrawnWith(const Demo& demo, int object) {
+  const Search search = capturedSearch(demo.accuracySettings().search);
+  const ProbePlan* probe = demo.lastPlan().probeOf(object);
+  if (probe == nullptr || probe->plainLookupSuffices) return Search::Plain;
+  return search;
+}
 
 LobeExplanation explainLobe(const Demo& demo, int object) {
   LobeExplanation lobe;
@@ -142,9 +141,8 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
     lobe.source = target ? LobeExplanation::Source::LobeTaps : LobeExplanation::Source::NotFiltered;
     lobe.lobeTaps = demo.accuracySettings().lobeTaps;
     lobe.tapFaceSize = target ? target->faceSize() : 0;
-    lobe.quartersSearched = !lobe.glass && !probe->plainLookupSuffices &&
-                            demo.accuracySettings().lobeQuarters &&
-                            capturedSearch(demo.accuracySettings().search) == Search::Hierarchical;
+    lobe.quartersSearched = !lobe.glass && demo.accuracySettings().lobeQuarters &&
+                            searchDrawnWith(demo, object) == Search::Hierarchical;
   } else if (probe) {
     readPrefiltered(demo, *probe, lobe);
   } else {

@@ -48,6 +48,10 @@ struct LobeExplanation {
   float throughLevel = 0.0f;
 };
 
+// The search the renderer drew captured object `object` with (EnvironmentBinding's rule): its
+// probe's plain lookup where a search would find the same, else the captured search.
+Search searchDrawnWith(const Demo& demo, int object);
+
 // The lobe of `object` in the frame the demo drew last (Source::None where it has none).
 LobeExplanation explainLobe(const Demo& demo, int object);
 
