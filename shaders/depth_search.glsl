@@ -239,6 +239,24 @@ SearchResult searchDepthsTo(vec3 x, vec3 d, int finest, int maxSteps) {
   return SearchResult(d, -1, maxSteps);
 }
 
+// How far the point x (relative to the probe centre, near-plane units) lies outside the depths
+// the probe stored in its cell at `level`, relative to its own depth: 0 where it lies within a
+// stored object's depth range (either layer's), as a point the probe could have captured there.
+float storedDepthMismatch(vec3 x, int level) {
+  int f = faceOf(x);
+  float z = dot(x, u_faceAxis[f]);
+  vec2 st = vec2(dot(x, u_faceRight[f]), dot(x, u_faceUp[f])) / z;
+  int cells = (u_faceSize + (1 << level) - 1) >> level;
+  ivec2 cell = clamp(ivec2(floor((st * 0.5 + 0.5) * float(u_faceSize))) >> level, ivec2(0),
+                     ivec2(cells - 1));
+  // The codes as depths (1 / (1 - code): depth_encoding.glsl), the sky's (code 1) kept finite.
+  vec4 codes = min(vec4(cellCodes(cell, f, level)) / 65535.0, vec4(1.0 - 1e-6));
+  vec4 stored = 1.0 / (1.0 - codes);
+  float first = max(stored.x - z, 0.0) + max(z - stored.y, 0.0);
+  float second = max(stored.z - z, 0.0) + max(z - stored.w, 0.0);
+  return (u_layers == 2 ? min(first, second) : first) / z;
+}
+
 SearchResult searchDepths(vec3 x, vec3 d) {
   SearchResult found = searchDepthsTo(x, d, 0, kMaxSteps);
   found.layer = max(found.layer, 0);

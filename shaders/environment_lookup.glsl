@@ -116,15 +116,64 @@ float lobeSampleLevel(float share, float texelSolidAngle) {
   return 0.5 * log2(share / texelSolidAngle) + kLobeTapLodBias;
 }
 
+// One lobe tap along l (its `share` of the lobe, steradians) read from the box chain: towards the
+// point hitDistance along it from `offset` (relative to the probe centre, world units), its
+// footprint shrunk as the probe centre sees that point from farther away; along l where
+// hitDistance <= 0 (nothing met).
+vec3 tapSeen(vec3 offset, vec3 l, float hitDistance, float share, float texelSolidAngle) {
+  vec3 towards = l;
+  if (hitDistance > 0.0) {
+    towards = offset + l * hitDistance;
+    share *= hitDistance * hitDistance / dot(towards, towards);
+  }
+  float lod = max(lobeSampleLevel(share, texelSolidAngle), 0.0);
+  return textureLod(u_lobeSource, towards, lod).rgb;
+}
+
+#if SEARCH == SEARCH_HIERARCHICAL && CAPTURE_OUTPUT == 0
+// A wide lobe's quarter spans tens of degrees, and a tap far from its median ray can miss what
+// that ray met: where the median ray passes a neighbour's outline, every tap of the quarter jumps
+// from the neighbour to the wall behind it at once, a sharp arc across the roughness-1 sphere
+// (docs/rough.md, "Each quarter searched"). So on lobes wider than WIDE_LOBE_ALPHA (core
+// kWideLobeAlpha) each tap checks its quarter's point and the central ray's point against the
+// depths the probe stored around them, at the tap's own level, and blends towards the central
+// point by how much better the depths hold it: a blend, not a choice, so it varies smoothly from
+// pixel to pixel. Fully from alpha 1; kDepthCheckSlack (relative depth) keeps two points that
+// both nearly fit from swinging the blend. On narrower lobes the check measured a loss (0.5 dB
+// at roughness 0.5, t = 1.5 and 3.5 s): there a quarter's taps lie close to its median ray.
+const float kDepthCheckSlack = 0.1;
+
+// The tap along l, from `offset`, taken to meet the scene `quarter` away (its quarter's search),
+// or `central` away (the central ray's), blended as above.
+vec3 tapSeenChecked(vec3 offset, vec3 l, float quarter, float central, float alpha, float share,
+                    float texelSolidAngle) {
+  vec3 seen = tapSeen(offset, l, quarter, share, texelSolidAngle);
+  if (quarter == central || alpha <= float(WIDE_LOBE_ALPHA)) return seen;
+  int level = clamp(int(lobeSampleLevel(share, texelSolidAngle)), 0, u_topLevel);
+  vec3 far = l * 1e4;  // nothing met: a point far along l
+  vec3 quarterPoint = quarter > 0.0 ? (offset + l * quarter) / u_distanceUnit : far;
+  vec3 centralPoint = central > 0.0 ? (offset + l * central) / u_distanceUnit : far;
+  float quarterOff = storedDepthMismatch(quarterPoint, level);
+  float centralOff = storedDepthMismatch(centralPoint, level);
+  float wide = min((alpha - float(WIDE_LOBE_ALPHA)) / (1.0 - float(WIDE_LOBE_ALPHA)), 1.0);
+  float towardsCentral =
+      wide * clamp((quarterOff - centralOff) / (quarterOff + centralOff + kDepthCheckSlack), 0.0,
+                   1.0);
+  if (towardsCentral <= 0.0) return seen;
+  return mix(seen, tapSeen(offset, l, central, share, texelSolidAngle), towardsCentral);
+}
+#endif
+
 // The lobe of alpha around normal n, seen from direction v, at world point `origin`: sum(w L) /
 // sum(w) over u_lobeTaps fixed Hammersley half vectors (core/ggx.h's weights, as the exact mode's
 // lobe rays and the reference), each tap read from the box chain at the level whose texel covers
 // its share of the lobe, 1 / (taps pdf) (filtered importance sampling). `quarterDistance` (world
 // units; <= 0: nothing met) is how far from `origin` each quarter of the lobe (by azimuth around
-// n: the Hammersley set's taps in order) meets the scene: every tap of a quarter is taken to meet
-// it as far away, so it is looked up from the probe centre towards that point, and its footprint
-// shrinks as the probe centre sees it from farther away.
-vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, vec4 quarterDistance) {
+// n: the Hammersley set's taps in order) meets the scene, `central` how far the central ray does:
+// every tap of a quarter is taken to meet it as far away (on a wide lobe, checked against the
+// central ray's distance: tapSeenChecked), so it is looked up from the probe centre towards that
+// point.
+vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, vec4 quarterDistance, float central) {
   float faceTexels = float(textureSize(u_lobeSource, 0).x);
   float texelSolidAngle = 4.0 * kGgxPi / (6.0 * faceTexels * faceTexels);
   float nDotV = max(dot(n, v), 0.0);
@@ -143,13 +192,12 @@ vec3 lobeSeen(vec3 origin, vec3 n, vec3 v, float alpha, vec4 quarterDistance) {
     // The tap's share of the lobe: its density is D (n.h) / (4 v.h) over directions l.
     float share = 4.0 * vDotH / (float(taps) * ggxDistribution(nDotH, alpha) * nDotH);
     float hitDistance = quarterDistance[k * 4u / taps];
-    vec3 towards = l;
-    if (hitDistance > 0.0) {
-      towards = offset + l * hitDistance;
-      share *= hitDistance * hitDistance / dot(towards, towards);
-    }
-    float lod = max(lobeSampleLevel(share, texelSolidAngle), 0.0);
-    sum += w * textureLod(u_lobeSource, towards, lod).rgb;
+#if SEARCH == SEARCH_HIERARCHICAL && CAPTURE_OUTPUT == 0
+    vec3 seen = tapSeenChecked(offset, l, hitDistance, central, alpha, share, texelSolidAngle);
+#else
+    vec3 seen = tapSeen(offset, l, hitDistance, share, texelSolidAngle);
+#endif
+    sum += w * seen;
     weights += w;
   }
   // No lobe above the surface (seen edge on): what the central ray met.
@@ -170,12 +218,13 @@ const int kQuarterSearchLevels = 4;
 const int kQuarterSearchSteps = 16;
 uniform int u_lobeQuarters;  // AccuracySettings::lobeQuarters: 0, the central distance for all
 
-vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 measured) {
+vec4 lobeDistances(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, out vec3 measured,
+                   out float central) {
   float faceTexels = float(textureSize(u_lobeSource, 0).x);
   float texelSolidAngle = 4.0 * kGgxPi / (6.0 * faceTexels * faceTexels);
   mat3 frame = frameAround(n);
   vec3 offset = origin - u_probeCentre;
-  float central = -1.0;
+  central = -1.0;
   vec4 quarters;  // each the central distance until its own search finds one
   measured = R;
   for (int q = 0; q <= 4 * u_lobeQuarters; ++q) {
@@ -254,7 +303,7 @@ vec3 roughReflected(vec3 origin, vec3 n, vec3 v, vec3 R, float alpha, float hitD
 #if CAPTURE_OUTPUT == 1
   return lobeSeenOnce(R, alpha);
 #else
-  return lobeSeen(origin, n, v, alpha, vec4(hitDistance));
+  return lobeSeen(origin, n, v, alpha, vec4(hitDistance), hitDistance);
 #endif
 }
 #elif ROUGH == 1
@@ -284,8 +333,9 @@ vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
   vec3 n = normalize(v_worldNormal);
   if (dot(n, v) < 0.0) n = -n;  // both sides of a triangle are shaded alike
 #if SEARCH == SEARCH_HIERARCHICAL && CAPTURE_OUTPUT == 0
-  vec4 quarterDistance = lobeDistances(origin, n, v, R, u_roughAlpha, measured);
-  return lobeSeen(origin, n, v, u_roughAlpha, quarterDistance);
+  float central;
+  vec4 quarterDistance = lobeDistances(origin, n, v, R, u_roughAlpha, measured, central);
+  return lobeSeen(origin, n, v, u_roughAlpha, quarterDistance, central);
 #endif
 #endif
   float hitDistance;

@@ -85,9 +85,12 @@ std::string howRead(const LobeExplanation& lobe) {
       return formatLine(
           "  lobe: %d lobe taps (lobeTaps) around the reflected ray for this view, each weighed "
           "by the GGX reflectance and read from the probe's capture (%dx%d faces, its box chain) "
-          "at the level its share of the lobe covers, towards where %s met the scene",
+          "at the level its share of the lobe covers, towards where %s met the scene%s",
           lobe.lobeTaps, lobe.tapFaceSize, lobe.tapFaceSize,
-          lobe.quartersSearched ? "a search of its quarter of the lobe" : "the search's ray");
+          lobe.quartersSearched ? "a search of its quarter of the lobe" : "the search's ray",
+          lobe.tapsChecked ? " (a wide lobe: each tap blended towards where the central ray met "
+                             "the scene, as far as the probe's depths hold that point better)"
+                           : "");
     case Source::PrefilteredSky:
       return formatLine(
                  "  lobe: read from the static skybox's prefiltered levels (filtered once): "
@@ -143,6 +146,7 @@ LobeExplanation explainLobe(const Demo& demo, int object) {
     lobe.tapFaceSize = target ? target->faceSize() : 0;
     lobe.quartersSearched = !lobe.glass && demo.accuracySettings().lobeQuarters &&
                             searchDrawnWith(demo, object) == Search::Hierarchical;
+    lobe.tapsChecked = lobe.quartersSearched && lobe.alpha > kWideLobeAlpha;
   } else if (probe) {
     readPrefiltered(demo, *probe, lobe);
   } else {

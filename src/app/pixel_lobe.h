@@ -41,6 +41,9 @@ struct LobeExplanation {
   // Lobe taps of a mirror drawn with the hierarchical search: each quarter of the lobe searched
   // for its own distance (shaders/environment_lookup.glsl lobeDistances), not the centre's alone.
   bool quartersSearched = false;
+  // ... and, the lobe being wide (alpha over kWideLobeAlpha), each tap blended towards where the
+  // central ray met the scene where the probe's depths hold that point better (tapSeenChecked).
+  bool tapsChecked = false;
   // Frosted glass: the light through it is a lobe too, read prefiltered at its own level
   // (transmissionRoughness x usableLevels, as the renderer's u_refractLod).
   bool glass = false;

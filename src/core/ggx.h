@@ -95,4 +95,10 @@ float roughnessOfLevel(int level, int levels);
 inline constexpr float kTransmissionLobeFit = 0.75f;
 float transmissionRoughness(float roughness, float ior);
 
+// A lobe wider than this GGX alpha (roughness 0.71) is wide: a quarter of its lobe taps spreads
+// tens of degrees from the quarter's median ray, whose distance the taps take, so each tap also
+// checks the central ray's distance against the probe's depths (shaders/environment_lookup.glsl,
+// tapSeenChecked). Narrower lobes lost by it (docs/rough.md, "Each quarter searched").
+inline constexpr float kWideLobeAlpha = 0.5f;
+
 }  // namespace reflect

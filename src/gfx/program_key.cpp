@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "core/bvh.h"
+#include "core/ggx.h"
 #include "core/trace_limits.h"
 
 namespace reflect {
@@ -47,6 +48,8 @@ std::string ProgramKey::defines() const {
   out += define("EXACT_GENERAL", traceGeneral ? 1 : 0);
   out += define("ROUGH", rough ? 1 : 0);
   out += define("ROUGH_TAPS", roughTaps ? 1 : 0);
+  // A float the shader compares with: written with its decimals (0.5 -> "0.500000").
+  out += "#define WIDE_LOBE_ALPHA " + std::to_string(kWideLobeAlpha) + "\n";
 
   if (search == Search::Exact) {
     // The atlas's layout and the rays' limits, from the C++ that writes and checks them.

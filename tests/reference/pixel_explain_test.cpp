@@ -184,6 +184,7 @@ TEST(PixelExplain, PixelsWithNothingToExplainSaySoPlainly) {
 // --size 400x400 --time 2 --pixel X,Y).
 constexpr glm::ivec2 kHalfRoughPixel{200, 225};
 constexpr glm::ivec2 kPerfectPixel{43, 225};
+constexpr glm::ivec2 kRoughestPixel{340, 225};  // the roughness-1 sphere (object 7)
 
 std::string joinedLines(const PixelExplanation& e) {
   std::string text;
@@ -221,6 +222,21 @@ TEST(PixelExplain, ARoughMirrorNamesItsLobeAndHowItIsRead) {
   EXPECT_NE(tapText.find("towards where a search of its quarter of the lobe met the scene"),
             std::string::npos)
       << tapText;
+  EXPECT_FALSE(taps.tapsChecked);  // alpha 0.25: not a wide lobe
+  EXPECT_EQ(tapText.find("a wide lobe"), std::string::npos) << tapText;
+
+  // The roughness-1 sphere: a wide lobe, whose taps are checked against the depths.
+  Result<PixelExplanation> wide = explainAt(*demo, 2.0, kRoughestPixel);
+  ASSERT_TRUE(wide) << wide.error();
+  EXPECT_EQ(wide.value().object, 7);
+  EXPECT_EQ(wide.value().lobe.roughness, 1.0f);
+  EXPECT_TRUE(wide.value().lobe.tapsChecked);
+  const std::string wideText = joinedLines(wide.value());
+  EXPECT_NE(wideText.find("met the scene (a wide lobe: each tap blended towards where the central "
+                          "ray met the scene, as far as the probe's depths hold that point "
+                          "better)"),
+            std::string::npos)
+      << wideText;
 
   AccuracySettings prefiltered = demo->accuracySettings();
   prefiltered.lobeTaps = 0;
