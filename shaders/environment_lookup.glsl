@@ -154,6 +154,7 @@ vec3 tapSeenChecked(vec3 offset, vec3 l, float quarter, float central, float alp
   vec3 quarterPoint = quarter > 0.0 ? (offset + l * quarter) / u_distanceUnit : far;
   vec3 centralPoint = central > 0.0 ? (offset + l * central) / u_distanceUnit : far;
   float quarterOff = storedDepthMismatch(quarterPoint, level);
+  if (quarterOff <= 0.0) return seen;  // the depths hold the quarter's point: nothing to blend
   float centralOff = storedDepthMismatch(centralPoint, level);
   float wide = min((alpha - float(WIDE_LOBE_ALPHA)) / (1.0 - float(WIDE_LOBE_ALPHA)), 1.0);
   float towardsCentral =
