@@ -17,6 +17,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
                                  const PlannerView& view) const {
   MethodChoice c;
   c.reflector = probe.reflector;
+  double roughMirrorPixels = 0.0;  // those whose lobes' quarters search (lobeDistances)
   for (size_t i = 0; i < objects.size(); ++i) {
     const PlannedObject& o = objects[i];
     if (!o.levels.empty()) c.trace.triangles += static_cast<double>(o.levels[0].triangles);
@@ -28,6 +29,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
         // Frosted glass traces two lobes a pixel (its reflection's and the light through it),
         // each crossing the object: about twice a rough mirror's rays.
         c.trace.lobePixels += o.look.material == Material::Glass ? 2.0f * pixels : pixels;
+        if (o.look.material == Material::Mirror) roughMirrorPixels += pixels;
       }
     }
   }
@@ -65,6 +67,9 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
   c.capture.pixels = probe.plainLookupSuffices ? 0.0 : c.trace.pixels;
   c.trace.lobeRays = context.accuracy.lobeRays;
   if (probe.lobeTapReaders) c.capture.lobeTaps = c.trace.lobePixels * context.accuracy.lobeTaps;
+  // Only the hierarchical search runs the quarters' searches (not a plain lookup).
+  if (probe.lobeTapReaders && context.accuracy.lobeQuarters && !probe.plainLookupSuffices)
+    c.capture.lobeSearches = kLobeQuarters * roughMirrorPixels;
   if (c.capture.faces > 0.0) {
     c.capture.filterSamples = share * planner::filterSamplesFor(probe.roughLevels, context.faceSize,
                                                                 context.accuracy.filterSamples);
@@ -79,6 +84,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
     colours.pixels = 0.0;
     colours.filterSamples = 0.0;
     colours.lobeTaps = 0.0;
+    colours.lobeSearches = 0.0;
     c.traceMs += captureCost(colours, costs_);
   }
   return c;

@@ -41,6 +41,15 @@ MethodCosts MethodCosts::softwareRenderer() {
   // pixel instead of per texel. (Fitting it from the sweep's main passes was within this
   // machine's noise: 1.3e-4 from one run, which changed no choice in the rough scenes.)
   c.lobeTap = 3.6e-5;
+  // A quarter's search: at most 16 steps, on coarse levels. The default's frame less the same
+  // frame with one lobe distance (lobeQuarters off) on rough-spheres at 512x512, the held-out
+  // times: a median of 18.7 ms over the six runs in docs/bench/sweep-rough-tap-check*.txt (5.6
+  // to 20.8 ms: the machine's noise), for the planner's ~55k pixels of the three captured rough
+  // mirrors (`reflect bench --costs --scene rough-spheres`: 91.6k mirror pixels over five
+  // spheres of one size) times four quarters: 8.5e-5 ms a search, about 0.3x a pixel's full
+  // search. It changes no choice in the shipped scenes: a rough mirror traced costs its 16
+  // lobe rays, several times this.
+  c.lobeSearch = 8.5e-5;
   return c;
 }
 
@@ -54,7 +63,7 @@ double traceCost(const TraceWork& work, const MethodCosts& costs) {
 double captureCost(const CaptureWork& work, const MethodCosts& costs) {
   return work.faces * costs.face + work.triangles * costs.triangle + work.texels * costs.texel +
          work.pixels * costs.searchPixel + work.filterSamples * costs.filterSample +
-         work.lobeTaps * costs.lobeTap;
+         work.lobeTaps * costs.lobeTap + work.lobeSearches * costs.lobeSearch;
 }
 
 Method chooseMethod(double trace, double capture, Method current, const MethodCosts& costs) {

@@ -146,6 +146,42 @@ TEST(RoughPlanning, ARoughPixelTracesLobeRaysAndAFilteredProbeCostsItsSamples) {
   EXPECT_DOUBLE_EQ(planner::filterSamplesFor({1, 2}, 64, 32), 6.0 * (32 * 32 + 16 * 16) * 32);
 }
 
+// Search: planned weighs a captured rough mirror with its lobe's quarters' searches, four a pixel
+// (lobeQuarters), and frosted glass (one distance for its taps) and the perfect mirror without;
+// lobeQuarters off counts none.
+TEST(RoughPlanning, ACapturedRoughMirrorCostsItsQuartersSearches) {
+  std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 0.5f), mirrorAt({4, 0, 0}, 0.0f),
+                                   mirrorAt({8, 0, 0}, 0.5f)};
+  scene[2].look.material = Material::Glass;
+  MethodCosts costs;  // tracing made dear: every probe is captured
+  costs.tracePixel = 1e6;
+  costs.lobeSearch = 0.5;
+  const PlannerView view{{0.0f, 0.0f, 20.0f}, 400.0f, 800.0f * 800.0f};
+  for (bool quarters : {true, false}) {
+    CaptureContext planned;
+    ASSERT_EQ(planned.accuracy.search, Search::Planned);
+    ASSERT_EQ(planned.accuracy.lobeTaps, 16);
+    planned.accuracy.lobeQuarters = quarters;
+    FramePlanner planner;
+    planner.setCosts(costs);
+    const FramePlan plan = planner.plan(scene, planned, {}, view);
+    ASSERT_EQ(planner.choices().size(), 3u);
+    for (const MethodChoice& choice : planner.choices()) {
+      const ProbePlan* probe = plan.probeOf(choice.reflector);
+      ASSERT_NE(probe, nullptr);
+      EXPECT_FALSE(plan.traces(choice.reflector));
+      EXPECT_GT(choice.trace.pixels, 0.0);
+      const bool roughMirror = choice.reflector == 0;
+      ASSERT_EQ(probe->plainLookupSuffices, false) << "reflector " << choice.reflector;
+      const double searches = quarters && roughMirror ? kLobeQuarters * choice.trace.pixels : 0.0;
+      EXPECT_DOUBLE_EQ(choice.capture.lobeSearches, searches) << "reflector " << choice.reflector;
+      CaptureWork without = choice.capture;
+      without.lobeSearches = 0.0;
+      EXPECT_DOUBLE_EQ(choice.captureMs, captureCost(without, costs) + 0.5 * searches);
+    }
+  }
+}
+
 // A lobe too narrow for the capture (roughness under 0.375) is traced under search: planned
 // where the weighing chose the capture, with narrowLobeRays rays; a wider one is weighed as
 // before; narrowLobeRays 0 captures it; a trace the weighing chose, and the exact mode, cast
