@@ -57,6 +57,7 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
     planner::decideStorage(laid, objects, context);
     laid.roughLevels = planner::roughLevelsOf(laid, objects, context);
     laid.lobeTapReaders = planner::readsLobeTaps(laid, objects, context);
+    laid.faceSize = planner::lobeTapFaceSize(laid, objects, context);
     laid.filterFaces = 0;  // which levels there are; nothing is filtered here
     if (objects[static_cast<size_t>(laid.reflector)].ownsLightProbe) keepColoursOnly(laid, objects);
   }
@@ -209,10 +210,12 @@ bool FramePlanner::planCapture(ProbePlan& probe, FaceDraws draws,
   // The probe moved, a capture option changed or it stores other layers or none: no face is
   // valid any more.
   if (probe.centre != memory.centre || !(context == memory.context) ||
-      probe.layers != memory.layers || probe.plainLookupSuffices != memory.plainLookupSuffices) {
+      probe.faceSize != memory.faceSize || probe.layers != memory.layers ||
+      probe.plainLookupSuffices != memory.plainLookupSuffices) {
     for (FaceMemory& f : memory.faces) f.captured = false;
     memory.centre = probe.centre;
     memory.context = context;
+    memory.faceSize = probe.faceSize;
     memory.layers = probe.layers;
     memory.plainLookupSuffices = probe.plainLookupSuffices;
   }
@@ -251,6 +254,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
     planner::decideStorage(probe, objects, context);
     probe.roughLevels = planner::roughLevelsOf(probe, objects, context);
     probe.lobeTapReaders = planner::readsLobeTaps(probe, objects, context);
+    probe.faceSize = planner::lobeTapFaceSize(probe, objects, context);
     const bool own = objects[static_cast<size_t>(probe.reflector)].ownsLightProbe;
     if (own) keepColoursOnly(probe, objects);
     ProbeMemory& memory = memoryOf(probe.reflector);

@@ -148,7 +148,8 @@ struct ProbePlan : ProbeLayout {
   // Captured for its diffuse readers alone: its reflectors' rays are traced (FramePlan::traced),
   // so nothing searches or filters it; it stores colours only (one layer, no depths).
   bool lightOnly = false;
-  // Its faces' size when it is not the scene's (a probe-lit object's own: kIrradianceFaceSize).
+  // Its faces' size when it is not the scene's (a probe-lit object's own: kIrradianceFaceSize;
+  // one read only by rough mirrors' lobe taps: planner::lobeTapFaceSize).
   int faceSize = 0;
 };
 
@@ -283,6 +284,7 @@ class FramePlanner {
     Method method = Method::Capture;
     bool narrowForced = false;  // traced for a narrow lobe where the weighing chose the capture
     glm::vec3 centre{0.0f};
+    int faceSize = 0;  // ProbePlan::faceSize
     int layers = 1;
     bool plainLookupSuffices = false;  // (the capture then stores no depths)
     std::vector<int> filteredLevels;   // the prefiltered levels as last filtered

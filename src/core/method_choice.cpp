@@ -37,7 +37,8 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
   // the course's policy), each with one pass, or three where two layers are stored; then every
   // mirror pixel searches.
   const bool everyFrame = settings.policy == UpdatePolicy::EveryFrame;
-  const double texels = static_cast<double>(context.faceSize) * context.faceSize;
+  const int faceSize = probe.faceSize > 0 ? probe.faceSize : context.faceSize;
+  const double texels = static_cast<double>(faceSize) * faceSize;
   for (int face = 0; face < 6; ++face) {
     const std::vector<DrawItem>& shown = draws[static_cast<size_t>(face)];
     bool moving = everyFrame;
@@ -71,7 +72,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
   if (probe.lobeTapReaders && context.accuracy.lobeQuarters && !probe.plainLookupSuffices)
     c.capture.lobeSearches = kLobeQuarters * roughMirrorPixels;
   if (c.capture.faces > 0.0) {
-    c.capture.filterSamples = share * planner::filterSamplesFor(probe.roughLevels, context.faceSize,
+    c.capture.filterSamples = share * planner::filterSamplesFor(probe.roughLevels, faceSize,
                                                                 context.accuracy.filterSamples);
   }
   c.traceMs = traceCost(c.trace, costs_);

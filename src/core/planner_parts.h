@@ -63,6 +63,14 @@ inline bool faceStoresTwoLayers(int probeLayers, size_t shown, const CaptureCont
 // Whether a probe's rough readers sample their lobes from its capture (ProbePlan::lobeTapReaders).
 bool readsLobeTaps(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,
                    const CaptureContext& context);
+// The face size a probe whose readers are all rough mirrors sampling lobe taps needs
+// (ProbePlan::faceSize; 0: the scene's): the scene's halved while each reader's tap at its lobe's
+// peak still covers kMinTapFootprintTexels texels across, and never under kMinLobeTapFaceSize.
+// A probe with other readers (sharp, glass, diffuse) keeps the scene's size.
+inline constexpr float kMinTapFootprintTexels = 4.0f;
+inline constexpr int kMinLobeTapFaceSize = 32;
+int lobeTapFaceSize(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                    const CaptureContext& context);
 // The prefiltered levels a probe's rough readers need (ProbePlan::roughLevels), sorted; none
 // where they take lobe taps.
 std::vector<int> roughLevelsOf(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,

@@ -3,8 +3,10 @@
 // mirrors (or polished glass, or a cube-textured object) keeps no level and is never filtered;
 // nor is one whose rough readers take lobe taps from the capture itself (the default), which
 // keeps its box chain instead. The static skybox's rough readers get the sky's levels the same
-// way, filtered once.
+// way, filtered once. A probe read only by rough mirrors' lobe taps is captured at the face size
+// their lobes need (lobeTapFaceSize), not the scene's.
 #include <algorithm>
+#include <cmath>
 
 #include "core/frame_planner.h"
 #include "core/ggx.h"
@@ -40,6 +42,28 @@ bool readsLobeTaps(const ProbeLayout& probe, const std::vector<PlannedObject>& o
   return context.accuracy.lobeTaps > 0 &&
          std::any_of(probe.members.begin(), probe.members.end(),
                      [&](int m) { return objects[static_cast<size_t>(m)].look.rough(); });
+}
+
+int lobeTapFaceSize(const ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                    const CaptureContext& context) {
+  if (!probe.lobeTapReaders || !probe.diffuseReaders.empty()) return 0;
+  // A tap's share of its lobe at the lobe's peak is 4 pi alpha^2 / taps steradians; a texel of
+  // faces of N is 4 pi / (6 N^2): the tap covers N alpha sqrt(6 / taps) texels across, and the
+  // narrowest lobe among the readers sets the size.
+  float narrowest = 1.0f;
+  for (int m : probe.members) {
+    const SceneObject::Look& look = objects[static_cast<size_t>(m)].look;
+    if (look.material != Material::Mirror || !look.rough()) return 0;
+    narrowest = std::min(narrowest, ggxAlpha(look.roughness));
+  }
+  const float perTexel =
+      narrowest * std::sqrt(6.0f / static_cast<float>(std::max(context.accuracy.lobeTaps, 1)));
+  int size = context.faceSize;
+  while (size / 2 >= kMinLobeTapFaceSize &&
+         static_cast<float>(size / 2) * perTexel >= kMinTapFootprintTexels) {
+    size /= 2;
+  }
+  return size == context.faceSize ? 0 : size;
 }
 
 std::vector<int> roughLevelsOf(const ProbeLayout& probe, const std::vector<PlannedObject>& objects,

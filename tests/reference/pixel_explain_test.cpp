@@ -198,9 +198,10 @@ Scene roughSpheres() {
   return scene ? scene.take() : Scene{};
 }
 
-// Captured (search: hierarchical): roughness 0.5 samples its lobe with 16 taps from the 128-texel
-// probe's capture; with lobe taps off it reads level 0.5 x 5 = 2.5 of its prefiltered levels,
-// between level 2 (32 texels) and 3 (16). The rays explained are the lobe's centre.
+// Captured (search: hierarchical): roughness 0.5 samples its lobe with 16 taps from its probe's
+// capture, 32 texels a face (the scene's 128 halved while a tap covers 4 texels: lobeTapFaceSize);
+// with lobe taps off (the scene's 128 texels) it reads level 0.5 x 5 = 2.5 of its prefiltered
+// levels, between level 2 (32 texels) and 3 (16). The rays explained are the lobe's centre.
 TEST(PixelExplain, ARoughMirrorNamesItsLobeAndHowItIsRead) {
   auto demo = testing::makeCapturingDemo(roughSpheres());
   Result<PixelExplanation> e = explainAt(*demo, 2.0, kHalfRoughPixel);
@@ -210,13 +211,13 @@ TEST(PixelExplain, ARoughMirrorNamesItsLobeAndHowItIsRead) {
   const LobeExplanation& taps = e.value().lobe;
   EXPECT_EQ(taps.source, LobeExplanation::Source::LobeTaps);
   EXPECT_EQ(taps.lobeTaps, 16);
-  EXPECT_EQ(taps.tapFaceSize, 128);
+  EXPECT_EQ(taps.tapFaceSize, 32);
   const std::string tapText = joinedLines(e.value());
   EXPECT_NE(tapText.find("roughness 0.50, GGX alpha 0.2500"), std::string::npos) << tapText;
   EXPECT_NE(tapText.find("16 lobe taps (lobeTaps) around the reflected ray for this view"),
             std::string::npos)
       << tapText;
-  EXPECT_NE(tapText.find("probe's capture (128x128 faces, its box chain)"), std::string::npos)
+  EXPECT_NE(tapText.find("probe's capture (32x32 faces, its box chain)"), std::string::npos)
       << tapText;
   EXPECT_TRUE(taps.quartersSearched);
   EXPECT_NE(tapText.find("towards where a search of its quarter of the lobe met the scene"),

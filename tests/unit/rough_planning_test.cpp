@@ -70,6 +70,65 @@ TEST(RoughPlanning, LobeTapReadersKeepNoLevelsAndAreNeverFiltered) {
   }
 }
 
+// A probe read only by rough mirrors' lobe taps is captured at the size their lobes need: the
+// scene's halved while a tap at its lobe's peak covers 4 texels across (N alpha sqrt(6 / taps)),
+// never under 32. Narrow lobes, more taps, glass and a perfect mirror keep more or the scene's.
+TEST(RoughPlanning, ALobeTapProbeIsCapturedAtTheSizeItsLobesNeed) {
+  const std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 0.5f), mirrorAt({4, 0, 0}, 1.0f),
+                                         mirrorAt({8, 0, 0}, 0.25f), mirrorAt({12, 0, 0}, 0.0f),
+                                         mirrorAt({16, 0, 0}, 0.5f)};
+  std::vector<PlannedObject> withGlass = scene;
+  withGlass[4].look.material = Material::Glass;
+  const auto sizes = [](const std::vector<PlannedObject>& objects, int faceSize, int taps) {
+    CaptureContext context = capturing(5, taps);
+    context.faceSize = faceSize;
+    FramePlanner planner;
+    std::vector<int> probeSizes;
+    for (const ProbePlan& probe : planner.plan(objects, context, {}).probes) {
+      probeSizes.push_back(probe.faceSize);
+    }
+    return probeSizes;
+  };
+  // 0.5 at 128: 0.25 x 0.61 = 0.153 texels a face texel, 4.9 at 32; 0.25: 2.45 at 64, so 128.
+  EXPECT_EQ(sizes(scene, 128, 16), (std::vector<int>{32, 32, 0, 0, 32}));
+  EXPECT_EQ(sizes(withGlass, 128, 16), (std::vector<int>{32, 32, 0, 0, 0}));
+  EXPECT_EQ(sizes(scene, 512, 16), (std::vector<int>{32, 32, 128, 0, 32}));
+  // 32 taps: each covers less of the lobe (0.5: 3.46 at 32, so 64).
+  EXPECT_EQ(sizes(scene, 128, 32), (std::vector<int>{64, 32, 0, 0, 64}));
+  // No lobe taps: the prefiltered levels are filtered from faces of the scene's size.
+  EXPECT_EQ(sizes(scene, 128, 0), (std::vector<int>{0, 0, 0, 0, 0}));
+  // The cost counts the probe's own texels.
+  CaptureContext planned;
+  planned.faceSize = 128;
+  MethodCosts costs;
+  costs.tracePixel = 1e6;
+  costs.texel = 1.0;
+  FramePlanner planner;
+  planner.setCosts(costs);
+  const PlannerView view{{0.0f, 0.0f, 20.0f}, 400.0f, 800.0f * 800.0f};
+  PlannerSettings everyFrame;
+  everyFrame.policy = UpdatePolicy::EveryFrame;
+  planner.plan({scene[0]}, planned, everyFrame, view);
+  ASSERT_EQ(planner.choices().size(), 1u);
+  EXPECT_DOUBLE_EQ(planner.choices()[0].capture.texels, 6.0 * 32.0 * 32.0);  // one layer
+}
+
+// A probe whose face size changes forgets its faces: they are drawn again at the new size.
+TEST(RoughPlanning, ANewFaceSizeRedrawsEveryFace) {
+  std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 1.0f), boxAt({0, 0, 5})};
+  CaptureContext context = capturing(5, 16);
+  context.faceSize = 128;
+  PlannerSettings settings;
+  settings.policy = UpdatePolicy::WhenChanged;
+  FramePlanner planner;
+  EXPECT_EQ(planner.plan(scene, context, settings).probes[0].faces.size(), 6u);
+  EXPECT_EQ(planner.plan(scene, context, settings).probes[0].faces.size(), 0u);
+  scene[0].look.roughness = 0.25f;  // a narrow lobe: the scene's 128 texels
+  const FramePlan narrow = planner.plan(scene, context, settings);
+  EXPECT_EQ(narrow.probes[0].faceSize, 0);
+  EXPECT_EQ(narrow.probes[0].faces.size(), 6u);
+}
+
 TEST(RoughPlanning, EachProbeKeepsTheLevelsItsReadersNeed) {
   FramePlanner planner;
   const FramePlan plan = planner.plan(

@@ -94,7 +94,7 @@ const NATIVE_LOBE_LINES = [
   '  rough mirror: roughness 0.50, GGX alpha 0.2500 (roughness squared): it sees the environment ' +
     'averaged over the GGX lobe around the reflected ray',
   '  lobe: 16 lobe taps (lobeTaps) around the reflected ray for this view, each weighed by the ' +
-    'GGX reflectance and read from the probe\'s capture (128x128 faces, its box chain) at the ' +
+    'GGX reflectance and read from the probe\'s capture (32x32 faces, its box chain) at the ' +
     'level its share of the lobe covers, towards where a search of its quarter of the lobe met ' +
     'the scene',
   '  the rays and lookups below (and the lines the page draws) are the lobe\'s centre: the ' +
