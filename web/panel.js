@@ -134,6 +134,8 @@ function addCaptureFolder(gui, view, session) {
     const c = capture.add(view, 'cube', cubeOptions).name('cube size')
       .onChange((v) => session.setCubeSize(Number(v)).catch(() => {}));
     c.domElement.id = 'control-cube';
+    c.domElement.title = 'each probe\'s face size; a probe read only by rough mirrors\' lobe ' +
+      'taps takes the smaller size its lobes need (pick a pixel on one names it)';
     return c;
   };
   let cube = addCube();

@@ -38,7 +38,8 @@ void defineView(CLI::App& c, CliOptions& o, CliWording& w) {
   const SettingInfo cube = wholeNumberInfo("cube", 1, Demo::kMaxCubeFaceSize);
   addWholeNumber(c, w, cube,
                  "cube-map face size, 1.." + std::to_string(Demo::kMaxCubeFaceSize) +
-                     " (default: the scene's capture.faceSize, 256 in the shipped scenes)",
+                     " (default: the scene's capture.faceSize, else 256; a probe read only by "
+                     "rough mirrors' lobe taps takes the smaller size its lobes need)",
                  [&o](int side) { o.cubeSize = side; });
   valueOption(c.add_option("--yaw", o.yawDeg, "camera yaw in degrees (default 0)"), w, "DEG",
               "a number of degrees")
