@@ -108,15 +108,19 @@ struct Cell {
   float tauExit;
 };
 
+// The level-`level` cell holding face coordinates st (-1..1). A level-L cell spans 2^L level-0
+// texels (the last one in a row may be cut by the face's edge).
+ivec2 cellIndexAt(vec2 st, int level) {
+  int n = (u_faceSize + (1 << level) - 1) >> level;
+  return clamp(ivec2(floor((st * 0.5 + 0.5) * float(u_faceSize))) >> level, ivec2(0),
+               ivec2(n - 1));
+}
+
 Cell cellAt(FaceRay ray, vec2 st, float tau, int level) {
   Cell cell;
-  float texels = float(u_faceSize);
-  float toFace = 2.0 / texels;  // level-0 texels to face coordinates
-  // A level-L cell spans 2^L level-0 texels (the last one in a row may be cut by the face's
-  // edge).
+  float toFace = 2.0 / float(u_faceSize);  // level-0 texels to face coordinates
   int span = 1 << level;
-  int n = (u_faceSize + span - 1) >> level;
-  cell.index = clamp(ivec2(floor((st * 0.5 + 0.5) * texels)) >> level, ivec2(0), ivec2(n - 1));
+  cell.index = cellIndexAt(st, level);
   // Where the ray leaves the cell: s = b where xs + tau ds = b (xz + tau dz).
   cell.edgeTexel = min((cell.index + ivec2(ray.towards)) * span, ivec2(u_faceSize));
   vec2 border = vec2(cell.edgeTexel) * toFace - 1.0;
@@ -246,12 +250,9 @@ float storedDepthMismatch(vec3 x, int level) {
   int f = faceOf(x);
   float z = dot(x, u_faceAxis[f]);
   vec2 st = vec2(dot(x, u_faceRight[f]), dot(x, u_faceUp[f])) / z;
-  int cells = (u_faceSize + (1 << level) - 1) >> level;
-  ivec2 cell = clamp(ivec2(floor((st * 0.5 + 0.5) * float(u_faceSize))) >> level, ivec2(0),
-                     ivec2(cells - 1));
-  // The codes as depths (1 / (1 - code): depth_encoding.glsl), the sky's (code 1) kept finite.
-  vec4 codes = min(vec4(cellCodes(cell, f, level)) / 65535.0, vec4(1.0 - 1e-6));
-  vec4 stored = 1.0 / (1.0 - codes);
+  uvec4 codes = cellCodes(cellIndexAt(st, level), f, level);
+  vec4 stored = vec4(decodeDepth(codes.x), decodeDepth(codes.y), decodeDepth(codes.z),
+                     decodeDepth(codes.w));
   float first = max(stored.x - z, 0.0) + max(z - stored.y, 0.0);
   float second = max(stored.z - z, 0.0) + max(z - stored.w, 0.0);
   return (u_layers == 2 ? min(first, second) : first) / z;

@@ -30,6 +30,16 @@ void keepColoursOnly(ProbePlan& probe, const std::vector<PlannedObject>& objects
   }
 }
 
+// What a probe stores for its readers, the same in the layout and the plan: one layer or two
+// (or colours alone), its rough levels or lobe taps, and its face size.
+void decideStorageFor(ProbePlan& probe, const std::vector<PlannedObject>& objects,
+                      const CaptureContext& context) {
+  planner::decideStorage(probe, objects, context);
+  probe.roughLevels = planner::roughLevelsOf(probe, objects, context);
+  probe.lobeTapReaders = planner::readsLobeTaps(probe, objects, context);
+  probe.faceSize = planner::lobeTapFaceSize(probe, objects, context);
+}
+
 bool sameLevels(const std::vector<PlannedLevel>& a, const std::vector<PlannedLevel>& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i) {
@@ -54,10 +64,7 @@ FramePlan FramePlanner::layout(const std::vector<PlannedObject>& objects,
   for (ProbePlan& probe : planner::probesWithReaders(objects)) {
     plan.probes.push_back(std::move(probe));
     ProbePlan& laid = plan.probes.back();
-    planner::decideStorage(laid, objects, context);
-    laid.roughLevels = planner::roughLevelsOf(laid, objects, context);
-    laid.lobeTapReaders = planner::readsLobeTaps(laid, objects, context);
-    laid.faceSize = planner::lobeTapFaceSize(laid, objects, context);
+    decideStorageFor(laid, objects, context);
     laid.filterFaces = 0;  // which levels there are; nothing is filtered here
     if (objects[static_cast<size_t>(laid.reflector)].ownsLightProbe) keepColoursOnly(laid, objects);
   }
@@ -251,10 +258,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
   narrowTraced_.clear();
   std::vector<int> recapturedForRealChange;
   for (ProbePlan& probe : planner::probesWithReaders(objects)) {
-    planner::decideStorage(probe, objects, context);
-    probe.roughLevels = planner::roughLevelsOf(probe, objects, context);
-    probe.lobeTapReaders = planner::readsLobeTaps(probe, objects, context);
-    probe.faceSize = planner::lobeTapFaceSize(probe, objects, context);
+    decideStorageFor(probe, objects, context);
     const bool own = objects[static_cast<size_t>(probe.reflector)].ownsLightProbe;
     if (own) keepColoursOnly(probe, objects);
     ProbeMemory& memory = memoryOf(probe.reflector);
