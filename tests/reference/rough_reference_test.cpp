@@ -57,9 +57,10 @@ constexpr double kNarrowGainFloorDb = 6.9;
 // itself is 24.5 dB there).
 // frosted-glass at 160x120, t = 2 s, 512 lobe samples: the noise 55.6 dB; the glass with
 // roughness ignored 26.0 dB and the exact mode 38.0 dB (its floor 2 dB below). The 0.5 sphere has
-// mario just behind it, magnified by the lens: 0.9 from its centre, inside the near plane of 1 the
-// scene's probes had, which left him out of its capture (23.59 dB with lobe taps, 22.12 from the
-// prefiltered levels); the scene's near plane is 0.5 now, inside its spheres (radius 0.6).
+// sonic just behind it, magnified by the lens: his centre 1.2 from the sphere's, his nearest parts
+// inside the near plane of 1 the scene's probes had, which left them out of its capture (23.59 dB
+// with lobe taps, 22.12 from the prefiltered levels); the scene's near plane is 0.5 now, inside
+// its spheres (radius 0.6).
 // The captured spheres (EachSphereAgainstTheReference, which prints them), each held about 0.3 dB
 // under its PSNR and its gain over the same sphere with roughness ignored, as measured at those
 // sizes (hierarchical search). With lobe taps: mirrors 24.83 dB (gain 0.54), 24.81 (-0.25), 29.75
@@ -73,16 +74,17 @@ constexpr double kNarrowGainFloorDb = 6.9;
 // README; with the quarters alone 29.29 (5.70) at 1; with the central ray's distance for every
 // tap, before, 24.64 (0.52), 24.80 (-0.33), 29.73 (6.51) and 30.12 (6.53)); glass 35.73
 // (2.12), 29.28 (7.70), 31.13 (6.31) and 35.17 (9.92) (near plane 1: 34.31 (1.74), 23.59 (6.27),
-// 31.08 (6.44) and 35.70 (10.50); the floor at 1 is 0.55 dB lower for it). At this size and in this first frame the
-// mirrors' taps measure under the prefiltered levels, and the 0.5 mirror under the same sphere
-// drawn sharp (why is not established: every tap read at level 0 measured 24.52 / 27.58 / 30.66
-// / 31.87 here, where at 512x512 it lost 1.6 to 5 dB). At 512x512 over held-out times the taps are
-// 0.4 to 6.4 dB over the prefiltered levels (README, "Rough mirrors"); these floors hold what this
-// frame reaches. From the prefiltered levels: mirrors 25.41 dB (gain 1.13), 26.39 (1.33), 30.78
-// (7.62) and 30.72 (7.41) (near plane 1: 25.17 (1.05), 26.38 (1.24), 30.77 (7.56), 30.72 (7.13)); glass 33.70 (0.10), 29.73 (8.14), 30.36 (5.54) and 29.57 (4.33)
-// (near plane 1: 33.77 (1.20), 22.12 (4.80), 30.41 (5.77), 29.57 (4.37); the 0.25 sphere's gain
-// floor went from 0.9 to -0.2 dB because the sphere drawn sharp gained 1 dB from the nearer plane
-// and its prefiltered levels did not).
+// 31.08 (6.44) and 35.70 (10.50); the floor at 1 is 0.55 dB lower for it). At this size and in this
+// first frame the mirrors' taps measure under the prefiltered levels, and the 0.5 mirror under the
+// same sphere drawn sharp (why is not established: every tap read at level 0 measured 24.52 / 27.58
+// / 30.66 / 31.87 here, where at 512x512 it lost 1.6 to 5 dB). At 512x512 over held-out times the
+// taps are 0.4 to 6.4 dB over the prefiltered levels (README, "Rough mirrors"); these floors hold
+// what this frame reaches. From the prefiltered levels: mirrors 25.41 dB (gain 1.13), 26.39
+// (1.33), 30.78 (7.62) and 30.72 (7.41) (near plane 1: 25.17 (1.05), 26.38 (1.24), 30.77
+// (7.56), 30.72 (7.13)); glass 33.70 (0.10), 29.73 (8.14), 30.36 (5.54) and 29.57 (4.33) (near
+// plane 1: 33.77 (1.20), 22.12 (4.80), 30.41 (5.77), 29.57 (4.37); the 0.25 sphere's gain floor
+// went from 0.9 to -0.2 dB because the sphere drawn sharp gained 1 dB from the nearer plane and its
+// prefiltered levels did not).
 const std::vector<RoughCase> kCases = {
     {"mirrors",
      "rough-spheres",
