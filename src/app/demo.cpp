@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/capture_near.h"
 #include "core/scene_file.h"
 #include "core/settings_schema.h"
 #include "gfx/gl.h"
@@ -70,6 +71,13 @@ std::string Demo::loadMeshesFrom(const std::string& directory) {
   }
   meshes_.lastWarnings() = std::move(warnings);
   return {};
+}
+
+std::string Demo::captureNearNotice() const {
+  return reflect::captureNearNotice(scene_, [this](const std::string& name) -> const Bounds* {
+    const MeshData* mesh = meshes_.base(name);
+    return mesh ? &mesh->bounds : nullptr;
+  });
 }
 
 const MeshData* Demo::meshLevel(const std::string& name, int lod) const {

@@ -63,6 +63,10 @@ class Demo {
   // Mesh `name` as loaded (level 0; its triangles in chunk order once chunks are built), or null.
   // Coarser levels are index lists: levelTriangles() gives their sizes.
   const MeshData* meshLevel(const std::string& name, int lod) const;
+  // "" or a notice that the capture's near plane lies outside a reflector with a probe of its
+  // own, so that its captures leave out what passes nearer (core/capture_near.h); for a scene
+  // whose meshes are loaded.
+  std::string captureNearNotice() const;
   // Triangles of each level of mesh `name`, level 0 first (empty if there is no such mesh).
   std::vector<size_t> levelTriangles(const std::string& name) const;
   // Each level of mesh `name`, level 0 first: its triangles, chunks and the vertices its GPU copy

@@ -258,3 +258,22 @@ test('a scene file nested far deeper than any real one is refused, and the page 
   expect(stats.stackHighWaterBytes).toBeGreaterThan(0);
   expect(stats.stackHighWaterBytes).toBeLessThan(stats.stackBytes / 4);
 });
+
+test('a scene whose capture near plane lies outside a mirror loads, with a notice naming the mirror', async ({ page }) => {
+  // A mirror of radius about 0.6 whose box reaches 0.509 from its centre (sphere.obj's 2.55, scaled 0.2)
+  // inside a near plane of 1: its captures would leave out whatever passes closer
+  // (core/capture_near.h).
+  const body = JSON.stringify({
+    capture: { faceSize: 64, near: 1, far: 100 },
+    objects: [{ mesh: 'quad.obj', translate: [0, -2, 0], scale: [10, 1, 10] },
+              { mesh: 'sphere.obj', scale: 0.2, material: { type: 'mirror' } }],
+  });
+  await page.route((u) => u.pathname.endsWith('/small-mirror.json'),
+                   (route) => route.fulfill({ status: 200, contentType: 'application/json', body }));
+  await openDemo(page, '?paused');
+  const error = await page.evaluate(() => window.demo.loadScene('small-mirror.json').then(() => '', (e) => e.message));
+  expect(error).toBe('');
+  expect(await page.evaluate(() => window.demo.scene().name)).toBe('small-mirror');
+  await expect(page.locator('#messages .message.info', { hasText: 'small-mirror: capture.near 1 lies outside object 1 (sphere.obj)' }))
+    .toContainText('set capture.near to at most 0.509');
+});

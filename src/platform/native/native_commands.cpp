@@ -67,6 +67,10 @@ Result<std::unique_ptr<Demo>> makeDemo(const CliOptions& o, const DemoVariant& v
   demo->camera().setAngles(o.yawDeg, o.pitchDeg);
   std::vector<std::string> loadWarnings;
   std::string error = loadSceneModels(*demo, o.assets, &loadWarnings);
+  if (error.empty()) {
+    std::string nearNotice = demo->captureNearNotice();
+    if (!nearNotice.empty()) loadWarnings.push_back(std::move(nearNotice));
+  }
   warnings.print(loadWarnings);
   if (error.empty()) error = demo->initGraphics();
   if (!error.empty()) return Out::failure(error);

@@ -212,7 +212,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_pending_skybox_image(const char* request, co
 
 // Makes the pending scene the current one once everything is there and its GL resources are
 // made; {"cubeSize": N} (N > 0) overrides the scene's face size. {} or {"error"} (the old scene
-// stays); a clamped cube size is not an error but {"notice": "..."}.
+// stays); a clamped cube size, or a near plane outside a reflector (Demo::captureNearNotice),
+// is not an error but {"notice": "..."}.
 EMSCRIPTEN_KEEPALIVE const char* rf_commit_scene(const char* request) {
   auto r = parseRequest(request, "rf_commit_scene");
   if (!r) return replyError(r.error());
@@ -228,6 +229,8 @@ EMSCRIPTEN_KEEPALIVE const char* rf_commit_scene(const char* request) {
   if (!error.empty()) return replyError(error);
   std::string notice;
   if (cubeSize > 0) notice = pending.demo->setCubeFaceSize(cubeSize);
+  const std::string nearNotice = pending.demo->captureNearNotice();
+  if (!nearNotice.empty()) notice += (notice.empty() ? "" : "; ") + nearNotice;
   if (state().demo) {
     // The user's capture and accuracy settings carry over to the new scene.
     pending.demo->setPlannerSettings(state().demo->plannerSettings());
