@@ -25,8 +25,10 @@ std::string captureNearNotice(const Scene& scene, const MeshBoundsLookup& bounds
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     const bool reflector = o.material == Material::Mirror || o.material == Material::Glass;
-    // A shared probe, or one at a point the file sets, is not at the object's centre.
-    if (!reflector || !o.needsLiveProbe() || o.probeGroup >= 0 || o.probeCentre) continue;
+    // A shared probe, or one at a point the file sets, is not at the object's centre; a figure
+    // lit by a probe of its own ("own-probe") has one there.
+    const bool ownProbe = reflector && o.needsLiveProbe() && o.probeGroup < 0 && !o.probeCentre;
+    if (!ownProbe && !o.ownsLightProbe()) continue;
     const Bounds* local = boundsOf(o.mesh);
     if (!local) continue;
     const Bounds world = transformBounds(*local, scene.modelMatrix(o, 0.0));

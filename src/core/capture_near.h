@@ -16,9 +16,10 @@ namespace reflect {
 // A mesh's bounds by name, or nullptr for one not loaded.
 using MeshBoundsLookup = std::function<const Bounds*(const std::string&)>;
 
-// "" when the near plane lies inside every mirror and glass object with a probe of its own at its
-// centre (its world box's smallest half side, at t = 0, is at least the near plane); otherwise a
-// message naming the scene, the objects and the largest near plane that would do.
+// "" when the near plane lies inside every object with a probe of its own at its centre (a mirror
+// or glass object's, or a probe-lit figure's "own-probe"): its world box's smallest half side, at
+// t = 0, is at least the near plane. Otherwise a message naming the scene, the objects and the
+// largest near plane that would do.
 std::string captureNearNotice(const Scene& scene, const MeshBoundsLookup& boundsOf);
 
 }  // namespace reflect

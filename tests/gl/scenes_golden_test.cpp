@@ -24,12 +24,14 @@ TEST_P(ShippedScene, MatchesGoldenAtTwoSeconds) {
                                testing::reflectorMask(shipped, 2.0, 320, 240));
 }
 
-// A probe leaves out what lies nearer its centre than the capture's near plane: inside each mirror
-// or glass with a probe of its own, that is nothing it could see (core/capture_near.h, whose
-// notice the page and the command line show). rough-spheres and frosted-glass had 1 around spheres
-// of radius 0.9 and 0.6, which cut their neighbours' near caps and a figure passing behind a glass
-// sphere out of the captures (docs/rough.md, "The probes' near plane").
-TEST_P(ShippedScene, CaptureNearPlaneLiesInsideEveryReflectorWithItsOwnProbe) {
+// A probe leaves out what lies nearer its centre than the capture's near plane: inside each object
+// with a probe of its own at its centre (a mirror or glass, or a figure's "own-probe"), that is
+// nothing it could see (core/capture_near.h, whose notice the page and the command line show).
+// rough-spheres and frosted-glass had 1 around spheres of radius 0.9 and 0.6, which cut their
+// neighbours' near caps and a figure passing behind a glass sphere out of the captures
+// (docs/rough.md, "The probes' near plane"); probe-lit had 1 inside figures 0.45 and 0.58 from
+// their centres to their boxes' sides.
+TEST_P(ShippedScene, CaptureNearPlaneLiesInsideEveryObjectWithAProbeAtItsCentre) {
   Result<Scene> scene = loadNamedScene(GetParam());
   ASSERT_TRUE(scene) << scene.error();
   auto demo = testing::makeDemo(scene.take());

@@ -16,9 +16,9 @@ const Bounds* unitBoxes(const std::string& name) {
 }
 
 Scene sceneOf(const std::string& objects, float near) {
-  Result<Scene> scene = parseSceneJson(R"({"capture": {"near": )" + std::to_string(near) +
-                                           R"(}, "objects": [)" + objects + "]}",
-                                       "spheres.json");
+  Result<Scene> scene = parseSceneJson(
+      R"({"capture": {"near": )" + std::to_string(near) + R"(}, "objects": [)" + objects + "]}",
+      "spheres.json");
   EXPECT_TRUE(scene) << scene.error();
   Scene s = scene ? scene.take() : Scene{};
   s.name = "spheres";
@@ -31,9 +31,8 @@ constexpr const char* kGlass = R"({"mesh": "sphere.obj", "scale": 0.9, "translat
                                    "material": {"type": "glass"}})";
 
 TEST(CaptureNear, NamesTheReflectorsItLiesOutsideAndTheNearPlaneThatWouldDo) {
-  const Scene scene = sceneOf(std::string(R"({"mesh": "quad.obj", "scale": 0.1}, )") + kMirror +
-                                  ", " + kGlass,
-                              1.0f);
+  const Scene scene = sceneOf(
+      std::string(R"({"mesh": "quad.obj", "scale": 0.1}, )") + kMirror + ", " + kGlass, 1.0f);
   EXPECT_EQ(captureNearNotice(scene, unitBoxes),
             "spheres: capture.near 1 lies outside objects 1 and 2 (sphere.obj), whose boxes reach "
             "as near as 0.6 to their centres: a probe's captures leave out what passes nearer "
@@ -46,6 +45,17 @@ TEST(CaptureNear, OneReflectorIsNamedInTheSingular) {
             "spheres: capture.near 0.7 lies outside object 0 (sphere.obj), whose box reaches as "
             "near as 0.6 to its centre: a probe's captures leave out what passes nearer its "
             "centre than the near plane; set capture.near to at most 0.6");
+}
+
+TEST(CaptureNear, AFigureWithAnIrradianceProbeOfItsOwnIsHeldToItToo) {
+  const Scene scene = sceneOf(
+      R"({"mesh": "mario.obj", "scale": 0.3, "ambient": "own-probe"},
+         {"mesh": "sonic.obj", "scale": 0.3, "ambient": "constant"})",
+      0.5f);
+  EXPECT_EQ(captureNearNotice(scene, unitBoxes),
+            "spheres: capture.near 0.5 lies outside object 0 (mario.obj), whose box reaches as "
+            "near as 0.3 to its centre: a probe's captures leave out what passes nearer its "
+            "centre than the near plane; set capture.near to at most 0.3");
 }
 
 TEST(CaptureNear, SaysNothingWhereThePlaneIsInsideOrTheProbeIsNotAtTheCentre) {
