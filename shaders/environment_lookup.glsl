@@ -263,14 +263,51 @@ vec3 lobeSeenOnce(vec3 d, float alpha) {
 }
 
 #if CAPTURE_OUTPUT == 0
+#if SEARCH == SEARCH_HIERARCHICAL
+// How far frosted glass's light through meets the scene, a distance for each quarter of its lobe
+// (as a mirror's quarters, lobeDistances): the view ray refracted through the quarter's median
+// half vector, out of the object, searched from where it leaves, down only to kQuarterSearchLevels
+// finer than the light through's lobe and for at most kQuarterSearchSteps steps. A quarter that
+// runs out of steps, or cannot enter, keeps `central`, the distance the smooth surface's refracted
+// ray found; one that meets nothing stored looks along its rays (-1). Without it a figure just
+// behind the glass is drawn by every tap or by none, as the central ray meets it or not
+// (docs/rough.md, "The near plane").
+vec4 transmittedDistances(vec3 origin, vec3 I, vec3 n, float central) {
+  vec4 quarters = vec4(central);
+  if (u_lobeQuarters == 0) return quarters;
+  float faceTexels = float(textureSize(u_lobeSource, 0).x);
+  float lod = log2(max(faceTexels * u_refractAlpha * kLobeWidthTexels, 1.0)) + kLobeTapLodBias;
+  int finest = max(int(lod) - kQuarterSearchLevels, 0);
+  mat3 frame = frameAround(n);
+  for (int q = 0; q < 4; ++q) {
+    float nDotH;
+    vec3 h = ggxHalfVectorInFrame(vec2((float(q) + 0.5) / 4.0, 0.5), u_roughAlpha, frame, nDotH);
+    vec3 t = refract(I, h, u_eta);
+    if (dot(t, t) == 0.0 || dot(t, n) >= 0.0) continue;
+    t = normalize(t);
+    vec3 exitPoint = origin;
+#if GLASS_EXIT == 1
+    if (u_twoSurfaces == 1) leaveGlassMesh(exitPoint, t);
+#else
+    if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, t);
+#endif
+    vec3 offset = exitPoint - u_probeCentre;
+    SearchResult found = searchDepthsTo(offset / u_distanceUnit, t, finest, kQuarterSearchSteps);
+    if (found.layer >= 0)
+      quarters[q] = found.layer > 0 ? length(found.point * u_distanceUnit - offset) : -1.0;
+  }
+  return quarters;
+}
+#endif
+
 // Frosted glass's light through (core/ggx.h says what it is): the mean, over u_lobeTaps of the
 // lobe's microfacet normals h around n (the Hammersley set), of what the view ray I refracted
 // through h sees once out of the object (its far side crossed as polished glass), each read from
 // the box chain at the level its share of the light through covers (transmissionRoughness's
-// lobe, split among the taps), towards where the central refracted ray's search met the scene
-// (hitDistance from the exit). A normal the ray cannot enter through is left out; none:
+// lobe, split among the taps), towards where its quarter's search met the scene (hitDistances,
+// from the exit; transmittedDistances). A normal the ray cannot enter through is left out; none:
 // `central`, what the smooth surface's refracted ray sees.
-vec3 transmittedTaps(vec3 origin, vec3 I, vec3 n, float hitDistance, vec3 central) {
+vec3 transmittedTaps(vec3 origin, vec3 I, vec3 n, vec4 hitDistances, vec3 central) {
   float faceTexels = float(textureSize(u_lobeSource, 0).x);
   uint taps = uint(max(u_lobeTaps, 1));
   float lod = log2(max(faceTexels * u_refractAlpha * kLobeWidthTexels, 1.0)) -
@@ -290,6 +327,7 @@ vec3 transmittedTaps(vec3 origin, vec3 I, vec3 n, float hitDistance, vec3 centra
 #else
     if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, t);
 #endif
+    float hitDistance = hitDistances[k * 4u / taps];
     vec3 towards = hitDistance > 0.0 ? exitPoint - u_probeCentre + t * hitDistance : t;
     sum += textureLod(u_lobeSource, towards, max(lod, 0.0)).rgb;
     rays += 1.0;
@@ -381,7 +419,12 @@ void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 
 #if ROUGH == 1 && ROUGH_TAPS == 1 && CAPTURE_OUTPUT == 1
   refracted = lobeSeenOnce(T, u_refractAlpha);
 #elif ROUGH == 1 && ROUGH_TAPS == 1
-  refracted = transmittedTaps(origin, I, N, hitDistance, refracted);
+#if SEARCH == SEARCH_HIERARCHICAL
+  vec4 distances = transmittedDistances(origin, I, N, hitDistance);
+#else
+  vec4 distances = vec4(hitDistance);
+#endif
+  refracted = transmittedTaps(origin, I, N, distances, refracted);
 #elif ROUGH == 1
   refracted = roughSeen(refracted, measured, u_refractLod);
 #endif

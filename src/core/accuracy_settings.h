@@ -66,9 +66,10 @@ struct AccuracySettings {
   // (tracedForNarrowLobe: roughness under 0.375) are traced under search: planned where the
   // weighing would capture them, with this many fixed lobe rays a pixel; 0: they are captured.
   int narrowLobeRays = 8;
-  // Rough mirrors with lobe taps, captured and searched (hierarchical): each quarter of the lobe
-  // searched for how far its taps meet the scene (false: the central ray's distance for every
-  // tap, the default before; docs/rough.md, "Each quarter searched").
+  // Rough mirrors and frosted glass with lobe taps, captured and searched (hierarchical): each
+  // quarter of the lobe (glass: of its light through, from its own exit point) searched for how
+  // far its taps meet the scene (false: the central ray's distance for every tap, the default
+  // before; docs/rough.md, "Each quarter searched").
   bool lobeQuarters = true;
 
   bool operator==(const AccuracySettings&) const = default;

@@ -17,7 +17,8 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
                                  const PlannerView& view) const {
   MethodChoice c;
   c.reflector = probe.reflector;
-  double roughMirrorPixels = 0.0;  // those whose lobes' quarters search (lobeDistances)
+  double quarterPixels = 0.0;  // rough pixels whose lobe's quarters search: a mirror's
+                               // (lobeDistances), glass's light through (transmittedDistances)
   for (size_t i = 0; i < objects.size(); ++i) {
     const PlannedObject& o = objects[i];
     if (!o.levels.empty()) c.trace.triangles += static_cast<double>(o.levels[0].triangles);
@@ -29,7 +30,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
         // Frosted glass traces two lobes a pixel (its reflection's and the light through it),
         // each crossing the object: about twice a rough mirror's rays.
         c.trace.lobePixels += o.look.material == Material::Glass ? 2.0f * pixels : pixels;
-        if (o.look.material == Material::Mirror) roughMirrorPixels += pixels;
+        quarterPixels += pixels;
       }
     }
   }
@@ -70,7 +71,7 @@ MethodChoice FramePlanner::weigh(const ProbePlan& probe, const FaceDraws& draws,
   if (probe.lobeTapReaders) c.capture.lobeTaps = c.trace.lobePixels * context.accuracy.lobeTaps;
   // Only the hierarchical search runs the quarters' searches (not a plain lookup).
   if (probe.lobeTapReaders && context.accuracy.lobeQuarters && !probe.plainLookupSuffices)
-    c.capture.lobeSearches = kLobeQuarters * roughMirrorPixels;
+    c.capture.lobeSearches = kLobeQuarters * quarterPixels;
   if (c.capture.faces > 0.0) {
     c.capture.filterSamples = share * planner::filterSamplesFor(probe.roughLevels, faceSize,
                                                                 context.accuracy.filterSamples);

@@ -248,8 +248,9 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
        [](const A& s) { return json(s.lobeTaps); },
        [](A& s, const json& v) { s.lobeTaps = v.get<int>(); }},
       {flag("lobeQuarters", "lobe quarters",
-            "rough mirrors with lobe taps, searched: each quarter of the lobe searched for how "
-            "far its taps meet the scene (off: the central ray's distance for every tap)"),
+            "rough mirrors and frosted glass with lobe taps, searched: each quarter of the lobe "
+            "(glass: of its light through) searched for how far its taps meet the scene (off: "
+            "the central ray's distance for every tap)"),
        [](const A& s) { return json(s.lobeQuarters); },
        [](A& s, const json& v) { s.lobeQuarters = v.get<bool>(); }},
       {integer("filterSamples", "filter samples",

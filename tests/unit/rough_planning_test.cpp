@@ -206,9 +206,9 @@ TEST(RoughPlanning, ARoughPixelTracesLobeRaysAndAFilteredProbeCostsItsSamples) {
 }
 
 // Search: planned weighs a captured rough mirror with its lobe's quarters' searches, four a pixel
-// (lobeQuarters), and frosted glass (one distance for its taps) and the perfect mirror without;
+// (lobeQuarters), frosted glass with its light through's four, and the perfect mirror without;
 // lobeQuarters off counts none.
-TEST(RoughPlanning, ACapturedRoughMirrorCostsItsQuartersSearches) {
+TEST(RoughPlanning, ACapturedRoughReaderCostsItsQuartersSearches) {
   std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 0.5f), mirrorAt({4, 0, 0}, 0.0f),
                                    mirrorAt({8, 0, 0}, 0.5f)};
   scene[2].look.material = Material::Glass;
@@ -230,9 +230,9 @@ TEST(RoughPlanning, ACapturedRoughMirrorCostsItsQuartersSearches) {
       ASSERT_NE(probe, nullptr);
       EXPECT_FALSE(plan.traces(choice.reflector));
       EXPECT_GT(choice.trace.pixels, 0.0);
-      const bool roughMirror = choice.reflector == 0;
+      const bool rough = choice.reflector != 1;
       ASSERT_EQ(probe->plainLookupSuffices, false) << "reflector " << choice.reflector;
-      const double searches = quarters && roughMirror ? kLobeQuarters * choice.trace.pixels : 0.0;
+      const double searches = quarters && rough ? kLobeQuarters * choice.trace.pixels : 0.0;
       EXPECT_DOUBLE_EQ(choice.capture.lobeSearches, searches) << "reflector " << choice.reflector;
       CaptureWork without = choice.capture;
       without.lobeSearches = 0.0;
