@@ -93,6 +93,16 @@ void leaveGlassSphere(inout vec3 origin, inout vec3 d) {
   }
 }
 
+// Where a ray refracted into glass at `origin` leaves it: through the far side (the sphere's closed
+// form, or the interior map with GLASS_EXIT 1) where both surfaces are drawn, else at once.
+void leaveGlass(inout vec3 origin, inout vec3 d) {
+#if GLASS_EXIT == 1
+  if (u_twoSurfaces == 1) leaveGlassMesh(origin, d);
+#else
+  if (u_twoSurfaces == 1) leaveGlassSphere(origin, d);
+#endif
+}
+
 #if ROUGH == 1 && ROUGH_TAPS == 1
 // Rough mirrors and frosted glass reading a live probe (docs/rough.md, "Lobe taps"): the lobe is
 // sampled where the pixel sees it, for its real view, from the capture's own box chain.
@@ -263,6 +273,18 @@ vec3 lobeSeenOnce(vec3 d, float alpha) {
 }
 
 #if CAPTURE_OUTPUT == 0
+// The view ray I refracted into frosted glass through microfacet normal h (the surface's normal n),
+// in `exitPoint` and `t` where it leaves the object; false where it cannot enter there (total
+// reflection at h, or a refracted ray that does not point into the object).
+bool leftThroughMicrofacet(vec3 origin, vec3 I, vec3 h, vec3 n, out vec3 exitPoint, out vec3 t) {
+  t = refract(I, h, u_eta);
+  exitPoint = origin;
+  if (dot(t, t) == 0.0 || dot(t, n) >= 0.0) return false;
+  t = normalize(t);
+  leaveGlass(exitPoint, t);
+  return true;
+}
+
 #if SEARCH == SEARCH_HIERARCHICAL
 // How far frosted glass's light through meets the scene, a distance for each quarter of its lobe
 // (as a mirror's quarters, lobeDistances): the view ray refracted through the quarter's median
@@ -282,15 +304,8 @@ vec4 transmittedDistances(vec3 origin, vec3 I, vec3 n, float central) {
   for (int q = 0; q < 4; ++q) {
     float nDotH;
     vec3 h = ggxHalfVectorInFrame(vec2((float(q) + 0.5) / 4.0, 0.5), u_roughAlpha, frame, nDotH);
-    vec3 t = refract(I, h, u_eta);
-    if (dot(t, t) == 0.0 || dot(t, n) >= 0.0) continue;
-    t = normalize(t);
-    vec3 exitPoint = origin;
-#if GLASS_EXIT == 1
-    if (u_twoSurfaces == 1) leaveGlassMesh(exitPoint, t);
-#else
-    if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, t);
-#endif
+    vec3 exitPoint, t;
+    if (!leftThroughMicrofacet(origin, I, h, n, exitPoint, t)) continue;
     vec3 offset = exitPoint - u_probeCentre;
     SearchResult found = searchDepthsTo(offset / u_distanceUnit, t, finest, kQuarterSearchSteps);
     if (found.layer >= 0)
@@ -318,15 +333,8 @@ vec3 transmittedTaps(vec3 origin, vec3 I, vec3 n, vec4 hitDistances, vec3 centra
   for (uint k = 0u; k < taps; ++k) {
     float nDotH;
     vec3 h = ggxHalfVectorInFrame(hammersley(k, taps), u_roughAlpha, frame, nDotH);
-    vec3 t = refract(I, h, u_eta);
-    if (dot(t, t) == 0.0 || dot(t, n) >= 0.0) continue;
-    t = normalize(t);
-    vec3 exitPoint = origin;
-#if GLASS_EXIT == 1
-    if (u_twoSurfaces == 1) leaveGlassMesh(exitPoint, t);
-#else
-    if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, t);
-#endif
+    vec3 exitPoint, t;
+    if (!leftThroughMicrofacet(origin, I, h, n, exitPoint, t)) continue;
     float hitDistance = hitDistances[k * 4u / taps];
     vec3 towards = hitDistance > 0.0 ? exitPoint - u_probeCentre + t * hitDistance : t;
     sum += textureLod(u_lobeSource, towards, max(lod, 0.0)).rgb;
@@ -410,11 +418,7 @@ void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 
   refracted = reflected;
   if (total) return;
   vec3 exitPoint = origin;
-#if GLASS_EXIT == 1
-  if (u_twoSurfaces == 1) leaveGlassMesh(exitPoint, T);
-#else
-  if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, T);
-#endif
+  leaveGlass(exitPoint, T);
   refracted = environmentMet(exitPoint, T, measured, hitDistance);
 #if ROUGH == 1 && ROUGH_TAPS == 1 && CAPTURE_OUTPUT == 1
   refracted = lobeSeenOnce(T, u_refractAlpha);

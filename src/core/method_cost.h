@@ -38,13 +38,14 @@ struct CaptureWork {
   double filterSamples = 0.0;
   // Rough readers with lobe taps: their pixels times the taps each reads a frame.
   double lobeTaps = 0.0;
-  // Rough mirrors whose lobes' quarters each run a short search of their own
-  // (AccuracySettings::lobeQuarters): their pixels times kLobeQuarters.
+  // Rough mirrors and frosted glass whose lobes' quarters (glass: its light through's) each run a
+  // short search of their own (AccuracySettings::lobeQuarters): their pixels times kLobeQuarters.
   double lobeSearches = 0.0;
 };
 
-// The short searches a rough mirror's lobe runs besides its central ray's, one per quarter of the
-// lobe by azimuth (shaders/environment_lookup.glsl, lobeDistances).
+// The short searches a rough mirror's lobe, or frosted glass's light through, runs besides its
+// central ray's, one per quarter of the lobe by azimuth (shaders/environment_lookup.glsl,
+// lobeDistances and transmittedDistances).
 inline constexpr int kLobeQuarters = 4;
 
 struct MethodCosts {
@@ -57,7 +58,7 @@ struct MethodCosts {
   double searchPixel = 0.0;      // ms per mirror pixel's search
   double filterSample = 0.0;     // ms per filtered texel per GGX sample (the prefilter pass)
   double lobeTap = 0.0;          // ms per lobe tap a rough pixel reads
-  double lobeSearch = 0.0;       // ms per quarter of a rough mirror's lobe searched
+  double lobeSearch = 0.0;       // ms per quarter of a rough lobe searched
   // Switch methods only when the other is cheaper by this factor, so a reflector near the
   // balance does not flip (and recapture) from frame to frame.
   double hysteresis = 1.2;
