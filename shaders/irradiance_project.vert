@@ -5,9 +5,7 @@
 // The cube is read at the mip level whose faces are u_grid texels square (8 for the usual face
 // sizes: the box chain the capture generated), one texel centre a sample, each weighed by the solid angle it spans,
 // dw ~ (2 / grid)^2 / (1 + s^2 + t^2)^(3/2); the weights are then scaled to sum to 4 pi.
-// The coefficient's w is the same projection of the texel's nearness, 1 / d from the distance
-// d / (d + 1) a capture stores in alpha (the sky's 1: nearness 0): core/irradiance.h's
-// projectNearness, which phong.frag reads to measure how far the surroundings are.
+// The coefficient's w is unused (0): std140 lays a vec3 array out as vec4s anyway.
 // (#version and precision are prepended by ShaderProgram.)
 uniform samplerCube u_probe;
 uniform float u_lod;
@@ -32,7 +30,6 @@ vec3 faceDirection(int f, float s, float t) {
 void main() {
   int i = gl_VertexID;
   vec3 sum = vec3(0.0);
-  float nearness = 0.0;
   float weights = 0.0;
   float step = 2.0 / float(u_grid);
   for (int f = 0; f < 6; ++f) {
@@ -44,15 +41,12 @@ void main() {
         float r2 = 1.0 + s * s + t * t;
         float w = 1.0 / (r2 * sqrt(r2));
         vec3 n = d * inversesqrt(r2);
-        vec4 texel = textureLod(u_probe, d, u_lod);
-        float y = w * shBasis(n, i);
-        sum += y * texel.rgb;
-        nearness += y * (texel.a >= 0.999 ? 0.0 : (1.0 - texel.a) / max(texel.a, 1e-3));
+        sum += w * shBasis(n, i) * textureLod(u_probe, d, u_lod).rgb;
         weights += w;
       }
     }
   }
   float scale = 4.0 * 3.14159265 / weights * shBandFactor(i);
-  v_coefficient = vec4(sum * scale, nearness * scale);
+  v_coefficient = vec4(sum * scale, 0.0);
   gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
 }

@@ -1,5 +1,6 @@
 // Every mesh: world-space position and normal for per-fragment lighting, and the object-space
-// position for Ex12-1's cube-textured material.
+// position for Ex12-1's cube-textured material. AMBIENT_PROBE (a probe-lit object): also its
+// irradiance's parallax, once a vertex, since it varies slowly over the surface.
 // (#version and precision are prepended by ShaderProgram.)
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -12,10 +13,21 @@ out vec3 v_worldPosition;
 out vec3 v_worldNormal;
 out vec3 v_objectPosition;
 
+#if defined(AMBIENT_PROBE) && AMBIENT_PROBE
+#include "irradiance_parallax.glsl"
+out vec3 v_ambientParallax;
+#endif
+
 void main() {
   vec4 world = u_model * vec4(a_position, 1.0);
   v_worldPosition = world.xyz;
   v_worldNormal = u_normalMatrix * a_normal;
   v_objectPosition = a_position;
   gl_Position = u_viewProjection * world;
+#if defined(AMBIENT_PROBE) && AMBIENT_PROBE
+  v_ambientParallax = u_parallaxProbe.w > 0.0
+                          ? irradianceParallax(world.xyz - u_parallaxProbe.xyz,
+                                               normalize(v_worldNormal))
+                          : vec3(0.0);
+#endif
 }

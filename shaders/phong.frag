@@ -16,43 +16,33 @@ uniform float u_shininess;
 
 #if AMBIENT_PROBE
 // The nearest live probe's irradiance (irradiance_project.vert wrote it): E(n) / pi =
-// sum c_i Y_i(n), c_i in .rgb; the nearness (irradiance_project.vert) in .w.
+// sum c_i Y_i(n), c_i in .rgb, read at the probe's centre.
 layout(std140) uniform ProbeIrradiance {
   vec4 u_irradiance[9];
 };
-// The probe's centre (xyz) and the object's ambientRadius (w; 0: no parallax correction; negative:
-// measured, -w the capture's near plane, the unit of the nearness in u_irradiance[i].w).
+// The probe's centre (xyz) and the object's ambientRadius (w; 0: none set, the parallax then comes
+// from the probe's distances, mesh.vert's v_ambientParallax).
 uniform vec4 u_irradianceProxy;
+// What the point sees less what the centre sees (irradiance_parallax.glsl), 0 with a set radius.
+in vec3 v_ambientParallax;
 
 #include "irradiance.glsl"
 
-// sum_i u_irradiance[i] Y_i(n): E(n) / pi in rgb, the nearness in w.
-vec4 probeLightAt(vec3 n) {
+// sum_i u_irradiance[i] Y_i(n): E(n) / pi.
+vec3 probeLightAt(vec3 n) {
   vec4 a, b;
   float c;
   shBasisAll(n, a, b, c);
-  return u_irradiance[0] * a.x + u_irradiance[1] * a.y + u_irradiance[2] * a.z +
-         u_irradiance[3] * a.w + u_irradiance[4] * b.x + u_irradiance[5] * b.y +
-         u_irradiance[6] * b.z + u_irradiance[7] * b.w + u_irradiance[8] * c;
+  return (u_irradiance[0] * a.x + u_irradiance[1] * a.y + u_irradiance[2] * a.z +
+          u_irradiance[3] * a.w + u_irradiance[4] * b.x + u_irradiance[5] * b.y +
+          u_irradiance[6] * b.z + u_irradiance[7] * b.w + u_irradiance[8] * c)
+      .rgb;
 }
 
-// The nearness alone (probeLightAt's w, summed in the same order), for the measured radius: a
-// quarter of the multiply-adds.
-float probeNearnessAt(vec3 n) {
-  vec4 a, b;
-  float c;
-  shBasisAll(n, a, b, c);
-  return u_irradiance[0].w * a.x + u_irradiance[1].w * a.y + u_irradiance[2].w * a.z +
-         u_irradiance[3].w * a.w + u_irradiance[4].w * b.x + u_irradiance[5].w * b.y +
-         u_irradiance[6].w * b.z + u_irradiance[7].w * b.w + u_irradiance[8].w * c;
-}
-
-// core/irradiance.h's irradianceDirection: the normal, or with a radius the direction from the
-// probe's centre to where the normal's ray leaves the sphere the surroundings are taken to lie on;
-// the radius measured as measuredRadius does where the scene sets none.
+// core/irradiance.h's irradianceDirection: the normal, or with a set radius the direction from the
+// probe's centre to where the normal's ray leaves the sphere the surroundings are taken to lie on.
 vec3 irradianceDirection(vec3 n) {
   float radius = u_irradianceProxy.w;
-  if (radius < 0.0) radius = -radius / max(probeNearnessAt(n), 1e-4);  // kLeastNearness
   if (radius <= 0.0) return n;
   vec3 o = v_worldPosition - u_irradianceProxy.xyz;
   float on = dot(o, n);
@@ -63,7 +53,7 @@ vec3 irradianceDirection(vec3 n) {
 }
 
 vec3 probeAmbient(vec3 normal) {
-  return max(probeLightAt(irradianceDirection(normal)).rgb, vec3(0.0));
+  return max(probeLightAt(irradianceDirection(normal)) + v_ambientParallax, vec3(0.0));
 }
 #endif
 

@@ -10,6 +10,7 @@
 #include "core/cube_sampling.h"
 #include "core/fresnel.h"
 #include "core/irradiance.h"
+#include "core/irradiance_parallax.h"
 #include "core/reference_shading.h"
 #include "core/settings_schema.h"
 #include "gfx/cube_readback.h"
@@ -99,12 +100,17 @@ std::string readIrradiance(const Demo& demo, const SurfacePoint& surface, PixelE
   const CubeFaces read = shrinkFaces(faces.value(), factor);
   const std::optional<float> set =
       demo.scene().objects[static_cast<size_t>(e.object)].ambientRadius;
-  e.radiusMeasured = !set;
-  e.irradianceRadius =
-      set ? *set : measuredRadius(projectNearness(read), surface.normal, demo.scene().capture.near);
+  e.irradianceRadius = set ? *set : 0.0f;
   e.irradianceDirection =
       irradianceDirection(surface.normal, surface.position, light->centre, e.irradianceRadius);
-  e.irradiance = irradianceAt(projectIrradiance(read), e.irradianceDirection);
+  // Where no radius is set, mesh.vert's parallax from the probe's distances, from the faces
+  // as captured (the GPU reads their box chain as irradianceParallax does).
+  e.irradianceParallax = set ? glm::vec3(0.0f)
+                             : irradianceParallax(faces.value(), surface.position, light->centre,
+                                                  surface.normal, demo.scene().capture.near);
+  e.irradiance =
+      glm::max(irradianceAt(projectIrradiance(read), e.irradianceDirection) + e.irradianceParallax,
+               glm::vec3(0.0f));
   return {};
 }
 
@@ -120,13 +126,17 @@ std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
     const glm::vec3& d = e.irradianceDirection;
     const glm::ivec3 rgb = colourBytes(e.irradiance);
     const float radius = e.irradianceRadius;
+    const glm::vec3& p = e.irradianceParallax;
     const std::string along =
-        radius > 0.0f ? formatLine(
-                            " and it is read along %.3f, %.3f, %.3f (the surroundings taken %.2f "
-                            "from the centre: ambientRadius, %s)",
-                            d.x, d.y, d.z, radius,
-                            e.radiusMeasured ? "measured from the probe's distances" : "set")
-                      : std::string();
+        radius > 0.0f
+            ? formatLine(
+                  " and it is read along %.3f, %.3f, %.3f (the surroundings taken %.2f from the "
+                  "centre: ambientRadius)",
+                  d.x, d.y, d.z, radius)
+            : formatLine(
+                  ", plus %+.3f, %+.3f, %+.3f for what this point sees that the centre does not "
+                  "(16 taps followed to the probe's distances)",
+                  p.x, p.y, p.z);
     return what + formatLine(
                       " is phong, lit by probe: its ambient is the irradiance of object "
                       "%d's probe (centre %.2f, %.2f, %.2f), order-2 spherical harmonics "

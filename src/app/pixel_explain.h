@@ -46,8 +46,8 @@ struct PixelExplanation {
   // there (the CPU's projection of the probe's faces read back: core/irradiance.h).
   int irradianceProbe = -1;
   glm::vec3 irradianceDirection{0.0f};  // what it is read along: the normal, or parallax-corrected
-  float irradianceRadius = 0.0f;        // the surroundings' radius that correction took (0: none)
-  bool radiusMeasured = false;          // ... measured from the probe's distances, not set
+  float irradianceRadius = 0.0f;        // the surroundings' radius the scene set (0: none)
+  glm::vec3 irradianceParallax{0.0f};   // where none is set: what the point sees less the centre
   glm::vec3 irradiance{0.0f};
   std::string mesh;
   Material material = Material::Phong;

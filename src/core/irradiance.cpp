@@ -54,16 +54,10 @@ glm::vec3 irradianceDirection(const glm::vec3& n, const glm::vec3& point, const 
 
 namespace {
 
-// A capture's alpha (d / (d + 1), d the distance in near-plane units; 1 for the sky) as 1 / d,
-// the sky's 0: irradiance_project.vert's nearness.
-double nearnessOf(double alpha) {
-  return alpha >= 0.999 ? 0.0 : (1.0 - alpha) / std::max(alpha, 1e-3);
-}
-
-// The cube's colour (xyz) and nearness (w) projected on the harmonics with the cosine lobe's band
-// factors: each texel weighed by its solid angle, the weights scaled to 4 pi.
-std::array<glm::dvec4, kIrradianceCoefficients> projectTexels(const CubeFaces& faces) {
-  std::array<glm::dvec4, kIrradianceCoefficients> sums{};
+// The cube's colour projected on the harmonics with the cosine lobe's band factors: each texel
+// weighed by its solid angle, the weights scaled to 4 pi.
+std::array<glm::dvec3, kIrradianceCoefficients> projectTexels(const CubeFaces& faces) {
+  std::array<glm::dvec3, kIrradianceCoefficients> sums{};
   double weights = 0.0;
   for (int f = 0; f < 6; ++f) {
     const RgbaImage& face = faces[static_cast<size_t>(f)];
@@ -76,8 +70,7 @@ std::array<glm::dvec4, kIrradianceCoefficients> projectTexels(const CubeFaces& f
         const double r2 = glm::dot(d, d);
         const double w = 1.0 / (r2 * std::sqrt(r2));
         const uint8_t* texel = face.at(i, j);
-        const glm::dvec4 value(texel[0] / 255.0, texel[1] / 255.0, texel[2] / 255.0,
-                               nearnessOf(texel[3] / 255.0));
+        const glm::dvec3 value(texel[0] / 255.0, texel[1] / 255.0, texel[2] / 255.0);
         const glm::vec3 unit = glm::normalize(d);
         for (int k = 0; k < kIrradianceCoefficients; ++k) {
           sums[static_cast<size_t>(k)] += w * static_cast<double>(shBasis(unit, k)) * value;
@@ -100,21 +93,6 @@ IrradianceCoefficients projectIrradiance(const CubeFaces& faces) {
   IrradianceCoefficients c{};
   for (size_t k = 0; k < c.size(); ++k) c[k] = glm::vec3(sums[k]);
   return c;
-}
-
-NearnessCoefficients projectNearness(const CubeFaces& faces) {
-  const auto sums = projectTexels(faces);
-  NearnessCoefficients c{};
-  for (size_t k = 0; k < c.size(); ++k) c[k] = static_cast<float>(sums[k].w);
-  return c;
-}
-
-float measuredRadius(const NearnessCoefficients& c, const glm::vec3& n, float near) {
-  float nearness = 0.0f;
-  for (int i = 0; i < kIrradianceCoefficients; ++i) {
-    nearness += c[static_cast<size_t>(i)] * shBasis(n, i);
-  }
-  return near / std::max(nearness, kLeastNearness);
 }
 
 CubeFaces irradianceCube(const IrradianceCoefficients& c, int size) {

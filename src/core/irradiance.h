@@ -40,18 +40,6 @@ glm::vec3 irradianceDirection(const glm::vec3& n, const glm::vec3& point, const 
 // cube_sampling.h reads them), each texel weighed by its solid angle.
 IrradianceCoefficients projectIrradiance(const CubeFaces& faces);
 
-// How near a probe's surroundings are, seen from its centre: the cosine-weighted mean of 1 / d
-// over the hemisphere about each direction (d in the capture's near-plane units; the sky's 0), as
-// order-2 coefficients with the irradiance's band factors. Read from the colour cube's alpha,
-// where a capture stores d / (d + 1) (capture_output.glsl), as irradiance_project.vert reads it.
-using NearnessCoefficients = std::array<float, kIrradianceCoefficients>;
-NearnessCoefficients projectNearness(const CubeFaces& faces);
-// The least nearness measuredRadius divides by: 10,000 near-plane units, as good as the sky.
-inline constexpr float kLeastNearness = 1e-4f;
-// The radius a normal n's surroundings are taken at when none is set (SceneObject::ambientRadius
-// unset): near / the nearness along n, in world units (`near` the capture's near plane).
-float measuredRadius(const NearnessCoefficients& c, const glm::vec3& n, float near);
-
 // The irradiance cube: six faces of `size` texels whose texel in direction n is irradianceAt(c, n)
 // (clamped to 1, rounded to bytes), the ambient light a probe-lit reader with that normal takes.
 // The faces view shows it (FacesChannel::Irradiance).

@@ -82,8 +82,8 @@ struct SceneObject {
   // about its probe's centre: each point reads the irradiance along the direction from the
   // centre to where its normal's ray meets that sphere, not along the normal itself (parallax
   // correction, as box projection does for reflections). 0: infinitely far, no correction.
-  // Unset (the default): measured, for each normal, from the distances the probe captured
-  // (core/irradiance.h's measuredRadius).
+  // Unset (the default): each point's own view, from the distances the probe captured
+  // (core/irradiance_parallax.h).
   std::optional<float> ambientRadius;
 
   bool usesEnvironment() const { return material != Material::Phong; }

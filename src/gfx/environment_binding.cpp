@@ -5,6 +5,7 @@
 #include "core/bvh.h"
 #include "core/fresnel.h"
 #include "core/ggx.h"
+#include "core/irradiance_parallax.h"
 #include "gfx/probe_capture.h"
 #include "gfx/probe_irradiance.h"
 #include "gfx/scene_renderer_detail.h"
@@ -81,10 +82,16 @@ void EnvironmentBinding::setForObject(const PhongUniforms& u, const ProgramKey& 
   if (!key.probeLight) return;
   s_.irradiance.bindFor(plan, object);
   const ProbePlan* light = plan.irradianceOf(object);
-  // A radius set in the scene, or (negative) the near plane, for phong.frag to measure it.
+  // A radius set in the scene for phong.frag; or none, and mesh.vert's parallax taps read the
+  // probe's own distances.
   const std::optional<float> set = scene.objects[static_cast<size_t>(object)].ambientRadius;
-  const float radius = set ? *set : -scene.capture.near;
-  u.irradianceProxy.set(glm::vec4(light ? light->centre : glm::vec3(0.0f), light ? radius : 0.0f));
+  const glm::vec3 centre = light ? light->centre : glm::vec3(0.0f);
+  u.irradianceProxy.set(glm::vec4(centre, light && set ? *set : 0.0f));
+  const CubeCaptureTarget* target = light && !set ? s_.probes.target(light->reflector) : nullptr;
+  s_.irradiance.bindParallaxCube(target ? target->texture(0) : 0);
+  u.parallaxProbe.set(glm::vec4(centre, target ? scene.capture.near : 0.0f));
+  const ParallaxLevels levels = parallaxLevels(target ? target->faceSize() : 1);
+  u.parallaxLevels.set(glm::vec2(levels.colour, levels.distance));
 }
 
 void EnvironmentBinding::setForObject(const EnvironmentUniforms& u, const ProgramKey& key,

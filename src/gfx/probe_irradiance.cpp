@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gfx/capture_state.h"
 #include "gfx/gl.h"
 
 namespace reflect {
@@ -33,6 +34,9 @@ Result<ProbeIrradiance> ProbeIrradiance::create() {
   p.sampler_ = SamplerHandle(generateOne<glGenSamplers>());
   glSamplerParameteri(p.sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
   glSamplerParameteri(p.sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  p.parallaxSampler_ = SamplerHandle(generateOne<glGenSamplers>());
+  glSamplerParameteri(p.parallaxSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glSamplerParameteri(p.parallaxSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   p.feedback_ = TransformFeedbackHandle(generateOne<glGenTransformFeedbacks>());
   p.vertexArray_ = VertexArrayHandle(generateOne<glGenVertexArrays>());
   p.empty_ = makeBuffer();
@@ -88,6 +92,13 @@ bool ProbeIrradiance::bindFor(const FramePlan& plan, int object) const {
   const GLuint b = probe ? buffer(probe->reflector) : 0;
   glBindBufferBase(GL_UNIFORM_BUFFER, kIrradianceBinding, b != 0 ? b : empty_.id());
   return b != 0;
+}
+
+void ProbeIrradiance::bindParallaxCube(GLuint cube) const {
+  glActiveTexture(GL_TEXTURE0 + kParallaxUnit);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
+  glBindSampler(kParallaxUnit, cube != 0 ? parallaxSampler_.id() : 0);
+  glActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace reflect

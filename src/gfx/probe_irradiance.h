@@ -1,11 +1,12 @@
 // Diffuse light from the live probes (docs/rough.md, "Diffuse light from the probe"): after a
 // capture, each probe with probe-lit readers (ProbePlan::diffuseReaders) has its cube projected
 // on the order-2 spherical harmonics (shaders/irradiance_project.vert) into a uniform buffer of its
-// own, nine vec4s (colour in rgb, nearness in w), which phong.frag reads as its ProbeIrradiance
+// own, nine vec4s (colour in rgb, w unused), which phong.frag reads as its ProbeIrradiance
 // block (AMBIENT_PROBE). The projection runs only when the plan says a face of the probe was
 // redrawn (ProbePlan::projectIrradiance), or the probe has no buffer yet; it reads the capture's
 // box mip chain (CaptureFormat::boxChain) through a sampler of its own and nothing comes back to
-// the CPU.
+// the CPU. The same chain, read trilinearly, gives mesh.vert's parallax taps
+// (irradiance_parallax.glsl).
 #pragma once
 
 #include <map>
@@ -45,6 +46,8 @@ class ProbeIrradiance {
   // Binds the buffer of the probe probe-lit `object` reads (plan.irradianceOf) to
   // kIrradianceBinding; false when it has none yet (the draw then lights it with zeros).
   bool bindFor(const FramePlan& plan, int object) const;
+  // Binds `cube` to kParallaxUnit through a trilinear sampler of its box mip chain (0: unbinds).
+  void bindParallaxCube(GLuint cube) const;
   // The mip level the projection reads a cube of faceSize at: the first whose faces are under 16
   // texels square (8 x 8 for 256- and 32-texel faces; the whole face below 16). Order 2 keeps
   // nothing narrower than about a radian; 16 x 16 cost twice as much for the same pixels.
@@ -58,7 +61,8 @@ class ProbeIrradiance {
 
   ShaderProgram program_;
   GLint probeUnit_ = -1, lod_ = -1, grid_ = -1;
-  SamplerHandle sampler_;  // reads the box chain's mips whatever the cube's own filter
+  SamplerHandle sampler_;          // reads the box chain's mips whatever the cube's own filter
+  SamplerHandle parallaxSampler_;  // ... trilinearly, for the parallax taps
   TransformFeedbackHandle feedback_;
   VertexArrayHandle vertexArray_;        // the nine vertices have no attributes
   BufferHandle empty_;                   // bound while a reader's probe has no buffer yet (zeros)

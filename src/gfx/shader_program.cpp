@@ -100,7 +100,7 @@ Result<ShaderProgram> ShaderProgram::buildFromSource(const std::string& vertexFi
                                                      const char* fragmentSource, bool mediump,
                                                      const std::string& defines,
                                                      const std::vector<std::string>& feedback) {
-  Result<ShaderHandle> vs = compile(GL_VERTEX_SHADER, vertexFile, vertexSource, false, "");
+  Result<ShaderHandle> vs = compile(GL_VERTEX_SHADER, vertexFile, vertexSource, false, defines);
   if (!vs) return Result<ShaderProgram>::failure(vs.error());
   Result<ShaderHandle> fs =
       compile(GL_FRAGMENT_SHADER, fragmentFile, fragmentSource, mediump, defines);

@@ -18,7 +18,7 @@ class ShaderProgram {
   // Prepends "#version 300 es" and the float precision in one place (fragment shaders mediump
   // when asked), and replaces each line `#include "file.glsl"` with that embedded file (once per
   // shader). Failure carries the stage, the file name and the driver's log.
-  // `defines` ("#define NAME VALUE\n" lines) follow the prelude in the fragment shader.
+  // `defines` ("#define NAME VALUE\n" lines) follow the prelude in both shaders.
   static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
                                      bool mediump = false, const std::string& defines = "",
                                      const std::vector<std::string>& feedback = {});

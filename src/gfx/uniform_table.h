@@ -61,6 +61,9 @@ inline void setUniform(GLint at, bool value) {
 inline void setUniform(GLint at, float value) {
   glUniform1f(at, value);
 }
+inline void setUniform(GLint at, const glm::vec2& value) {
+  glUniform2f(at, value.x, value.y);
+}
 inline void setUniform(GLint at, const glm::ivec2& value) {
   glUniform2i(at, value.x, value.y);
 }

@@ -47,15 +47,23 @@ TEST(ShaderProgram, MissingFileIsNamed) {
   EXPECT_EQ(missing.error(), "shader no_such.frag: not embedded in this build");
 }
 
-TEST(ShaderProgram, DefinesReachTheFragmentShader) {
-  // A define that breaks the fragment shader proves the defines are compiled with it.
+TEST(ShaderProgram, DefinesReachBothShaders) {
+  // A define that breaks the shaders proves the defines are compiled with them: the vertex shader,
+  // compiled first, is the one named.
   Result<ShaderProgram> broken =
       ShaderProgram::build("fullscreen.vert", "depth_reduce.frag", false, "#error by design\n");
   ASSERT_FALSE(broken);
-  EXPECT_NE(broken.error().find("fragment shader depth_reduce.frag failed to compile:"),
+  EXPECT_NE(broken.error().find("vertex shader fullscreen.vert failed to compile:"),
             std::string::npos)
       << broken.error();
   EXPECT_TRUE(ShaderProgram::build("fullscreen.vert", "depth_reduce.frag"));
+  // AMBIENT_PROBE adds a uniform block to phong.frag and the parallax taps to mesh.vert: a uniform
+  // each stage uses exists only if that stage saw the define.
+  Result<ShaderProgram> lit = ShaderProgram::build(
+      "mesh.vert", "phong.frag", false, "#define CAPTURE_OUTPUT 0\n#define AMBIENT_PROBE 1\n");
+  ASSERT_TRUE(lit) << lit.error();
+  EXPECT_NE(glGetUniformBlockIndex(lit.value().id(), "ProbeIrradiance"), GL_INVALID_INDEX);
+  EXPECT_GE(lit.value().uniform("u_parallaxProbe"), 0);
 }
 
 // The renderer builds a variant the first time a draw needs one: every variant it can ask for

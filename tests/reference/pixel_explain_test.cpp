@@ -375,8 +375,9 @@ TEST(PixelExplain, ARoughSkyboxMirrorNamesTheSkysLevels) {
 // the CPU projects from the faces read back is the one the GPU projected and lit the pixel with.
 constexpr glm::ivec2 kSonicPixel{122, 140};
 constexpr glm::ivec2 kMarioPixel{219, 175};
-// The frame is RGBA8 and the projections differ in filtering (the GPU's reads the box chain's 8 x 8
-// level, the CPU's the 32-texel faces): at most 1 level apart measured, held at 2. The constant
+// The frame is RGBA8, the projections differ in filtering (the GPU's reads the box chain's 8 x 8
+// level, the CPU's the 32-texel faces) and the GPU takes the parallax at the vertices, the CPU at
+// the pixel: at most 1 level apart measured, held at 2. The constant
 // ambient would be 20 or more levels off at both pixels (mario's faces away from the light: its
 // colour there is the irradiance alone).
 constexpr int kLitLevels = 2;

@@ -9,6 +9,7 @@
 #include "core/cube_sampling.h"
 #include "core/frame_planner.h"
 #include "core/irradiance.h"
+#include "core/irradiance_parallax.h"
 #include "core/scene_file.h"
 #include "planned_boxes.h"
 
@@ -256,27 +257,35 @@ TEST(Irradiance, TheIrradianceCubeIsTheLightEachNormalTakes) {
   EXPECT_NEAR(centre(5), 0.0, 8.0);
 }
 
-// The nearness a capture's alpha gives: surroundings all at distance d (alpha d / (d + 1)) give
-// 1 / d in every direction, so the measured radius is d near-plane units; the sky (alpha 1) gives
-// 0, and the radius its floor, 10,000 near-plane units.
-TEST(Irradiance, TheMeasuredRadiusIsTheDistanceTheProbeCaptured) {
-  constexpr int kFace = 8;
-  CubeFaces near, sky;
+// The parallax taps (core/irradiance_parallax.h): nothing to add at the probe's centre, where every
+// tap's ray is the probe's own, nor in surroundings of one colour, whatever their distances; a
+// point moved towards a lit wall sees more of it, one moved away less.
+TEST(IrradianceParallax, MovesTheLightToWhereThePointSeesIt) {
+  constexpr int kFace = 32;
+  CubeFaces plain, wall;
   for (int f = 0; f < 6; ++f) {
-    near[static_cast<size_t>(f)] = filledFace(kFace, 10, 20, 30);
-    for (size_t k = 3; k < near[static_cast<size_t>(f)].pixels.size(); k += 4) {
-      near[static_cast<size_t>(f)].pixels[k] = 191;  // d / (d + 1) = 0.749: d = 2.984
+    plain[static_cast<size_t>(f)] = filledFace(kFace, 90, 120, 30);
+    // +X (face 0) a white wall at distance 3 near-plane units (alpha 3 / 4), the rest dark sky.
+    wall[static_cast<size_t>(f)] =
+        f == 0 ? filledFace(kFace, 255, 255, 255) : filledFace(kFace, 0, 0, 0);
+    for (size_t k = 3; k < plain[static_cast<size_t>(f)].pixels.size(); k += 4) {
+      plain[static_cast<size_t>(f)].pixels[k] = static_cast<uint8_t>(40 + 30 * f);
+      if (f == 0) wall[0].pixels[k] = 191;
     }
-    sky[static_cast<size_t>(f)] = filledFace(kFace, 10, 20, 30);  // alpha 255
   }
-  const double alpha = 191.0 / 255.0;
-  const float d = static_cast<float>(alpha / (1.0 - alpha));
-  const NearnessCoefficients c = projectNearness(near);
-  for (const glm::vec3& n : {glm::vec3(0, 0, 1), glm::vec3(-1, 0, 0), glm::vec3(0, 0.6f, 0.8f)}) {
-    EXPECT_NEAR(measuredRadius(c, n, 1.0f), d, 1e-4f);
-    EXPECT_NEAR(measuredRadius(c, n, 0.5f), 0.5f * d, 1e-4f);  // in world units: near x d
+  const glm::vec3 centre(1, 2, 3);
+  const glm::vec3 x(1, 0, 0);
+  for (const glm::vec3& n : {x, glm::vec3(0, 0.6f, 0.8f), glm::vec3(0, -1, 0)}) {
+    // (normalize's rounding only)
+    EXPECT_LT(glm::length(irradianceParallax(wall, centre, centre, n, 0.5f)), 1e-6f);
+    EXPECT_EQ(irradianceParallax(plain, centre + glm::vec3(0.4f, -0.3f, 0.2f), centre, n, 0.5f),
+              glm::vec3(0.0f));
   }
-  EXPECT_FLOAT_EQ(measuredRadius(projectNearness(sky), {0, 1, 0}, 2.0f), 2.0f / kLeastNearness);
+  // The wall is 1.5 from the centre (near plane 0.5): 0.75 nearer, it fills more of +X's view.
+  const glm::vec3 towards = irradianceParallax(wall, centre + 0.75f * x, centre, x, 0.5f);
+  const glm::vec3 away = irradianceParallax(wall, centre - 0.75f * x, centre, x, 0.5f);
+  EXPECT_GT(towards.r, 0.05f);  // measured 0.066 and -0.013
+  EXPECT_LT(away.r, -0.01f);
 }
 
 }  // namespace

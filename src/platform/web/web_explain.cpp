@@ -40,7 +40,7 @@ json explanationJson(const reflect::PixelExplanation& e) {
                 {"normal", vec(e.normal)},
                 {"irradianceDirection", vec(e.irradianceDirection)},
                 {"irradianceRadius", e.irradianceRadius},
-                {"radiusMeasured", e.radiusMeasured},
+                {"irradianceParallax", vec(e.irradianceParallax)},
                 {"irradiance", vec(e.irradiance)},
                 {"irradianceBytes", bytes(e.irradiance)}});
   }
