@@ -2,7 +2,7 @@
 // a probe-lit object sees about its normal, less what the probe's centre sees about the same
 // normal. mesh.vert adds it, once a vertex, to the order-2 harmonics phong.frag reads at the
 // centre. The harmonics keep the irradiance's shape; this difference only moves the light from
-// where the centre sees it to where the point does, so the sixteen taps' own error (a fixed
+// where the centre sees it to where the point does, so the eight taps' own error (a fixed
 // pattern of directions, a blurred level) is made twice, once each side, and mostly cancels.
 // core/irradiance_parallax.h is the same in C++.
 
@@ -11,11 +11,12 @@
 uniform samplerCube u_parallaxCube;
 // The probe's centre (xyz) and the capture's near plane (w; 0 for no parallax).
 uniform vec4 u_parallaxProbe;
-// The mip levels the taps read their colours (x) and the distances (y) at: 2 x 2 to 4 x 4 texels
-// a face for sixteen taps across a hemisphere, 16 x 16 for the distances.
+// The mip levels the taps read their colours (x) and the distances (y) at: between 4 x 4 and 2 x 2
+// texels a face for eight taps across a hemisphere, 16 x 16 for the distances (core/
+// irradiance_parallax.h's parallaxLevels).
 uniform vec2 u_parallaxLevels;
 
-const int kParallaxTaps = 16;
+const int kParallaxTaps = 8;  // core/irradiance_parallax.h's
 const int kParallaxSteps = 3;
 
 // The distance to what the probe saw along u, in world units (the sky very far).
@@ -39,7 +40,8 @@ vec3 parallaxSeen(vec3 o, vec3 w) {
 }
 
 // E / pi at the point o (from the centre) less E / pi at the centre, both for normal n, from the
-// same sixteen cosine-weighted directions (stratified in cos^2, golden-ratio turns).
+// same eight cosine-weighted directions (stratified in the sine squared of their angle from n,
+// turned by the golden ratio).
 vec3 irradianceParallax(vec3 o, vec3 n) {
   vec3 helper = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
   vec3 tx = normalize(cross(helper, n));

@@ -104,10 +104,15 @@ std::string readIrradiance(const Demo& demo, const SurfacePoint& surface, PixelE
   e.irradianceDirection =
       irradianceDirection(surface.normal, surface.position, light->centre, e.irradianceRadius);
   // Where no radius is set, mesh.vert's parallax from the probe's distances, from the faces
-  // as captured (the GPU reads their box chain as irradianceParallax does).
-  e.irradianceParallax = set ? glm::vec3(0.0f)
-                             : irradianceParallax(faces.value(), surface.position, light->centre,
-                                                  surface.normal, demo.scene().capture.near);
+  // as captured (the GPU reads their box chain as irradianceParallax does): at the triangle's
+  // corners, blended by the point's weights, as the rasteriser interpolates the vertex shader's.
+  e.irradianceParallax = glm::vec3(0.0f);
+  for (size_t k = 0; k < 3 && !set; ++k) {
+    e.irradianceParallax +=
+        surface.weights[static_cast<int>(k)] *
+        irradianceParallax(faces.value(), surface.cornerPositions[k], light->centre,
+                           surface.cornerNormals[k], demo.scene().capture.near);
+  }
   e.irradiance =
       glm::max(irradianceAt(projectIrradiance(read), e.irradianceDirection) + e.irradianceParallax,
                glm::vec3(0.0f));
@@ -135,7 +140,7 @@ std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
                   d.x, d.y, d.z, radius)
             : formatLine(
                   ", plus %+.3f, %+.3f, %+.3f for what this point sees that the centre does not "
-                  "(16 taps followed to the probe's distances)",
+                  "(8 taps followed to the probe's distances)",
                   p.x, p.y, p.z);
     return what + formatLine(
                       " is phong, lit by probe: its ambient is the irradiance of object "

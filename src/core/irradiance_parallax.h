@@ -1,6 +1,6 @@
 // Diffuse light's parallax, the C++ side of shaders/irradiance_parallax.glsl (docs/rough.md,
 // "Parallax from the probe's distances"): what a point of a probe-lit object sees about its normal
-// less what its probe's centre sees about the same normal, from sixteen cosine-weighted taps of the
+// less what its probe's centre sees about the same normal, from eight cosine-weighted taps of the
 // probe's blurred colours, each tap's ray from the point followed to the surface the probe's
 // stored distances put it on. Added to the order-2 harmonics read at the centre, it moves the
 // light to where the point sees it; the taps' own error is made on both sides and mostly cancels.
@@ -12,7 +12,7 @@
 
 namespace reflect {
 
-inline constexpr int kParallaxTaps = 16;
+inline constexpr int kParallaxTaps = 8;
 inline constexpr int kParallaxSteps = 3;  // fixed-point steps of each tap's distance search
 
 // The mip levels the taps read a probe of faceSize texels at: its colours where a face is 2 to 4

@@ -53,7 +53,15 @@ SurfacePoint firstSurface(const SceneBvh& scene, const TraceRay& ray, float tMin
   s.object = hit.instance;
   s.t = hit.t;
   s.position = ray.origin + hit.t * ray.direction;
-  s.normal = glm::normalize(normalMatrixOf(glm::mat3(instance.model)) * local);
+  const glm::mat3 normals = normalMatrixOf(glm::mat3(instance.model));
+  s.normal = glm::normalize(normals * local);
+  for (int k = 0; k < 3; ++k) {
+    const Vertex& v = mesh.corner(slot, k);
+    s.cornerPositions[static_cast<size_t>(k)] =
+        glm::vec3(instance.model * glm::vec4(v.position, 1));
+    s.cornerNormals[static_cast<size_t>(k)] = glm::normalize(normals * v.normal);
+  }
+  s.weights = glm::vec3(1.0f - hit.u - hit.v, hit.u, hit.v);
   return s;
 }
 

@@ -5,6 +5,8 @@
 // the angle between two directions. No GL: the unit tests and the Embree reference check it.
 #pragma once
 
+#include <array>
+
 #include <functional>
 #include <memory>
 #include <optional>
@@ -40,6 +42,11 @@ struct SurfacePoint {
   float t = 0.0f;   // along the ray that met it
   glm::vec3 position{0.0f};
   glm::vec3 normal{0.0f};  // unit, the interpolated vertex normal in world space (outward)
+  // The triangle met, as the rasteriser has it: its corners in world space (positions, unit
+  // normals) and the point's barycentric weights, for what a vertex shader computes at them.
+  std::array<glm::vec3, 3> cornerPositions{};
+  std::array<glm::vec3, 3> cornerNormals{};
+  glm::vec3 weights{0.0f};
 };
 
 // The first surface along `ray` (t in (tMin, infinity)), leaving out object `skip`; with

