@@ -1,6 +1,7 @@
 // Every mesh: world-space position and normal for per-fragment lighting, and the object-space
 // position for Ex12-1's cube-textured material. AMBIENT_PROBE (a probe-lit object): also its
-// irradiance's parallax, once a vertex, since it varies slowly over the surface.
+// irradiance's parallax, which parallax_feedback.vert computed for each vertex of the mesh (0 where
+// the object sets a radius instead: the attribute is then off).
 // (#version and precision are prepended by ShaderProgram.)
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -14,7 +15,7 @@ out vec3 v_worldNormal;
 out vec3 v_objectPosition;
 
 #if defined(AMBIENT_PROBE) && AMBIENT_PROBE
-#include "irradiance_parallax.glsl"
+layout(location = 2) in vec3 a_ambientParallax;
 out vec3 v_ambientParallax;
 #endif
 
@@ -25,9 +26,6 @@ void main() {
   v_objectPosition = a_position;
   gl_Position = u_viewProjection * world;
 #if defined(AMBIENT_PROBE) && AMBIENT_PROBE
-  v_ambientParallax = u_parallaxProbe.w > 0.0
-                          ? irradianceParallax(world.xyz - u_parallaxProbe.xyz,
-                                               normalize(v_worldNormal))
-                          : vec3(0.0);
+  v_ambientParallax = a_ambientParallax;
 #endif
 }

@@ -5,7 +5,6 @@
 #include "core/bvh.h"
 #include "core/fresnel.h"
 #include "core/ggx.h"
-#include "core/irradiance_parallax.h"
 #include "gfx/probe_capture.h"
 #include "gfx/probe_irradiance.h"
 #include "gfx/scene_renderer_detail.h"
@@ -87,11 +86,17 @@ void EnvironmentBinding::setForObject(const PhongUniforms& u, const ProgramKey& 
   const std::optional<float> set = scene.objects[static_cast<size_t>(object)].ambientRadius;
   const glm::vec3 centre = light ? light->centre : glm::vec3(0.0f);
   u.irradianceProxy.set(glm::vec4(centre, light && set ? *set : 0.0f));
-  const CubeCaptureTarget* target = light && !set ? s_.probes.target(light->reflector) : nullptr;
-  s_.irradiance.bindParallaxCube(target ? target->texture(0) : 0);
-  u.parallaxProbe.set(glm::vec4(centre, target ? scene.capture.near : 0.0f));
-  const ParallaxLevels levels = parallaxLevels(target ? target->faceSize() : 1);
-  u.parallaxLevels.set(glm::vec2(levels.colour, levels.distance));
+}
+
+GLuint EnvironmentBinding::parallaxFor(const Scene& scene, const FramePlan& plan, int object,
+                                       const MeshBuffer& mesh) const {
+  const ProbePlan* light = plan.irradianceOf(object);
+  if (!light || scene.objects[static_cast<size_t>(object)].ambientRadius) return 0;
+  const CubeCaptureTarget* target = s_.probes.target(light->reflector);
+  if (!target) return 0;
+  return s_.irradiance.feedParallax(object, mesh.vertexArray(), mesh.vertexCount(),
+                                    plan.modelOf(object), target->texture(0), target->faceSize(),
+                                    light->centre, scene.capture.near);
 }
 
 void EnvironmentBinding::setForObject(const EnvironmentUniforms& u, const ProgramKey& key,

@@ -50,6 +50,10 @@ class EnvironmentBinding {
                     const FramePlan& plan, int object) const;
   void setForObject(const EnvironmentUniforms& u, const ProgramKey& key, const Scene& scene,
                     const FramePlan& plan, int object) const;
+  // A probe-lit object that sets no radius: its parallax for each vertex of `mesh`, the mesh it is
+  // drawn with (ProbeIrradiance::feedParallax), for mesh.vert's a_ambientParallax; else 0.
+  GLuint parallaxFor(const Scene& scene, const FramePlan& plan, int object,
+                     const MeshBuffer& mesh) const;
   void setForObject(const CubeTexturedUniforms& u, const ProgramKey& key, const Scene& scene,
                     const FramePlan& plan, int object) const;
 

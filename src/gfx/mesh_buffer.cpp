@@ -16,6 +16,7 @@ MeshBuffer::MeshBuffer(const MeshData& mesh)
       vertices_(genBuffer()),
       indices_(genBuffer()),
       indexCount_(static_cast<GLsizei>(mesh.indices.size())),
+      vertexCount_(static_cast<GLsizei>(mesh.vertices.size())),
       bounds_(mesh.bounds),
       sphereRadius_(mesh.sphereRadius),
       closedOutward_(isClosedOutward(mesh)) {
@@ -63,6 +64,17 @@ void MeshBuffer::draw(const std::vector<IndexRange>& ranges) const {
         GL_TRIANGLES, static_cast<GLsizei>(r.count), GL_UNSIGNED_INT,
         reinterpret_cast<const void*>(static_cast<uintptr_t>(r.first) * sizeof(uint32_t)));
   }
+}
+
+void MeshBuffer::draw(const std::vector<IndexRange>& ranges, GLuint perVertex) const {
+  if (perVertex == 0) return draw(ranges);
+  glBindVertexArray(vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, perVertex);
+  glVertexAttribPointer(kAttribAmbientParallax, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(kAttribAmbientParallax);
+  draw(ranges);
+  // Off again: the mesh's other programs (and this one without a buffer) read its constant 0.
+  glDisableVertexAttribArray(kAttribAmbientParallax);
 }
 
 void MeshBuffers::set(const std::string& name, int lod, const MeshData& mesh) {

@@ -57,6 +57,10 @@ class MeshBuffer {
   void draw() const;
   // Only these index ranges (the visible chunks); empty draws everything.
   void draw(const std::vector<IndexRange>& ranges) const;
+  // ... with `perVertex` (vec3s, one a vertex) as attribute kAttribAmbientParallax for this draw.
+  void draw(const std::vector<IndexRange>& ranges, GLuint perVertex) const;
+  GLsizei vertexCount() const { return vertexCount_; }
+  GLuint vertexArray() const { return vao_.id(); }
   GLsizei indexCount() const { return indexCount_; }
   size_t triangleCount() const { return static_cast<size_t>(indexCount_) / 3; }
   const Bounds& bounds() const { return bounds_; }
@@ -78,6 +82,7 @@ class MeshBuffer {
   BufferHandle vertices_;
   BufferHandle indices_;
   GLsizei indexCount_ = 0;
+  GLsizei vertexCount_ = 0;
   Bounds bounds_;
   float sphereRadius_ = 0.0f;
   float boundingRadius_ = 0.0f;

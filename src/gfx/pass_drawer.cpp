@@ -1,6 +1,7 @@
 #include "gfx/pass_drawer.h"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "core/frustum.h"
 #include "core/normal_matrix.h"
@@ -58,7 +59,12 @@ PassCounts PassDrawer::drawObject(const Uniforms& u, const ProgramKey& key, cons
   setFaceCulling(pass, *buffer, world, model);
   u.mesh.colour.set(object.colour);
   environments_.setForObject(u, key, pass.scene, pass.plan, item.object);
-  buffer->draw(item.ranges);
+  GLuint perVertex = 0;
+  if constexpr (std::is_same_v<Uniforms, PhongUniforms>) {
+    if (key.probeLight)
+      perVertex = environments_.parallaxFor(pass.scene, pass.plan, item.object, *buffer);
+  }
+  buffer->draw(item.ranges, perVertex);
   const size_t triangles = item.ranges.empty() ? buffer->triangleCount() : item.triangles;
   return {static_cast<int>(std::max<size_t>(item.ranges.size(), 1)), triangles};
 }

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/irradiance_parallax.h"
+#include "core/normal_matrix.h"
 #include "gfx/capture_state.h"
 #include "gfx/gl.h"
 
@@ -34,6 +38,15 @@ Result<ProbeIrradiance> ProbeIrradiance::create() {
   p.sampler_ = SamplerHandle(generateOne<glGenSamplers>());
   glSamplerParameteri(p.sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
   glSamplerParameteri(p.sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  Result<ShaderProgram> parallax =
+      ShaderProgram::build("parallax_feedback.vert", "no_fragment.frag", false, "", {"v_parallax"});
+  if (!parallax) return Result<ProbeIrradiance>::failure(parallax.error());
+  p.parallax_ = parallax.take();
+  p.parallaxModel_ = p.parallax_.uniform("u_model");
+  p.parallaxNormals_ = p.parallax_.uniform("u_normalMatrix");
+  p.parallaxCube_ = p.parallax_.uniform("u_parallaxCube");
+  p.parallaxProbe_ = p.parallax_.uniform("u_parallaxProbe");
+  p.parallaxLevels_ = p.parallax_.uniform("u_parallaxLevels");
   p.parallaxSampler_ = SamplerHandle(generateOne<glGenSamplers>());
   glSamplerParameteri(p.parallaxSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glSamplerParameteri(p.parallaxSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -94,11 +107,49 @@ bool ProbeIrradiance::bindFor(const FramePlan& plan, int object) const {
   return b != 0;
 }
 
-void ProbeIrradiance::bindParallaxCube(GLuint cube) const {
+GLuint ProbeIrradiance::feedParallax(int object, GLuint vertexArray, GLsizei vertexCount,
+                                     const glm::mat4& model, GLuint cube, int faceSize,
+                                     const glm::vec3& centre, float near) const {
+  PerVertex& out = parallaxBuffers_[object];
+  if (out.buffer.id() == 0 || out.vertices != vertexCount) {
+    out.buffer = BufferHandle(generateOne<glGenBuffers>());
+    glBindBuffer(GL_ARRAY_BUFFER, out.buffer.id());
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertexCount) * 3 * sizeof(float), nullptr,
+                 GL_DYNAMIC_COPY);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    out.vertices = vertexCount;
+  }
+  GLint previous = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+  glUseProgram(parallax_.id());
+  glUniformMatrix4fv(parallaxModel_, 1, GL_FALSE, glm::value_ptr(model));
+  const glm::mat3 normals = normalMatrixOf(glm::mat3(model));
+  glUniformMatrix3fv(parallaxNormals_, 1, GL_FALSE, glm::value_ptr(normals));
+  glUniform1i(parallaxCube_, kParallaxUnit);
+  glUniform4f(parallaxProbe_, centre.x, centre.y, centre.z, near);
+  const ParallaxLevels levels = parallaxLevels(faceSize);
+  glUniform2f(parallaxLevels_, levels.colour, levels.distance);
   glActiveTexture(GL_TEXTURE0 + kParallaxUnit);
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
-  glBindSampler(kParallaxUnit, cube != 0 ? parallaxSampler_.id() : 0);
+  glBindSampler(kParallaxUnit, parallaxSampler_.id());
   glActiveTexture(GL_TEXTURE0);
+  glBindVertexArray(vertexArray);
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, feedback_.id());
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, out.buffer.id());
+  glBeginTransformFeedback(GL_POINTS);
+  glDrawArrays(GL_POINTS, 0, vertexCount);
+  glEndTransformFeedback();
+  // WebGL refuses a buffer bound for transform feedback and read elsewhere: unbound at once.
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+  glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, 0);
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindSampler(kParallaxUnit, 0);
+  glActiveTexture(GL_TEXTURE0 + kParallaxUnit);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glUseProgram(static_cast<GLuint>(previous));
+  return out.buffer.id();
 }
 
 }  // namespace reflect

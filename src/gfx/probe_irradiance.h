@@ -46,8 +46,13 @@ class ProbeIrradiance {
   // Binds the buffer of the probe probe-lit `object` reads (plan.irradianceOf) to
   // kIrradianceBinding; false when it has none yet (the draw then lights it with zeros).
   bool bindFor(const FramePlan& plan, int object) const;
-  // Binds `cube` to kParallaxUnit through a trilinear sampler of its box mip chain (0: unbinds).
-  void bindParallaxCube(GLuint cube) const;
+  // The parallax taps (irradiance_parallax.glsl) for each vertex of a probe-lit object's mesh
+  // (its vertex array and count, placed by `model`), read from `cube` (faceSize texels, its box
+  // chain trilinearly) about `centre` with the capture's `near` plane, by transform feedback into
+  // a buffer of the object's own, which it returns for mesh.vert's a_ambientParallax. The program
+  // in use before is in use after.
+  GLuint feedParallax(int object, GLuint vertexArray, GLsizei vertexCount, const glm::mat4& model,
+                      GLuint cube, int faceSize, const glm::vec3& centre, float near) const;
   // The mip level the projection reads a cube of faceSize at: the first whose faces are under 16
   // texels square (8 x 8 for 256- and 32-texel faces; the whole face below 16). Order 2 keeps
   // nothing narrower than about a radian; 16 x 16 cost twice as much for the same pixels.
@@ -63,6 +68,15 @@ class ProbeIrradiance {
   GLint probeUnit_ = -1, lod_ = -1, grid_ = -1;
   SamplerHandle sampler_;          // reads the box chain's mips whatever the cube's own filter
   SamplerHandle parallaxSampler_;  // ... trilinearly, for the parallax taps
+  ShaderProgram parallax_;         // parallax_feedback.vert
+  GLint parallaxModel_ = -1, parallaxNormals_ = -1, parallaxCube_ = -1, parallaxProbe_ = -1,
+        parallaxLevels_ = -1;
+  struct PerVertex {
+    BufferHandle buffer;
+    GLsizei vertices = 0;
+  };
+  // By the probe-lit object's index: rewritten every frame the object is drawn, a cache.
+  mutable std::map<int, PerVertex> parallaxBuffers_;
   TransformFeedbackHandle feedback_;
   VertexArrayHandle vertexArray_;        // the nine vertices have no attributes
   BufferHandle empty_;                   // bound while a reader's probe has no buffer yet (zeros)

@@ -28,7 +28,6 @@ void setFaceFrames(const EnvironmentUniforms& u) {
 // for the hierarchical search the faces' frames.
 void setOnce(const PhongUniforms& u, const ProgramKey&) {
   u.mesh.capture.setUnits();
-  u.parallaxCube.set(kParallaxUnit);
 }
 
 void setOnce(const CubeTexturedUniforms& u, const ProgramKey&) {

@@ -43,11 +43,6 @@ struct PhongUniforms : UniformTable {
   // A probe-lit object's probe centre and ambientRadius (0 where none is set: phong.frag's
   // irradianceDirection).
   Uniform<glm::vec4> irradianceProxy{*this, "u_irradianceProxy"};
-  // Where none is set, the parallax from the probe's distances (irradiance_parallax.glsl): its
-  // cube's unit, its centre and the capture's near plane (0: none), and the levels the taps read.
-  Uniform<int> parallaxCube{*this, "u_parallaxCube"};
-  Uniform<glm::vec4> parallaxProbe{*this, "u_parallaxProbe"};
-  Uniform<glm::vec2> parallaxLevels{*this, "u_parallaxLevels"};
   void setLight(const PhongLight& light) const;
 };
 

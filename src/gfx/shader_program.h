@@ -12,6 +12,7 @@ namespace reflect {
 // Vertex attribute locations shared by every shader (layout(location = N) in mesh.vert).
 inline constexpr GLuint kAttribPosition = 0;
 inline constexpr GLuint kAttribNormal = 1;
+inline constexpr GLuint kAttribAmbientParallax = 2;  // mesh.vert's, probe-lit objects only
 
 class ShaderProgram {
  public:

@@ -57,13 +57,13 @@ TEST(ShaderProgram, DefinesReachBothShaders) {
             std::string::npos)
       << broken.error();
   EXPECT_TRUE(ShaderProgram::build("fullscreen.vert", "depth_reduce.frag"));
-  // AMBIENT_PROBE adds a uniform block to phong.frag and the parallax taps to mesh.vert: a uniform
-  // each stage uses exists only if that stage saw the define.
+  // AMBIENT_PROBE adds a uniform block to phong.frag and the parallax attribute to mesh.vert: each
+  // exists only if that stage saw the define.
   Result<ShaderProgram> lit = ShaderProgram::build(
       "mesh.vert", "phong.frag", false, "#define CAPTURE_OUTPUT 0\n#define AMBIENT_PROBE 1\n");
   ASSERT_TRUE(lit) << lit.error();
   EXPECT_NE(glGetUniformBlockIndex(lit.value().id(), "ProbeIrradiance"), GL_INVALID_INDEX);
-  EXPECT_GE(lit.value().uniform("u_parallaxProbe"), 0);
+  EXPECT_GE(glGetAttribLocation(lit.value().id(), "a_ambientParallax"), 0);
 }
 
 // The renderer builds a variant the first time a draw needs one: every variant it can ask for
