@@ -1,6 +1,7 @@
 // Diffuse light's parallax (docs/rough.md, "Parallax from the probe's distances"): what a point of
 // a probe-lit object sees about its normal, less what the probe's centre sees about the same
-// normal. mesh.vert adds it, once a vertex, to the order-2 harmonics phong.frag reads at the
+// normal. parallax_feedback.vert computes it once for each vertex of the mesh, and phong.frag
+// adds it (mesh.vert's a_ambientParallax, interpolated) to the order-2 harmonics read at the
 // centre. The harmonics keep the irradiance's shape; this difference only moves the light from
 // where the centre sees it to where the point does, so the eight taps' own error (a fixed
 // pattern of directions, a blurred level) is made twice, once each side, and mostly cancels.
@@ -9,7 +10,7 @@
 // The probe's captured colours, the distance d / (d + 1) in near-plane units in alpha (the sky's
 // 1), through a trilinear sampler of the box mip chain.
 uniform samplerCube u_parallaxCube;
-// The probe's centre (xyz) and the capture's near plane (w; 0 for no parallax).
+// The probe's centre (xyz) and the capture's near plane (w).
 uniform vec4 u_parallaxProbe;
 // The mip levels the taps read their colours (x) and the distances (y) at: between 4 x 4 and 2 x 2
 // texels a face for eight taps across a hemisphere, 16 x 16 for the distances (core/

@@ -18,8 +18,8 @@ inline constexpr GLint kPrefilteredUnit = 10;  // samplerCube: a rough reader's 
 // samplerCube: a rough reader's probe colours with their box chain, through ProbeCapture's
 // trilinear sampler, whatever the cube's own filter.
 inline constexpr GLint kLobeUnit = 13;
-// samplerCube: a probe-lit object's probe, its box mip chain read trilinearly (mesh.vert's
-// irradiance parallax).
+// samplerCube: a probe-lit object's probe, its box mip chain read trilinearly (the irradiance
+// parallax's taps, parallax_feedback.vert).
 inline constexpr GLint kParallaxUnit = 14;
 
 struct CaptureState {

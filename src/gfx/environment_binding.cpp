@@ -81,7 +81,7 @@ void EnvironmentBinding::setForObject(const PhongUniforms& u, const ProgramKey& 
   if (!key.probeLight) return;
   s_.irradiance.bindFor(plan, object);
   const ProbePlan* light = plan.irradianceOf(object);
-  // A radius set in the scene for phong.frag; or none, and mesh.vert's parallax taps read the
+  // A radius set in the scene for phong.frag; or none, and parallaxFor's taps read the
   // probe's own distances.
   const std::optional<float> set = scene.objects[static_cast<size_t>(object)].ambientRadius;
   const glm::vec3 centre = light ? light->centre : glm::vec3(0.0f);

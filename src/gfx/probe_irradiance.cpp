@@ -80,19 +80,23 @@ void ProbeIrradiance::project(int owner, GLuint cube, int faceSize) {
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
   glBindSampler(kProbeUnit, sampler_.id());
   glBindVertexArray(vertexArray_.id());
+  writePoints(kIrradianceCoefficients, it->second.id());
+  glBindSampler(kProbeUnit, 0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+  glBindVertexArray(0);
+}
+
+void ProbeIrradiance::writePoints(GLsizei count, GLuint buffer) const {
   glEnable(GL_RASTERIZER_DISCARD);
   glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, feedback_.id());
-  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, it->second.id());
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
   glBeginTransformFeedback(GL_POINTS);
-  glDrawArrays(GL_POINTS, 0, kIrradianceCoefficients);
+  glDrawArrays(GL_POINTS, 0, count);
   glEndTransformFeedback();
   // WebGL refuses a buffer bound for transform feedback and read elsewhere: unbound at once.
   glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
   glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, 0);
   glDisable(GL_RASTERIZER_DISCARD);
-  glBindSampler(kProbeUnit, 0);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-  glBindVertexArray(0);
 }
 
 GLuint ProbeIrradiance::buffer(int owner) const {
@@ -134,16 +138,7 @@ GLuint ProbeIrradiance::feedParallax(int object, GLuint vertexArray, GLsizei ver
   glBindSampler(kParallaxUnit, parallaxSampler_.id());
   glActiveTexture(GL_TEXTURE0);
   glBindVertexArray(vertexArray);
-  glEnable(GL_RASTERIZER_DISCARD);
-  glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, feedback_.id());
-  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, out.buffer.id());
-  glBeginTransformFeedback(GL_POINTS);
-  glDrawArrays(GL_POINTS, 0, vertexCount);
-  glEndTransformFeedback();
-  // WebGL refuses a buffer bound for transform feedback and read elsewhere: unbound at once.
-  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-  glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, 0);
-  glDisable(GL_RASTERIZER_DISCARD);
+  writePoints(vertexCount, out.buffer.id());
   glBindSampler(kParallaxUnit, 0);
   glActiveTexture(GL_TEXTURE0 + kParallaxUnit);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);

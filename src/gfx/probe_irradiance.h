@@ -5,8 +5,8 @@
 // block (AMBIENT_PROBE). The projection runs only when the plan says a face of the probe was
 // redrawn (ProbePlan::projectIrradiance), or the probe has no buffer yet; it reads the capture's
 // box mip chain (CaptureFormat::boxChain) through a sampler of its own and nothing comes back to
-// the CPU. The same chain, read trilinearly, gives mesh.vert's parallax taps
-// (irradiance_parallax.glsl).
+// the CPU. The same chain, read trilinearly, gives the parallax taps (feedParallax,
+// irradiance_parallax.glsl).
 #pragma once
 
 #include <map>
@@ -63,6 +63,9 @@ class ProbeIrradiance {
  private:
   ProbeIrradiance() = default;
   void project(int owner, GLuint cube, int faceSize);
+  // Draws `count` points of the program and vertex array in use with the rasteriser off, their
+  // outputs written into `buffer` by transform feedback.
+  void writePoints(GLsizei count, GLuint buffer) const;
 
   ShaderProgram program_;
   GLint probeUnit_ = -1, lod_ = -1, grid_ = -1;
