@@ -25,12 +25,14 @@
 //     tools/peers/peer_page.js), resource timing, and the hook's timing of the wasm module's
 //     instantiateStreaming and of the shader compile and link calls (peer_report.mjs's loadSpans);
 //   frame: after the page is ready (and the project's levels of detail are built), W warm-up and
-//     F timed calls of frame(1/60) in one task: window.demo.frame on the project's page,
-//     window.peer.frame on the peers; each call's wall time, which includes the GPU's work
-//     (both end with a read-back), and its CPU part (the wall time less that inside the GL calls
-//     that wait for the GPU process). Its parts: the project's frame stats (captureMs, then
-//     frameMs less it: each pass waited for); the peers draw F more frames with frameSplit, a
-//     read-back after each pass (the CubeCamera's update, then the render).
+//     F timed calls of frame(1/60) in one task: window.demo.frameWaitedOnce on the project's
+//     page, window.peer.frame on the peers; each call's wall time, which includes the GPU's work
+//     (both end with one read-back and wait nowhere else), and its CPU part (the wall time less
+//     that inside the GL calls that wait for the GPU process). Its parts come from F more frames
+//     with a read-back after each pass: the project's window.demo.frame (its stats' captureMs,
+//     then frameMs less it; the round's line also prints that frame's wall time, which is what
+//     this bench timed as the frame before 2026-11-29: one read-back more than the peers'), the
+//     peers' frameSplit (the CubeCamera's update, then the render).
 // It prints each round, then per page the medians over the rounds of each round's median, p10
 // and p90 frame ms, the frame's and the load's parts, the floor, and each project page's frame and
 // load against each peer (tools/peer_report.mjs).
@@ -226,25 +228,32 @@ async function openPage(browser, base, spec, o, extra = []) {
 }
 
 // W warm-up frames, then F timed ones, each frame's wall time and the part of it spent waiting for
-// the GPU process (PAGE_HOOK); the project's frames also say their stats' split. The peers then
-// draw F more with frameSplit (a wait after each pass) for their passes' times.
+// the GPU process (PAGE_HOOK), each frame waited for once at its end (the project's
+// frameWaitedOnce, the peers' frame). Then F more for the passes' times, a wait after each pass:
+// the project's frame (its stats' split; its wall time kept as wallPerPass, what this bench timed
+// before 2026-11-29) and the peers' frameSplit.
 function timeFrames({ name, warmup, count }) {
   const api = window[name];
-  for (let i = 0; i < warmup; ++i) api.frame(1 / 60);
+  const once = name === 'demo' ? api.frameWaitedOnce : api.frame;
+  for (let i = 0; i < warmup; ++i) once(1 / 60);
   const frames = [];
   for (let i = 0; i < count; ++i) {
     const waited = window.__glWaitMs;
     const start = performance.now();
-    const r = api.frame(1 / 60);
+    const r = once(1 / 60);
     const wall = performance.now() - start;
-    const frame = { wall, cpu: wall - (window.__glWaitMs - waited) };
-    if (name === 'demo') {
+    frames.push({ wall, cpu: wall - (window.__glWaitMs - waited), traced: r.tracedReflectors,
+                  faces: r.facesCaptured });
+  }
+  if (name === 'demo') {
+    for (let i = 0; i < count; ++i) {
+      const start = performance.now();
+      const r = api.frame(1 / 60);
       // captureMs: from the frame's start (its plan) to its captures' end, waited for; frameMs
       // adds the main pass, waited for. What is left of the wall time is the bridge (JSON).
-      Object.assign(frame, { capture: r.captureMs, main: r.frameMs - r.captureMs, traced: r.tracedReflectors,
-                             faces: r.facesCaptured, gpu: r.gpuFrameMs });
+      Object.assign(frames[i], { capture: r.captureMs, main: r.frameMs - r.captureMs, gpu: r.gpuFrameMs,
+                                 wallPerPass: performance.now() - start });
     }
-    frames.push(frame);
   }
   if (name === 'peer') {
     for (let i = 0; i < count; ++i) {
@@ -271,7 +280,7 @@ async function measure(browser, base, spec, o) {
     });
     const med = (key) => summary(frames.map((f) => f[key])).median;
     const split = { capture: med('capture'), main: med('main'), cpu: med('cpu'), traced: med('traced'),
-                    faces: med('faces'), gpu: med('gpu') };
+                    faces: med('faces'), gpu: med('gpu'), wallPerPass: med('wallPerPass') };
     return { firstDrawMs: load.firstDraw, load, frame: summary(frames.map((f) => f.wall)), split, canvas, settings,
              problems };
   } finally {
@@ -322,7 +331,8 @@ async function bench(base, pages, o, title = '') {
       console.log(`round ${round} ${spec.label.padEnd(26)} frame ${fmt(r.frame.median, 7)} ms ` +
                   `(p10 ${fmt(r.frame.p10, 0)}, p90 ${fmt(r.frame.p90, 0)}; capture ${fmt(x.capture, 0)}, ` +
                   `main ${fmt(x.main, 0)}, CPU ${fmt(x.cpu, 0)}` +
-                  (spec.peer ? '' : `, traced ${x.traced}, faces ${x.faces}`) +
+                  (spec.peer ? '' : `, traced ${x.traced}, faces ${x.faces}; ` +
+                    `waited after each pass ${fmt(x.wallPerPass, 0)}`) +
                   `), first frame ${fmt(r.firstDrawMs, 6)} ms, canvas ${r.canvas}` +
                   (round === 1 && r.settings ? `; ${r.settings}` : ''));
       const l = loadSpans(r.load, spec.peer);

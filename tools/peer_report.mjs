@@ -46,7 +46,8 @@ const floorOf = (row, rows) => rows.find((r) => r.spec.plain && !!r.spec.peer ==
 export function printTables(rows, o, title = '') {
   const heading = title ? `${title}: ` : '';
   console.log('');
-  console.log(`${heading}medians over ${o.rounds} round(s) of each round's median; frame ms, then its parts:`);
+  console.log(`${heading}medians over ${o.rounds} round(s) of each round's median; frame ms (one read-back at`);
+  console.log('  its end on every page), then its parts (from frames with a read-back after each pass):');
   console.log('  capture: from the frame\'s start to its captures\' end, the GPU waited for (the project\'s');
   console.log('    captureMs, which includes its plan; the CubeCamera\'s update() and a read-back, in frames');
   console.log('    drawn apart with frameSplit); main: the rest, the main pass (a traced mirror\'s trace runs');

@@ -69,8 +69,10 @@ export class Session {
   get levels() { return this.levelState.builder; }
 
   faceSize() { return this.bridge.scene().cubeFaceSize || this.cubeSize; }
-  frame(dt, waitForGpu = false) {
-    this.lastStats = this.bridge.frame({ dt, waitForGpu });
+  // wait: false (none), true (after each pass, which the stats then time) or 'end' (once, after
+  // the frame).
+  frame(dt, wait = false) {
+    this.lastStats = this.bridge.frame({ dt, waitForGpu: wait === true, waitAtEnd: wait === 'end' });
     // The frame captured, and its meshes lack the chunks or levels a capture draws: built now.
     if (this.lastStats.levelsWanted && !this.levels.running) this.startLevels();
     this.redrawStep();

@@ -8,6 +8,9 @@ function timeAndCamera(page, session, bridge) {
   return {
     // One complete frame (dt seconds on), timed end to end; its stats.
     frame: (dt = 0) => session.frame(dt, true),
+    // The same, with one wait for the GPU at its end and none between its passes (as the peer
+    // pages' frame(dt) waits): what a frame costs end to end; its stats do not split the GPU's work.
+    frameWaitedOnce: (dt = 0) => session.frame(dt, 'end'),
     // The last frame's stats, with the display rate.
     stats: () => ({ ...session.lastStats, ...bridge.memory(), fps: page.fps() }),
     setTime: (t) => session.setTime(t),

@@ -22,7 +22,9 @@ function frameCalls(call, fn) {
     schema: () => JSON.parse(fn.rf_schema_json()),
 
     // One frame into the canvas: its stats (FrameStats: frameMs, facesCaptured, time, ...).
-    frame: ({ dt = 0, waitForGpu = false } = {}) => call('rf_frame', { dt, waitForGpu }),
+    // waitForGpu: a read back after each pass (the stats time each); waitAtEnd: one after the frame.
+    frame: ({ dt = 0, waitForGpu = false, waitAtEnd = false } = {}) =>
+      call('rf_frame', { dt, waitForGpu, waitAtEnd }),
     // Step through a frame: step `step` of the frame now into the canvas; { step, count, steps:
     // [{ label, pass, face, objects, triangles }] } or { error }.
     frameStep: (step) => call('rf_frame_step', { step }),

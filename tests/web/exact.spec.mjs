@@ -24,6 +24,23 @@ test('idle: paused and unchanged, the page draws no frame in 2 s; a change draws
   expect(s.width).toBeGreaterThan(0);
 });
 
+test('frameWaitedOnce (the peer bench\'s frame: one wait at its end) draws what frame draws', async ({ page }) => {
+  await openDemo(page, '?paused&t=1');
+  await idle(page);
+  // Each draws the same paused frame; the canvas read after each.
+  const drawn = await page.evaluate(() => {
+    const sum = ({ data }) => data.reduce((a, v) => a + v, 0);
+    const perPass = window.demo.frame(0);
+    const a = sum(window.demo.readPixels());
+    const once = window.demo.frameWaitedOnce(0);
+    const b = sum(window.demo.readPixels());
+    return { a, b, traced: [perPass.tracedReflectors, once.tracedReflectors] };
+  });
+  expect(drawn.a).toBeGreaterThan(0);
+  expect(drawn.b).toBe(drawn.a);
+  expect(drawn.traced).toEqual([1, 1]);
+});
+
 test('the canvas keeps its picture while idle', async ({ page }) => {
   await openDemo(page, '?paused&t=1');
   await idle(page);

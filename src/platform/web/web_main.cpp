@@ -103,8 +103,10 @@ EMSCRIPTEN_KEEPALIVE const char* rf_create() {
   return replyError("");
 }
 
-// One complete frame into the canvas's drawing buffer: {"dt": seconds, "waitForGpu": bool} (time
-// it end to end, a read back after each pass). Returns the frame's stats (see FrameStats).
+// One complete frame into the canvas's drawing buffer: {"dt": seconds, "waitForGpu": bool (time
+// it end to end, a read back after each pass), "waitAtEnd": bool (one read back after the frame,
+// as the peer pages wait: what a frame costs, with no wait between its passes)}. Returns the
+// frame's stats (see FrameStats).
 EMSCRIPTEN_KEEPALIVE const char* rf_frame(const char* request) {
   auto r = parseRequest(request, "rf_frame");
   if (!r) return replyError(r.error());
@@ -113,6 +115,7 @@ EMSCRIPTEN_KEEPALIVE const char* rf_frame(const char* request) {
   const reflect::JsonReader in(r.value(), "", &error);
   const double dt = in["dt"].number(0, 0, 1e6);
   const bool wait = in["waitForGpu"].boolean(false);
+  const bool waitAtEnd = in["waitAtEnd"].boolean(false);
   if (!error.empty()) return replyError("rf_frame: " + error);
   // The drawing buffer, not the canvas element: past the GPU's limits (a wide canvas at a high
   // devicePixelRatio) the browser gives a smaller buffer, and drawing at the element's size
@@ -120,6 +123,7 @@ EMSCRIPTEN_KEEPALIVE const char* rf_frame(const char* request) {
   int width = 0, height = 0;
   emscripten_webgl_get_drawing_buffer_size(state().context, &width, &height);
   json stats = state().demo->frame(dt, 0, width, height, wait).toJson();
+  if (waitAtEnd) reflect::waitForGpu();
   // The wasm memory now (it grows and never shrinks: what a load's peak left behind).
   stats["heapBytes"] = emscripten_get_heap_size();
   // This frame (or one before) drew a capture whose chunks or levels are not built: the page
