@@ -6,8 +6,9 @@
 //  u_exactAtlas    every mesh's tree: interior nodes (kNodeTexels: each child's (min, ref) and
 //                  (max, count)) and triangles (kTriangleTexels: v0, v1 - v0, v2 - v0, v0.w its
 //                  slot); after them, rewritten each frame, the header (the top level's box and
-//                  root), each object's slot (its inverse model's rows, then (root, count,
-//                  object)) and the top level's interior nodes
+//                  root, then the box and slot of the object tested before the walk), each
+//                  object's slot (its inverse model's rows, then (root, count, object)) and the
+//                  top level's interior nodes
 //  u_exactNormals  3 texels a triangle slot: its vertices' normals
 //  u_exactScene    kInstanceTexels per object, for shading what the walk found (normal matrix
 //                  columns, colour and material, mix weights, probe centre, self epsilon,
@@ -22,6 +23,7 @@
 const int kExactWidthShift = EXACT_WIDTH_SHIFT;     // kBvhTextureWidthShift
 const int kExactInstance = EXACT_INSTANCE_TEXELS;   // kInstanceTexels
 const int kExactTriangle = EXACT_TRIANGLE_TEXELS;   // kTriangleTexels
+const int kExactTested = EXACT_TESTED_TRIANGLES;    // kTestedTriangles
 const int kExactStack = EXACT_STACK;                // two levels of kBvhMaxDepth, and some
 const int kExactMaxBounces = EXACT_MAX_BOUNCES;     // core/trace_limits.h's kMaxBounces
 const int kExactMaxInternal = EXACT_MAX_INTERNAL;   // and kMaxInternalReflections
@@ -95,7 +97,35 @@ ExactHit exactTrace(vec3 origin, vec3 direction, float tMin, int skip, int only)
   vec3 worldInv = exactInverse(direction);
   vec4 h0 = exactFetch(u_exactAtlas, u_exactHeader);
   vec4 h1 = exactFetch(u_exactAtlas, u_exactHeader + 1);
-  if (exactBoxEntry(h0.xyz, h1.xyz, origin, worldInv, tMin, best.t) >= kExactFar) return best;
+  // The object tested before the walk (h3.w 1; core/bvh.h packScene: the ground, left out of the
+  // tree): its few triangles, in its space as the walk would test them, so the walk starts with
+  // the nearest hit it gives and the tree's boxes beyond it are never entered.
+  vec4 h2 = exactFetch(u_exactAtlas, u_exactHeader + 2);
+  vec4 h3 = exactFetch(u_exactAtlas, u_exactHeader + 3);
+  if (h3.w > 0.5 && exactBoxEntry(h2.xyz, h3.xyz, origin, worldInv, tMin, best.t) < kExactFar) {
+    int slot = int(h2.w);
+    vec4 r0 = exactFetch(u_exactAtlas, slot);
+    vec4 r1 = exactFetch(u_exactAtlas, slot + 1);
+    vec4 r2 = exactFetch(u_exactAtlas, slot + 2);
+    vec4 r3 = exactFetch(u_exactAtlas, slot + 3);
+    int object = int(r3.z);
+    if (object != skip && (only < 0 || object == only)) {
+      vec3 o = vec3(dot(r0, vec4(origin, 1.0)), dot(r1, vec4(origin, 1.0)), dot(r2, vec4(origin, 1.0)));
+      vec3 d = vec3(dot(r0.xyz, direction), dot(r1.xyz, direction), dot(r2.xyz, direction));
+      int tri = int(r3.x);
+      int triangles = int(r3.y);
+      for (int k = 0; k < kExactTested; ++k) {
+        if (k >= triangles) break;
+        exactTriangle(exactFetch(u_exactAtlas, tri), exactFetch(u_exactAtlas, tri + 1).xyz,
+                      exactFetch(u_exactAtlas, tri + 2).xyz, o, d, tMin, object, best);
+        tri += kExactTriangle;
+      }
+    }
+  }
+  // An empty tree (the tested object alone) has root -1.
+  if (h0.w < 0.0 || exactBoxEntry(h0.xyz, h1.xyz, origin, worldInv, tMin, best.t) >= kExactFar) {
+    return best;
+  }
   int ref = int(h0.w);
   int count = int(h1.w);
   vec3 o = origin;

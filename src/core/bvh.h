@@ -112,6 +112,8 @@ inline constexpr int kStepTexels = 4;  // what one turn of the shader's loop rea
 inline constexpr int kNodeTexels = 4;  // an interior node: both children, (min, ref) (max, count)
 inline constexpr int kTriangleTexels = 3;  // v0, v1 - v0, v2 - v0; v0.w = the triangle's slot
 inline constexpr int kSlotTexels = 4;      // a placed object: its inverse model's rows, its root
+// The most triangles of the object a top level tests before its walk (its tree a single leaf).
+inline constexpr int kTestedTriangles = 4;
 
 // Where a subtree starts in the atlas, as the shader follows it: an interior node (count 0) at
 // texel `texel`; a leaf (count > 0) of `count` triangles from texel `texel`; or, in the top level,
@@ -161,9 +163,15 @@ class BvhAtlas {
 
 // Per frame, for the shader:
 //  - `traversal`: the texels the walk reads, to be placed in the atlas from texel `firstTexel`
-//    on: a header (the top level's box and root, kStepTexels), each object's slot (kSlotTexels;
-//    the inverse model's rows, then (root texel, root count, object index)), then the top
-//    level's interior nodes;
+//    on: a header (kStepTexels: the top level's box and root, then (box min, slot texel) and
+//    (box max, 1) of the object its rays test before the walk, or zeros), each object's slot
+//    (kSlotTexels; the inverse model's rows, then (root texel, root count, object index)), then
+//    the top level's interior nodes. The tested object is the traced one whose tree is a single
+//    leaf of at most kTestedTriangles with the largest world box (the ground), and it is not in
+//    the tree: a ray towards the ground meets it in one test of its two triangles, and then
+//    walks the tree with that hit's distance, where it walked the tree's root, the ground's slot
+//    and each of its triangles in turn (on SwiftShader the shipped scene's main pass went from
+//    about 31 to 25 ms, docs/performance.md);
 //  - `shading`: kInstanceTexels per object, for what the walk found (normal matrix columns,
 //    colour and material, mix weights, probe centre, self epsilon, inverse model's rows).
 inline constexpr int kInstanceTexels = 10;

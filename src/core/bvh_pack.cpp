@@ -3,6 +3,8 @@
 #include "core/bvh.h"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 
 #include "core/frustum.h"
 #include "core/normal_matrix.h"
@@ -86,6 +88,55 @@ std::vector<float> packTop(const SceneBvh& bvh, const std::vector<Bounds>& world
   return top.nodes;
 }
 
+// The object a top level's rays test before their walk (-1: none): of `instances`' traced
+// objects whose tree is a single leaf of at most kTestedTriangles (a quad, a few triangles), the
+// one whose world box has the largest surface (in the shipped scenes, the ground).
+int testedObject(const std::vector<BvhInstance>& instances, const std::vector<PackedRef>& roots,
+                 const std::vector<Bounds>& worldBoxes) {
+  int best = -1;
+  float bestArea = -1.0f;
+  for (size_t i = 0; i < instances.size() && i < roots.size(); ++i) {
+    if (!instances[i].mesh || roots[i].count <= 0 || roots[i].count > kTestedTriangles) continue;
+    const glm::vec3 size = worldBoxes[i].max - worldBoxes[i].min;
+    const float area = size.x * size.y + size.y * size.z + size.z * size.x;
+    if (area > bestArea) {
+      bestArea = area;
+      best = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
+struct TopLevel {
+  std::vector<float> header;  // kStepTexels
+  std::vector<float> nodes;
+  bool empty = true;  // nothing to test and nothing to walk
+};
+
+// A top level over `instances`' objects with a mesh (`bvh`, built over them, or null to build it
+// here), but the one it tests first: that one leaves the tree and goes in the header's last two
+// texels (its world box and slot), where the walk tests its triangles before the tree, so the
+// tree's walk starts with the nearest hit the ground gives. Interior nodes from texel `firstNode`.
+TopLevel packTopLevel(std::vector<BvhInstance> instances, const SceneBvh* bvh,
+                      const std::vector<PackedRef>& roots, const std::vector<Bounds>& worldBoxes,
+                      int slotsTexel, int firstNode) {
+  const int tested = testedObject(instances, roots, worldBoxes);
+  if (tested >= 0) instances[static_cast<size_t>(tested)].mesh.reset();
+  std::optional<SceneBvh> built;
+  if (!bvh || tested >= 0) bvh = &built.emplace(buildSceneBvh(std::move(instances)));
+  TopLevel top;
+  top.nodes = packTop(*bvh, worldBoxes, slotsTexel, firstNode, top.header);
+  top.empty = bvh->top.nodes.empty() && tested < 0;
+  if (tested >= 0) {
+    const Bounds& box = worldBoxes[static_cast<size_t>(tested)];
+    const float slot = static_cast<float>(slotsTexel + kSlotTexels * tested);
+    const std::array<float, 8> texels{box.min.x, box.min.y, box.min.z, slot,
+                                      box.max.x, box.max.y, box.max.z, 1.0f};
+    std::copy(texels.begin(), texels.end(), top.header.begin() + 2 * 4);
+  }
+  return top;
+}
+
 }  // namespace
 
 PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector<PackedRef>& roots,
@@ -126,23 +177,23 @@ PackedScene packScene(const Scene& scene, const SceneBvh& bvh, const std::vector
   }
   const int slotsTexel = firstTexel + kStepTexels;
   std::vector<float>& t = packed.traversal;
-  packed.empty = bvh.top.nodes.empty();
-  std::vector<float> nodes =
-      packTop(bvh, worldBoxes, slotsTexel, slotsTexel + kSlotTexels * static_cast<int>(count), t);
+  const TopLevel all = packTopLevel(bvh.instances, &bvh, roots, worldBoxes, slotsTexel,
+                                    slotsTexel + kSlotTexels * static_cast<int>(count));
+  packed.empty = all.empty;
+  t.insert(t.end(), all.header.begin(), all.header.end());
   t.insert(t.end(), slots.begin(), slots.end());
-  t.insert(t.end(), nodes.begin(), nodes.end());
+  t.insert(t.end(), all.nodes.begin(), all.nodes.end());
 
   std::vector<BvhInstance> phong = bvh.instances;
   for (size_t i = 0; i < phong.size(); ++i) {
     if (i >= count || scene.objects[i].material != Material::Phong) phong[i].mesh.reset();
   }
-  const SceneBvh phongBvh = buildSceneBvh(std::move(phong));
-  packed.phongEmpty = phongBvh.top.nodes.empty();
   packed.phongHeader = firstTexel + static_cast<int>(t.size() / 4);
-  std::vector<float> header;
-  nodes = packTop(phongBvh, worldBoxes, slotsTexel, packed.phongHeader + kStepTexels, header);
-  t.insert(t.end(), header.begin(), header.end());
-  t.insert(t.end(), nodes.begin(), nodes.end());
+  const TopLevel phongTop = packTopLevel(std::move(phong), nullptr, roots, worldBoxes, slotsTexel,
+                                         packed.phongHeader + kStepTexels);
+  packed.phongEmpty = phongTop.empty;
+  t.insert(t.end(), phongTop.header.begin(), phongTop.header.end());
+  t.insert(t.end(), phongTop.nodes.begin(), phongTop.nodes.end());
   return packed;
 }
 

@@ -56,6 +56,7 @@ std::string ProgramKey::defines() const {
     out += define("EXACT_WIDTH_SHIFT", kBvhTextureWidthShift);
     out += define("EXACT_INSTANCE_TEXELS", kInstanceTexels);
     out += define("EXACT_TRIANGLE_TEXELS", kTriangleTexels);
+    out += define("EXACT_TESTED_TRIANGLES", kTestedTriangles);
     // The deepest walk of both levels the scene's trees allow.
     out += define("EXACT_STACK", traceStack > 0 ? traceStack : 2 * kBvhMaxDepth + 2);
     out += define("EXACT_MAX_BOUNCES", kMaxBounces);

@@ -184,8 +184,32 @@ struct PackedWalk {
                int only = -1, int* steps = nullptr) const {
     RayHit best;
     const glm::vec3 worldInv = inverse(direction);
-    const glm::vec4 h0 = at(header), h1 = at(header + 1);
-    if (entry(h0, h1, origin, worldInv, 0.0f, best.t) == INFINITY) return best;
+    const glm::vec4 h0 = at(header), h1 = at(header + 1), h2 = at(header + 2), h3 = at(header + 3);
+    // The object tested before the walk: its triangles in its space.
+    if (h3.w > 0.5f && entry(h2, h3, origin, worldInv, 0.0f, best.t) != INFINITY) {
+      const int slot = static_cast<int>(h2.w);
+      const glm::vec4 r0 = at(slot), r1 = at(slot + 1), r2 = at(slot + 2), r3 = at(slot + 3);
+      const int object = static_cast<int>(r3.z);
+      if (object != skip && (only < 0 || object == only)) {
+        const glm::vec4 p(origin, 1.0f);
+        const glm::vec3 o(glm::dot(r0, p), glm::dot(r1, p), glm::dot(r2, p));
+        const glm::vec3 d(glm::dot(glm::vec3(r0), direction), glm::dot(glm::vec3(r1), direction),
+                          glm::dot(glm::vec3(r2), direction));
+        for (int k = 0, tri = static_cast<int>(r3.x); k < static_cast<int>(r3.y);
+             ++k, tri += kTriangleTexels) {
+          if (steps) ++*steps;
+          const glm::vec3 v0(at(tri));
+          float t, u, v;
+          if (intersectTriangle(o, d, v0, v0 + glm::vec3(at(tri + 1)), v0 + glm::vec3(at(tri + 2)),
+                                0.0f, best.t, &t, &u, &v)) {
+            best.t = t;
+            best.instance = object;
+            best.slot = static_cast<int>(at(tri).w);
+          }
+        }
+      }
+    }
+    if (h0.w < 0.0f || entry(h0, h1, origin, worldInv, 0.0f, best.t) == INFINITY) return best;
     int ref = static_cast<int>(h0.w), count = static_cast<int>(h1.w);
     glm::vec3 o = origin, d = direction, inv = worldInv;
     int instance = -1, base = -1;
@@ -334,6 +358,98 @@ TEST(Bvh, ThePackedWalkFindsWhatTheTraversalFinds) {
   EXPECT_GT(hits, 600);  // aimed at vertices (on edges, some slip past): 782 meet one
   EXPECT_FALSE(packed.phongEmpty);
   EXPECT_LT(phongSteps, skipSteps);
+}
+
+TEST(Bvh, TheGroundIsTestedBeforeTheWalk) {
+  // A ground quad (two triangles: its tree a single leaf), two figures above it and a mirror: both
+  // top levels leave the quad out of their trees and test it first; every ray meets what the
+  // scene's traversal meets, and the Phong level's walks take fewer turns than with the quad in
+  // the tree.
+  MeshData quad;
+  for (const glm::vec3& p :
+       {glm::vec3(-1, 0, -1), glm::vec3(1, 0, -1), glm::vec3(1, 0, 1), glm::vec3(-1, 0, 1)}) {
+    Vertex v;
+    v.position = p;
+    v.normal = glm::vec3(0, 1, 0);
+    quad.vertices.push_back(v);
+  }
+  quad.indices = {0, 2, 1, 0, 3, 2};
+  quad.bounds = computeBounds(quad.vertices);
+  const MeshData figure = randomTriangles(200, 6);
+  const auto tq = std::make_shared<const MeshBvh>(buildMeshBvh(shared(quad)));
+  const auto tf = std::make_shared<const MeshBvh>(buildMeshBvh(shared(figure)));
+  BvhAtlas atlas;
+  atlas.add("quad", tq);
+  atlas.add("figure", tf);
+  ASSERT_EQ(atlas.roots().at("quad").ref.count, 2);  // a single leaf: tested before the walk
+  Scene scene;
+  scene.objects.resize(4);
+  scene.objects[3].material = Material::Mirror;
+  std::vector<BvhInstance> instances(4);
+  std::vector<PackedRef> roots(4);
+  const glm::mat4 placements[4] = {
+      glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, -1, 0)), glm::vec3(10, 1, 10)),
+      glm::translate(glm::mat4(1.0f), glm::vec3(4, 1, 0)),
+      glm::translate(glm::mat4(1.0f), glm::vec3(-4, 1, 1)),
+      glm::scale(glm::mat4(1.0f), glm::vec3(0.5f))};
+  for (size_t i = 0; i < 4; ++i) {
+    instances[i].mesh = i == 0 ? tq : tf;
+    roots[i] = atlas.roots().at(i == 0 ? "quad" : "figure").ref;
+    instances[i].model = placements[i];
+    instances[i].inverse = glm::inverse(placements[i]);
+  }
+  const SceneBvh bvh = buildSceneBvh(instances);
+  const int first = static_cast<int>(atlas.texelCount());
+  const PackedScene packed = packScene(scene, bvh, roots, {}, first);
+  std::vector<float> texels = allTexels(atlas);
+  texels.insert(texels.end(), packed.traversal.begin(), packed.traversal.end());
+  const PackedWalk walk{texels};
+  // Both headers name the quad's slot (object 0, the first slot) in their last two texels.
+  for (int header : {packed.header, packed.phongHeader}) {
+    EXPECT_EQ(walk.at(header + 2).w, static_cast<float>(first + kStepTexels)) << header;
+    EXPECT_EQ(walk.at(header + 3).w, 1.0f) << header;
+    EXPECT_EQ(walk.at(header + 2).y, -1.0f) << header;  // the ground's world box, y = -1
+  }
+  // Straight down from the mirror, away from the figures: the quad's two triangles are the whole
+  // walk (with the quad in the tree: its root, the quad's slot, then each triangle).
+  int down = 0;
+  EXPECT_EQ(
+      walk.trace(packed.phongHeader, glm::vec3(0, -0.5f, 0), glm::vec3(0, -1, 0), 3, -1, &down)
+          .instance,
+      0);
+  EXPECT_EQ(down, 2);
+
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  int grounds = 0, figures = 0;
+  for (int r = 0; r < 2000; ++r) {
+    // From the mirror's surface, every way (the sky, the ground), and every other ray at a vertex
+    // of a figure.
+    glm::vec3 d = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)));
+    const glm::vec3 o = 0.5f * d;
+    if (r % 2 == 1) {
+      const glm::vec3 vertex =
+          figure.vertices[static_cast<size_t>(r * 7) % figure.vertices.size()].position;
+      d = glm::normalize(glm::vec3(placements[1 + r % 4 / 2] * glm::vec4(vertex, 1.0f)) - o);
+    }
+    const int skip = r % 5 == 0 ? 0 : 3;  // sometimes leaving the ground itself
+    const int only = r % 9 == 0 ? 1 : -1;
+    const RayHit want = intersectScene(bvh, o, d, 0.0f, INFINITY, skip, only);
+    const RayHit got = walk.trace(packed.header, o, d, skip, only);
+    ASSERT_EQ(got.instance, want.instance) << "ray " << r;
+    EXPECT_EQ(got.t, want.t) << "ray " << r;
+    if (want.instance >= 0) {
+      EXPECT_EQ(got.slot - (want.instance == 0 ? 0 : 2), want.slot) << "ray " << r;
+    }
+    const RayHit phong = walk.trace(packed.phongHeader, o, d, 3, only);
+    const RayHit phongWant = intersectScene(bvh, o, d, 0.0f, INFINITY, 3, only);
+    ASSERT_EQ(phong.instance, phongWant.instance) << "ray " << r;
+    EXPECT_EQ(phong.t, phongWant.t) << "ray " << r;
+    grounds += phong.instance == 0;
+    figures += phong.instance == 1 || phong.instance == 2;
+  }
+  EXPECT_GT(grounds, 250);
+  EXPECT_GT(figures, 250);
 }
 
 TEST(Bvh, TheWalksStackHoldsTheDeepestPathOfBothLevels) {
