@@ -170,8 +170,8 @@ class BvhAtlas {
 //    leaf of at most kTestedTriangles with the largest world box (the ground), and it is not in
 //    the tree: a ray towards the ground meets it in one test of its two triangles, and then
 //    walks the tree with that hit's distance, where it walked the tree's root, the ground's slot
-//    and each of its triangles in turn (on SwiftShader the shipped scene's main pass went from
-//    about 31 to 25 ms, docs/performance.md);
+//    and each of its triangles in turn (in SwiftShader the shipped scene's frame is 0.90x the
+//    walk's that did, docs/performance.md);
 //  - `shading`: kInstanceTexels per object, for what the walk found (normal matrix columns,
 //    colour and material, mix weights, probe centre, self epsilon, inverse model's rows).
 inline constexpr int kInstanceTexels = 10;
