@@ -89,4 +89,12 @@ constexpr auto genFramebuffer = generateOne<glGenFramebuffers>;
 constexpr auto genRenderbuffer = generateOne<glGenRenderbuffers>;
 constexpr auto genQuery = generateOne<glGenQueries>;
 
+// A sampler object filtering by `minFilter` and `magFilter` (the rest GL's defaults).
+inline SamplerHandle filteredSampler(GLint minFilter, GLint magFilter) {
+  SamplerHandle sampler(generateOne<glGenSamplers>());
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, minFilter);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, magFilter);
+  return sampler;
+}
+
 }  // namespace reflect

@@ -49,9 +49,7 @@ Result<ProbeCapture> ProbeCapture::create() {
   }
   bindTexture(kPyramidUnit, GL_TEXTURE_2D, c.emptyPyramid_.id());
   glActiveTexture(GL_TEXTURE0);
-  c.lobeSampler_ = SamplerHandle(generateOne<glGenSamplers>());
-  glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  c.lobeSampler_ = filteredSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
   glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(c.lobeSampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   c.emptyVertexArray_ = VertexArrayHandle(genVertexArray());

@@ -35,9 +35,7 @@ Result<ProbeIrradiance> ProbeIrradiance::create() {
   p.probeUnit_ = p.program_.uniform("u_probe");
   p.lod_ = p.program_.uniform("u_lod");
   p.grid_ = p.program_.uniform("u_grid");
-  p.sampler_ = SamplerHandle(generateOne<glGenSamplers>());
-  glSamplerParameteri(p.sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-  glSamplerParameteri(p.sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  p.sampler_ = filteredSampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
   Result<ShaderProgram> parallax =
       ShaderProgram::build("parallax_feedback.vert", "no_fragment.frag", false, "", {"v_parallax"});
   if (!parallax) return Result<ProbeIrradiance>::failure(parallax.error());
@@ -47,9 +45,7 @@ Result<ProbeIrradiance> ProbeIrradiance::create() {
   p.parallaxCube_ = p.parallax_.uniform("u_parallaxCube");
   p.parallaxProbe_ = p.parallax_.uniform("u_parallaxProbe");
   p.parallaxLevels_ = p.parallax_.uniform("u_parallaxLevels");
-  p.parallaxSampler_ = SamplerHandle(generateOne<glGenSamplers>());
-  glSamplerParameteri(p.parallaxSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glSamplerParameteri(p.parallaxSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  p.parallaxSampler_ = filteredSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
   p.feedback_ = TransformFeedbackHandle(generateOne<glGenTransformFeedbacks>());
   p.vertexArray_ = VertexArrayHandle(generateOne<glGenVertexArrays>());
   p.empty_ = makeBuffer();
