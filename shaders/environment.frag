@@ -44,6 +44,7 @@ uniform int u_outputDirection; // 1: write the looked-up direction instead (for 
 #include "ggx.glsl"
 uniform float u_roughAlpha;  // a rough mirror's lobe alpha (core/ggx.h ggxAlpha)
 #endif
+#include "glass_sphere_exit.glsl"
 #include "environment_lookup.glsl"
 #include "exact_shade.glsl"
 

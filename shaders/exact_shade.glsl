@@ -290,6 +290,28 @@ vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
 #endif
 }
 
+#if EXACT_GENERAL == 0 && REFRACTS == 1
+// Frosted glass traced for a narrow lobe, seen in another probe's capture: a second bounce, seen
+// small and blurred, as a traced rough mirror there (gfx/environment_binding.cpp's
+// lobeCentreAlone). One ray each way through the Phong objects, the sphere's far side in closed
+// form (glass_sphere_exit.glsl) rather than walked: the general tracer's walk through the glass
+// in every texel of four probes' faces cost more than the rest of the capture.
+void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 reflected,
+                      out vec3 refracted, out vec3 measured) {
+  reflected = vec3(0.0);
+  measured = reflect(I, N);
+  if (u_fresnel == 1 || total) {
+    reflected = exactRadiance(origin, reflect(I, N), u_exactSelf, measured);
+  }
+  refracted = reflected;
+  if (total) return;
+  vec3 exitPoint = origin;
+  vec3 d = normalize(T);
+  if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, d);
+  refracted = exactRadiance(exitPoint, d, u_exactSelf, measured);
+}
+#endif
+
 #if EXACT_GENERAL == 1
 // Glass, traced (environment_lookup.glsl's seenThroughGlass() with rays for lookups): the
 // refracted ray through the object, and the reflected one only where Fresnel weighs it in or the

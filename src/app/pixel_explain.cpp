@@ -163,9 +163,12 @@ std::string noExplanation(const Demo& demo, const PixelExplanation& e) {
            "for a sky infinitely far away; there is no probe to explain";
   }
   if (demo.lastPlan().traces(e.object)) {
-    return what +
-           "'s rays were traced exactly this frame (search: exact, or search: planned "
-           "found tracing cheaper): there is no probe lookup to explain";
+    const std::vector<int>& narrow = demo.lastPlan().narrowTraced;
+    const bool forced = std::find(narrow.begin(), narrow.end(), e.object) != narrow.end();
+    return what + "'s rays were traced exactly this frame (" +
+           (forced ? "search: planned traces a lobe too narrow for lobe taps"
+                   : "search: exact, or search: planned found tracing cheaper") +
+           "): there is no probe lookup to explain";
   }
   if (demo.lastPlan().probeOf(e.object) == nullptr) {
     return what + " has no probe captured this frame";

@@ -72,9 +72,10 @@ std::string howRead(const LobeExplanation& lobe) {
     case Source::Traced:
       if (lobe.narrow) {
         return formatLine(
-            "  lobe: traced with %d lobe rays (narrowLobeRays) around the reflected ray, each "
-            "weighed by the GGX reflectance (search: planned traces a lobe this narrow, "
-            "roughness under %.3g, which taps from a capture would draw as rings)",
+            "  lobe: traced with %d lobe rays (narrowLobeRays; half as many for glass's two "
+            "lobes) around the reflected ray, each weighed by the GGX reflectance (search: "
+            "planned traces a lobe this narrow, roughness under %.3g, which taps from a capture "
+            "would draw as rings, or through glass as a few sharp copies)",
             lobe.lobeRays, kNarrowLobeRoughness);
       }
       return formatLine(

@@ -62,9 +62,10 @@ struct AccuracySettings {
   int filterSamples = 32;
   int roughLevels = 5;
   int lobeRays = 16;
-  // Rough mirrors whose lobe is too narrow for lobe taps or prefiltered levels
+  // Rough mirrors and frosted glass whose lobe is too narrow for lobe taps or prefiltered levels
   // (tracedForNarrowLobe: roughness under 0.375) are traced under search: planned where the
-  // weighing would capture them, with this many fixed lobe rays a pixel; 0: they are captured.
+  // weighing would capture them, with this many fixed lobe rays a pixel (glass: half as many
+  // for each of its two lobes, narrowLobeRaysOf); 0: they are captured.
   int narrowLobeRays = 8;
   // Rough mirrors and frosted glass with lobe taps, captured and searched (hierarchical): each
   // quarter of the lobe (glass: of its light through, from its own exit point) searched for how

@@ -103,8 +103,14 @@ bool FramePlan::tracesGeneral(int object) const {
 }
 
 bool tracedForNarrowLobe(const SceneObject::Look& look, const AccuracySettings& accuracy) {
-  return accuracy.search == Search::Planned && accuracy.narrowLobeRays > 0 &&
-         look.material == Material::Mirror && look.rough() && look.roughness < kNarrowLobeRoughness;
+  const bool reflector = look.material == Material::Mirror || look.material == Material::Glass;
+  return accuracy.search == Search::Planned && accuracy.narrowLobeRays > 0 && reflector &&
+         look.rough() && look.roughness < kNarrowLobeRoughness;
+}
+
+int narrowLobeRaysOf(const SceneObject::Look& look, const AccuracySettings& accuracy) {
+  if (look.material != Material::Glass) return accuracy.narrowLobeRays;
+  return std::max(accuracy.narrowLobeRays / 2, 1);
 }
 
 int FramePlan::lobeRaysOf(int object) const {
@@ -311,7 +317,7 @@ FramePlan FramePlanner::plan(const std::vector<PlannedObject>& objects,
       if (!o.look.rough()) continue;
       const bool narrow = contains(narrowTraced_, m);  // (else the weighing's own trace)
       plan.lobeRays[static_cast<size_t>(m)] =
-          narrow ? context.accuracy.narrowLobeRays : context.accuracy.lobeRays;
+          narrow ? narrowLobeRaysOf(o.look, context.accuracy) : context.accuracy.lobeRays;
     }
   }
   planner::decideSkyFiltering(plan, objects, context, skyFilteredLevels_, skyFilteredContent_);

@@ -214,15 +214,20 @@ struct FramePlan {
   const ProbeLayout* layoutOf(int object) const;
 };
 
-// A rough mirror whose lobe is too narrow to be read from a capture: its neighbours' reflections
-// are discs a few degrees wide, which a fixed set of lobe taps draws as rings and the prefiltered
-// levels as blurs of the wrong width (roughness 0.25: 29.96 dB with 16 taps, 29.55 prefiltered,
-// 39.22 traced with 8 lobe rays; roughness 0.5: 35.77 with taps, 33.85 traced with 8 rays and
-// 35.56 with 12; docs/rough.md). Under search: planned it is traced where the weighing chose
-// to capture it, with narrowLobeRays rays (FramePlan::narrowTraced): true for such a look under
-// those settings.
+// A rough mirror or frosted glass whose lobe is too narrow to be read from a capture: a
+// mirror's neighbours' reflections are discs a few degrees wide, which a fixed set of lobe taps
+// draws as rings and the prefiltered levels as blurs of the wrong width (roughness 0.25: 29.96 dB
+// with 16 taps, 29.55 prefiltered, 39.22 traced with 8 lobe rays; roughness 0.5: 35.77 with
+// taps, 33.85 traced with 8 rays and 35.56 with 12); what glass's light through shows, the lens
+// draws as a few sharp copies (0.25: 30.90 dB with taps, 38 traced; docs/rough.md). Under
+// search: planned it is traced where the weighing chose to capture it, with narrowLobeRays rays
+// (FramePlan::narrowTraced): true for such a look under those settings.
 inline constexpr float kNarrowLobeRoughness = 0.375f;
 bool tracedForNarrowLobe(const SceneObject::Look& look, const AccuracySettings& accuracy);
+// The lobe rays such a look's pixel traces: narrowLobeRays for a mirror; for glass half as many
+// (at least 1) for each of its two lobes, the reflection and the light through, so that a
+// pixel casts as many rays as a mirror's.
+int narrowLobeRaysOf(const SceneObject::Look& look, const AccuracySettings& accuracy);
 
 // What the planner knows of the main camera, to weigh tracing (a cost per pixel on screen)
 // against capturing. pixelsPerTangent 0: no view; search: planned then captures.

@@ -269,8 +269,9 @@ const std::vector<SettingField<AccuracySettings>>& accuracyFields() {
        [](const A& s) { return json(s.lobeRays); },
        [](A& s, const json& v) { s.lobeRays = v.get<int>(); }},
       {integer("narrowLobeRays", "narrow lobe rays",
-               "rough mirrors under roughness 0.375, planned: traced with this many fixed lobe "
-               "rays a pixel, a lobe too narrow for lobe taps (0: captured like the rest)",
+               "rough mirrors and frosted glass under roughness 0.375, planned: traced with this "
+               "many fixed lobe rays a pixel (glass: half as many for each of its two lobes), a "
+               "lobe too narrow for lobe taps (0: captured like the rest)",
                0, 256),
        [](const A& s) { return json(s.narrowLobeRays); },
        [](A& s, const json& v) { s.narrowLobeRays = v.get<int>(); }},

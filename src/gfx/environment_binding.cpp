@@ -15,12 +15,13 @@ using renderer_detail::sphereRadiusIn;
 
 namespace {
 
-// A traced rough mirror seen in another probe's capture is a second bounce, seen small and
-// blurred: it traces its lobe's centre alone, through the Phong objects (what mirrors show in it
-// is a third bounce). On rough-spheres that kept the other spheres within 0.05 dB and cut the
-// capture from 70 to 41 ms (docs/rough.md, "Narrow lobes: traced").
+// A traced rough mirror or frosted glass seen in another probe's capture is a second bounce, seen
+// small and blurred: it traces its lobe's centre alone, through the Phong objects (what mirrors
+// show in it is a third bounce; glass leaves a sphere in closed form). On rough-spheres that kept
+// the other spheres within 0.05 dB and cut the capture from 70 to 41 ms (docs/rough.md, "Narrow
+// lobes: traced").
 bool lobeCentreAlone(const ProgramKey& key) {
-  return key.capture && key.rough && !key.refracts;
+  return key.capture && key.rough;
 }
 
 }  // namespace

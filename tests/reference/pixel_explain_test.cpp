@@ -297,7 +297,7 @@ TEST(PixelExplain, ANarrowLobeNamesItsOwnRaysAndWhy) {
   EXPECT_EQ(e.value().lobe.lobeRays, 8);
   const std::string text = joinedLines(e.value());
   EXPECT_NE(text.find("roughness 0.25"), std::string::npos) << text;
-  EXPECT_NE(text.find("traced with 8 lobe rays (narrowLobeRays)"), std::string::npos) << text;
+  EXPECT_NE(text.find("traced with 8 lobe rays (narrowLobeRays;"), std::string::npos) << text;
   EXPECT_NE(text.find("roughness under 0.375"), std::string::npos) << text;
 }
 
@@ -338,6 +338,24 @@ TEST(PixelExplain, FrostedGlassNamesTheLobeOfTheLightThrough) {
   EXPECT_NE(text.find("light through: read around the refracted ray at level 0.94"),
             std::string::npos)
       << text;
+}
+
+// The default on frosted-glass (search: planned), 400 x 400, t = 2 s: the roughness-0.25 glass
+// sphere's lobes are too narrow for taps, so both are traced, half of narrowLobeRays each.
+TEST(PixelExplain, NarrowFrostedGlassNamesItsTracedRays) {
+  Result<Scene> scene = loadNamedScene("frosted-glass");
+  ASSERT_TRUE(scene) << scene.error();
+  auto demo = testing::makeDemo(scene.take());
+  Result<PixelExplanation> e = explainAt(*demo, 2.0, {117, 232});
+  ASSERT_TRUE(e) << e.error();
+  EXPECT_NE(e.value().message.find("traces a lobe too narrow for lobe taps"), std::string::npos)
+      << e.value().message;
+  EXPECT_EQ(e.value().lobe.source, LobeExplanation::Source::Traced);
+  EXPECT_TRUE(e.value().lobe.glass);
+  const std::string text = joinedLines(e.value());
+  EXPECT_NE(text.find("frosted glass: roughness 0.25"), std::string::npos) << text;
+  EXPECT_NE(text.find("traced with 4 lobe rays (narrowLobeRays;"), std::string::npos) << text;
+  EXPECT_NE(text.find("light through: traced with 4 rays"), std::string::npos) << text;
 }
 
 // The skybox scene at 400 x 400, t = 2 s, its skybox mirror (object 2, the left sphere) given

@@ -242,13 +242,15 @@ TEST(RoughPlanning, ACapturedRoughReaderCostsItsQuartersSearches) {
 }
 
 // A lobe too narrow for the capture (roughness under 0.375) is traced under search: planned
-// where the weighing chose the capture, with narrowLobeRays rays; a wider one is weighed as
-// before; narrowLobeRays 0 captures it; a trace the weighing chose, and the exact mode, cast
-// lobeRays; narrow glass is not traced for it.
+// where the weighing chose the capture, with narrowLobeRays rays (narrow frosted glass with half
+// as many for each of its two lobes); a wider one is weighed as before; narrowLobeRays 0
+// captures it; a trace the weighing chose, and the exact mode, cast lobeRays.
 TEST(RoughPlanning, ANarrowLobeIsTracedWithItsOwnRaysWhateverTheCost) {
   std::vector<PlannedObject> scene{mirrorAt({0, 0, 0}, 0.25f), mirrorAt({4, 0, 0}, 0.5f),
-                                   mirrorAt({8, 0, 0}, 0.0f), mirrorAt({12, 0, 0}, 0.25f)};
+                                   mirrorAt({8, 0, 0}, 0.0f), mirrorAt({12, 0, 0}, 0.25f),
+                                   mirrorAt({16, 0, 0}, 0.5f)};
   scene[3].look.material = Material::Glass;
+  scene[4].look.material = Material::Glass;
   CaptureContext planned;
   ASSERT_EQ(planned.accuracy.search, Search::Planned);
   ASSERT_EQ(planned.accuracy.narrowLobeRays, 8);
@@ -261,13 +263,19 @@ TEST(RoughPlanning, ANarrowLobeIsTracedWithItsOwnRaysWhateverTheCost) {
   EXPECT_TRUE(plan.traces(0));
   EXPECT_FALSE(plan.traces(1));
   EXPECT_FALSE(plan.traces(2));
-  EXPECT_FALSE(plan.traces(3));
-  EXPECT_EQ(plan.lobeRays, (std::vector<int>{8, 0, 0, 0}));
-  EXPECT_EQ(plan.narrowTraced, (std::vector<int>{0}));
+  EXPECT_TRUE(plan.traces(3));
+  EXPECT_FALSE(plan.traces(4));
+  EXPECT_EQ(plan.lobeRays, (std::vector<int>{8, 0, 0, 4, 0}));
+  EXPECT_EQ(plan.narrowTraced, (std::vector<int>{0, 3}));
   EXPECT_TRUE(tracedForNarrowLobe(scene[0].look, planned.accuracy));
   EXPECT_FALSE(tracedForNarrowLobe(scene[1].look, planned.accuracy));
   EXPECT_FALSE(tracedForNarrowLobe(scene[2].look, planned.accuracy));  // perfect: no lobe
-  EXPECT_FALSE(tracedForNarrowLobe(scene[3].look, planned.accuracy));  // glass
+  EXPECT_TRUE(tracedForNarrowLobe(scene[3].look, planned.accuracy));   // frosted glass, 0.25
+  EXPECT_FALSE(tracedForNarrowLobe(scene[4].look, planned.accuracy));  // frosted glass, 0.5
+  AccuracySettings one = planned.accuracy;
+  one.narrowLobeRays = 1;  // glass still casts a ray for each lobe
+  EXPECT_EQ(narrowLobeRaysOf(scene[0].look, one), 1);
+  EXPECT_EQ(narrowLobeRaysOf(scene[3].look, one), 1);
 
   CaptureContext off = planned;
   off.accuracy.narrowLobeRays = 0;
@@ -286,14 +294,14 @@ TEST(RoughPlanning, ANarrowLobeIsTracedWithItsOwnRaysWhateverTheCost) {
     EXPECT_TRUE(p.traces(0));
     EXPECT_TRUE(p.traces(1));
     EXPECT_TRUE(p.narrowTraced.empty());
-    EXPECT_EQ(p.lobeRays, (std::vector<int>{16, 16, 0, 16}));
+    EXPECT_EQ(p.lobeRays, (std::vector<int>{16, 16, 0, 16, 16}));
   }
 
   CaptureContext exact = planned;
   exact.accuracy.search = Search::Exact;
   FramePlanner tracing;
   const FramePlan all = tracing.plan(scene, exact, {}, view);
-  EXPECT_EQ(all.lobeRays, (std::vector<int>{16, 16, 0, 16}));
+  EXPECT_EQ(all.lobeRays, (std::vector<int>{16, 16, 0, 16, 16}));
 }
 
 TEST(PrefilterLobe, WeightsSumToOneAboveTheSurfaceAndWiderLobesReadCoarserLevels) {
