@@ -255,7 +255,27 @@ vec3 seenOverLobe(vec3 origin, vec3 R, out vec3 measured) {
   return sum / weights;
 }
 
+#endif
+
+// What the ray refracted into the drawn glass at `origin` along `dir` sees once out of it. The
+// general tracer walks the glass's own triangles to its far side. Through the Phong objects alone
+// (EXACT_GENERAL 0: frosted glass traced for a narrow lobe, seen in another probe's capture, a
+// second bounce; gfx/environment_binding.cpp's lobeCentreAlone) a sphere's far side is in closed
+// form (glass_sphere_exit.glsl), another shape's is skipped, and the ray goes on from there: the
+// general walk in every texel of four probes' faces cost more than the rest of the capture. (In
+// the main pass too it lost 2.9 dB on the 0.25 sphere: its neighbours are not Phong objects.)
+vec3 exactThroughSelf(vec3 origin, vec3 dir, out vec3 truth) {
 #if EXACT_GENERAL == 1
+  return exactRadiance(origin, dir, u_exactSelf, true, truth);
+#else
+  vec3 exitPoint = origin;
+  vec3 d = dir;
+  if (u_twoSurfaces == 1 && u_glassSphere.w > 0.0) leaveGlassSphere(exitPoint, d);
+  return exactRadiance(exitPoint, d, u_exactSelf, truth);
+#endif
+}
+
+#if ROUGH == 1
 // Rough (frosted) glass's light through (core/ggx.h says what it is): the mean, over the
 // u_exactLobeRays microfacet normals h of the fixed set around n, of what the view ray I
 // refracted through h sees once out of the object (its far surface crossed as polished glass).
@@ -272,14 +292,13 @@ vec3 transmittedOverLobe(vec3 origin, vec3 I, vec3 n, vec3 T, out vec3 measured)
     vec3 t = refract(I, h, u_eta);
     if (dot(t, t) == 0.0 || dot(t, n) >= 0.0) continue;
     vec3 truth;
-    sum += exactRadiance(origin, normalize(t), u_exactSelf, true, truth);
+    sum += exactThroughSelf(origin, normalize(t), truth);
     rays += 1.0;
     if (k == 0u) measured = truth;
   }
-  if (rays == 0.0) return exactRadiance(origin, normalize(T), u_exactSelf, true, measured);
+  if (rays == 0.0) return exactThroughSelf(origin, normalize(T), measured);
   return sum / rays;
 }
-#endif
 #endif
 
 vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
@@ -290,29 +309,6 @@ vec3 seenReflected(vec3 origin, vec3 R, out vec3 measured) {
 #endif
 }
 
-#if EXACT_GENERAL == 0 && REFRACTS == 1
-// Frosted glass traced for a narrow lobe, seen in another probe's capture: a second bounce, seen
-// small and blurred, as a traced rough mirror there (gfx/environment_binding.cpp's
-// lobeCentreAlone). One ray each way through the Phong objects, the sphere's far side in closed
-// form (glass_sphere_exit.glsl) rather than walked: the general tracer's walk through the glass
-// in every texel of four probes' faces cost more than the rest of the capture.
-void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 reflected,
-                      out vec3 refracted, out vec3 measured) {
-  reflected = vec3(0.0);
-  measured = reflect(I, N);
-  if (u_fresnel == 1 || total) {
-    reflected = exactRadiance(origin, reflect(I, N), u_exactSelf, measured);
-  }
-  refracted = reflected;
-  if (total) return;
-  vec3 exitPoint = origin;
-  vec3 d = normalize(T);
-  if (u_twoSurfaces == 1) leaveGlassSphere(exitPoint, d);
-  refracted = exactRadiance(exitPoint, d, u_exactSelf, measured);
-}
-#endif
-
-#if EXACT_GENERAL == 1
 // Glass, traced (environment_lookup.glsl's seenThroughGlass() with rays for lookups): the
 // refracted ray through the object, and the reflected one only where Fresnel weighs it in or the
 // refraction is total (each traced ray costs a walk). `measured`: the last traced ray's truth.
@@ -330,8 +326,8 @@ void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 
     vec3 c = ray == 0 ? seenOverLobe(origin, reflect(I, N), truth)
                       : transmittedOverLobe(origin, I, N, normalize(T), truth);
 #else
-    vec3 c = exactRadiance(origin, ray == 0 ? reflect(I, N) : normalize(T), u_exactSelf, ray == 1,
-                           truth);
+    vec3 c = ray == 0 ? exactReflected(origin, reflect(I, N), truth)
+                      : exactThroughSelf(origin, normalize(T), truth);
 #endif
     if (ray == 0) {
       reflected = c;
@@ -342,5 +338,4 @@ void seenThroughGlass(vec3 origin, vec3 I, vec3 N, vec3 T, bool total, out vec3 
   }
   if (total) refracted = reflected;
 }
-#endif
 #endif
