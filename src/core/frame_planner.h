@@ -219,9 +219,10 @@ struct FramePlan {
 // draws as rings and the prefiltered levels as blurs of the wrong width (roughness 0.25: 29.96 dB
 // with 16 taps, 29.55 prefiltered, 39.22 traced with 8 lobe rays; roughness 0.5: 35.77 with
 // taps, 33.85 traced with 8 rays and 35.56 with 12); what glass's light through shows, the lens
-// draws as a few sharp copies (0.25: 30.90 dB with taps, 38 traced; docs/rough.md). Under
-// search: planned it is traced where the weighing chose to capture it, with narrowLobeRays rays
-// (FramePlan::narrowTraced): true for such a look under those settings.
+// draws as a few sharp copies (0.25: 30.90 dB with taps, 34.53 traced with 4 rays a lobe,
+// held out; docs/rough.md). Under search: planned it is traced where the weighing chose to
+// capture it, with narrowLobeRays rays (FramePlan::narrowTraced): true for such a look under
+// those settings.
 inline constexpr float kNarrowLobeRoughness = 0.375f;
 bool tracedForNarrowLobe(const SceneObject::Look& look, const AccuracySettings& accuracy);
 // The lobe rays such a look's pixel traces: narrowLobeRays for a mirror; for glass half as many
